@@ -1,0 +1,66 @@
+# pathlab — `make` builds ./pathlab, `make run` renders the Cornell box, `make test` runs every test.
+# `make test SAN=1` builds and tests with AddressSanitizer and UndefinedBehaviorSanitizer.
+CC ?= cc
+WARN = -std=c99 -Wall -Wextra -pedantic
+DEFS = -D_POSIX_C_SOURCE=200809L
+ifeq ($(SAN),1)
+  BUILD = build-san
+  OPT = -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all
+  PROG = $(BUILD)/pathlab
+else
+  BUILD = build
+  OPT = -O3 -march=native -g
+  PROG = pathlab
+endif
+CFLAGS = $(WARN) $(DEFS) $(OPT)
+LDLIBS = -lm -lpthread
+
+SRC = $(wildcard src/*.c)
+OBJ = $(SRC:src/%.c=$(BUILD)/%.o)
+LIB_OBJ = $(filter-out $(BUILD)/main.o,$(OBJ))
+TEST_SRC = $(wildcard tests/test_*.c)
+TEST_BIN = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
+
+all: $(PROG)
+
+$(PROG): $(OBJ)
+	$(CC) $(CFLAGS) -o $@ $(OBJ) $(LDLIBS)
+
+$(BUILD)/%.o: src/%.c $(wildcard src/*.h) | $(BUILD)
+	$(CC) $(CFLAGS) -c -o $@ $<
+
+$(BUILD)/tests/%: tests/%.c $(LIB_OBJ) tests/check.h | $(BUILD)
+	$(CC) $(CFLAGS) -Isrc -o $@ $< $(LIB_OBJ) $(LDLIBS)
+
+$(BUILD):
+	mkdir -p $(BUILD)/tests
+
+run: $(PROG)
+	./$(PROG) render scenes/cornell.obj --spp 64 -o cornell.ppm
+	@echo "The Cornell box is in cornell.ppm (open it with any image viewer)."
+
+# Tools the tests use but pathlab never links: OpenImageIO's idiff.
+test-deps:
+	@command -v idiff >/dev/null 2>&1 || { echo "installing openimageio-tools (idiff) for the tests"; \
+	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
+	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq openimageio-tools >/dev/null; }
+
+TOOLS = $(BUILD)/tests/zcheck
+
+test: $(PROG) $(TEST_BIN) $(TOOLS) test-deps
+	BUILD=$(BUILD) PATHLAB=./$(PROG) tests/run.sh
+
+# Reference images and their manifest (slow; the result is committed).
+refs: $(PROG)
+	ref/make_refs.sh
+
+# Ray speed against Embree 3 on the Stanford meshes (needs ../shared and Debian's libembree-dev).
+BENCH_MESHES ?= ../shared/data/meshes/bunny.obj ../shared/data/meshes/dragon.obj
+bench: $(PROG)
+	@for m in $(BENCH_MESHES); do for t in 1 2; do \
+	  echo "== $$m, $$t thread(s)"; ../shared/tools/embree-rays/compare.sh $$m $$t 3; done; done
+
+clean:
+	rm -rf build build-san pathlab
+
+.PHONY: all run test test-deps refs bench clean

@@ -1,0 +1,34 @@
+/* rng.h — PCG32 (O'Neill 2014, "PCG: a family of simple fast space-efficient statistically good
+ * algorithms for random number generation"): 64-bit LCG state, 32-bit output by xorshift and a
+ * random rotation. Each pixel owns one stream, selected by (seed, pixel index), so an image does
+ * not depend on how pixels are shared among threads. */
+#ifndef PATHLAB_RNG_H
+#define PATHLAB_RNG_H
+#include <stdint.h>
+
+typedef struct { uint64_t state, inc; } pcg32;
+
+#define PCG32_MULT 6364136223846793005ULL
+
+static inline uint32_t pcg32_next(pcg32 *r)
+{
+    uint64_t old = r->state;
+    uint32_t xorshifted = (uint32_t)(((old >> 18) ^ old) >> 27);
+    uint32_t rot = (uint32_t)(old >> 59);
+    r->state = old * PCG32_MULT + r->inc;
+    return (xorshifted >> rot) | (xorshifted << ((32 - rot) & 31));
+}
+
+/* Stream `sequence` (any 64-bit value; the increment must be odd) started at `seed`. */
+static inline void pcg32_init(pcg32 *r, uint64_t seed, uint64_t sequence)
+{
+    r->state = 0;
+    r->inc = (sequence << 1) | 1u;
+    pcg32_next(r);
+    r->state += seed;
+    pcg32_next(r);
+}
+
+/* Uniform float in [0, 1): the top 24 bits, so that 1 is never returned. */
+static inline float pcg32_float(pcg32 *r) { return (float)(pcg32_next(r) >> 8) * (1.0f / 16777216.0f); }
+#endif

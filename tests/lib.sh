@@ -1,0 +1,25 @@
+# tests/lib.sh — helpers for the shell tests: pass/fail lines in the format tests/run.sh counts.
+PATHLAB=${PATHLAB:-./pathlab}
+BUILD=${BUILD:-build}
+TMP=$(mktemp -d); trap 'rm -rf "$TMP"' EXIT
+pass() { echo "PASS $*"; }
+fail() { echo "FAIL $*"; }
+# expect NAME STATUS COMMAND...: runs COMMAND, checks its exit status, keeps stderr in $TMP/err
+expect_status() {
+    local name=$1 want=$2; shift 2
+    "$@" > "$TMP/out" 2> "$TMP/err"; local got=$?
+    if [ "$got" -eq "$want" ]; then pass "$name"; else fail "$name: exit status $got, expected $want; stderr: $(head -c 300 "$TMP/err")"; fi
+}
+# expect_err NAME PATTERN: the last command's stderr matches PATTERN (grep -E)
+expect_err() {
+    if grep -qE -- "$2" "$TMP/err"; then pass "$1"; else fail "$1: stderr does not match '$2': $(head -c 300 "$TMP/err")"; fi
+}
+# expect_no_file NAME PATH...: none of the files exist, and no temporary file is left beside them
+expect_no_file() {
+    local name=$1; shift
+    local f
+    for f in "$@"; do
+        if [ -e "$f" ] || ls "$f".tmp.* >/dev/null 2>&1; then fail "$name: $f (or a temporary file) was written"; return; fi
+    done
+    pass "$name"
+}

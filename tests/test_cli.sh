@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# The command line: errors name the file and line, exit with status 2, and write no output file.
+. "$(dirname "$0")/lib.sh"
+out=$TMP/out.pfm
+
+expect_status "no arguments: usage, status 2" 2 $PATHLAB
+expect_status "help: status 0" 0 $PATHLAB help
+expect_status "unknown command" 2 $PATHLAB paint
+expect_err "unknown command named" "unknown command 'paint'"
+
+expect_status "missing scene file" 2 $PATHLAB render "$TMP/nope.obj" -o "$out"
+expect_err "missing scene file named" "nope.obj"
+expect_no_file "missing scene: no output" "$out"
+
+for bad in "--spp abc" "--spp 0" "--spp 3.5" "--bounces 3:1" "--bounces x" "--light sun" "--dir mirror" \
+           "--direct nee" "--size 0x10" "--size 64" "--eye 1,2" "--fov nan" "--threads -1" "--rr maybe" "--frobnicate"; do
+    # shellcheck disable=SC2086
+    expect_status "bad flag '$bad': status 2" 2 $PATHLAB render scenes/cornell.obj $bad -o "$out" --quiet
+    expect_no_file "bad flag '$bad': no output" "$out"
+done
+expect_status "no -o" 2 $PATHLAB render scenes/cornell.obj
+expect_status "unknown output extension" 2 $PATHLAB render scenes/cornell.obj -o "$TMP/x.jpg"
+expect_err "unknown output extension explained" "use .pfm or .ppm"
+expect_status "--split without a last bounce" 2 $PATHLAB render scenes/cornell.obj --split -o "$out"
+
+# a malformed OBJ: the message names file and line
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 zero\nf 1 2 3\n' > "$TMP/bad.obj"
+expect_status "bad number in OBJ: status 2" 2 $PATHLAB render "$TMP/bad.obj" -o "$out" --quiet
+expect_err "bad number in OBJ: file:line" "bad.obj:3:"
+expect_no_file "bad OBJ: no output" "$out"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n' > "$TMP/badidx.obj"
+expect_status "index out of range: status 2" 2 $PATHLAB render "$TMP/badidx.obj" -o "$out" --quiet
+expect_err "index out of range: file:line" "badidx.obj:4:"
+
+# a malformed view file beside a good OBJ
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' > "$TMP/tri.obj"
+printf 'eye 0 0 5\nfov wide\n' > "$TMP/tri.view"
+expect_status "bad view file: status 2" 2 $PATHLAB render "$TMP/tri.obj" -o "$out" --quiet
+expect_err "bad view file: file:line" "tri.view:2:"
+printf 'eye 0 0 5\ntarget 0 0 5\n' > "$TMP/tri.view"
+expect_status "eye equals target: status 2" 2 $PATHLAB render "$TMP/tri.obj" -o "$out" --quiet
+
+# a scene without emitters renders black at once, with a warning
+rm -f "$TMP/tri.view"
+expect_status "no emitters: status 0" 0 $PATHLAB render "$TMP/tri.obj" --size 8x8 -o "$out"
+expect_err "no emitters: warning" "no emitters"
+if [ -f "$out" ] && [ "$(tail -c 768 "$out" | tr -d '\0' | wc -c)" -eq 0 ]; then pass "no emitters: black image"; else fail "no emitters: image missing or not black"; fi
+
+# an output that cannot be written: status 1, a message naming it, nothing left behind
+expect_status "unwritable output: status 1" 1 $PATHLAB render scenes/cornell.obj --size 8x8 --spp 1 --quiet -o "$TMP/no/such/dir/x.pfm"
+expect_err "unwritable output named" "no/such/dir/x.pfm"
+exit 0

@@ -45,10 +45,10 @@ test-deps:
 	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
 	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq openimageio-tools >/dev/null; }
 
-TOOLS = $(BUILD)/tests/zcheck
+TOOLS = $(BUILD)/tests/zcheck $(BUILD)/tests/pfmtool
 
 test: $(PROG) $(TEST_BIN) $(TOOLS) test-deps
-	BUILD=$(BUILD) PATHLAB=./$(PROG) tests/run.sh
+	BUILD=$(BUILD) PATHLAB=./$(PROG) PATHLAB_FAST=$(SAN) tests/run.sh
 
 # Reference images and their manifest (slow; the result is committed).
 refs: $(PROG)

@@ -76,7 +76,8 @@ static vec3 direct_from_light(const scene *s, const integrator_opts *o, const ve
     vec3 d, wi, f;
     float dist2, dist, cos_p, cos_s, pdf_light, w;
     ray shadow;
-    float u0 = pcg32_float(rng), u1 = pcg32_float(rng), u2 = pcg32_float(rng);
+    double u0 = pcg32_double(rng);
+    float u1 = pcg32_float(rng), u2 = pcg32_float(rng);
     light_sample_point(&s->lights, o->light, u0, u1, u2, &ls);
     d = v3_sub(ls.p, v->p);
     dist2 = v3_dot(d, d);
@@ -114,10 +115,12 @@ static vec3 direct_from_dir(const scene *s, const integrator_opts *o, const hit 
     return v3_scale(Le, w);
 }
 
+/* L[0] is the total, summed in path order whether or not bounces are split, so that --split
+ * leaves the total image bit for bit the same; L[1 + k - bmin] is L_k alone. */
 static void add(vec3 *L, const integrator_opts *o, int k, vec3 c)
 {
-    int i = o->split ? k - o->bmin : 0;
-    L[i] = v3_add(L[i], c);
+    L[0] = v3_add(L[0], c);
+    if (o->split) L[1 + k - o->bmin] = v3_add(L[1 + k - o->bmin], c);
 }
 
 void integrate(const scene *s, const integrator_opts *o, const ray *camera, pcg32 *rng, vec3 *L, trace_stats *st)

@@ -21,7 +21,7 @@ typedef struct {
     direct_strategy direct;
     int bmin, bmax;           /* render L_bmin + ... + L_bmax */
     int rr_depth;             /* Russian roulette after this many bounces; -1: off */
-    int split;                /* 1: L_k goes to L[k - bmin]; 0: everything to L[0] */
+    int split;                /* 0: L[0] = the total; 1: also L[1 + k - bmin] = L_k */
 } integrator_opts;
 
 typedef struct {
@@ -29,7 +29,7 @@ typedef struct {
     uint64_t nonfinite;       /* samples that were NaN or infinite (and were dropped) */
 } trace_stats;
 
-/* Adds the radiance along r (a camera ray) to L (see opts->split). */
+/* Adds the radiance along r (a camera ray) to L[0], and with opts->split each L_k to L[1 + k - bmin]. */
 void integrate(const scene *s, const integrator_opts *o, const ray *r, pcg32 *rng, vec3 *L, trace_stats *st);
 
 const char *dir_strategy_name(dir_strategy d);

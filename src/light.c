@@ -19,19 +19,20 @@ static int build_cdf(light_set *ls, light_strategy st)
 {
     double sum = 0.0, acc = 0.0;
     int i;
-    ls->cdf[st] = malloc(sizeof(float) * (size_t)ls->n);
+    ls->cdf[st] = malloc(sizeof(double) * (size_t)ls->n);
     if (!ls->cdf[st]) return 1;
     for (i = 0; i < ls->n; i++) sum += choice_weight(&ls->e[i], st);
     for (i = 0; i < ls->n; i++) {
         acc += choice_weight(&ls->e[i], st);
-        ls->cdf[st][i] = sum > 0.0 ? (float)(acc / sum) : (float)(i + 1) / (float)ls->n;
+        ls->cdf[st][i] = sum > 0.0 ? acc / sum : (double)(i + 1) / ls->n;
     }
-    ls->cdf[st][ls->n - 1] = 1.0f;
+    ls->cdf[st][ls->n - 1] = 1.0;
     return 0;
 }
 
 int light_build(light_set *ls, const mesh *m, const vec3 *Ng, const float *area)
 {
+    double total_area = 0.0;   /* a float sum of 1e5 small areas drifts by 1e-4 or more */
     int i, st;
     ls->n = 0;
     ls->total_area = 0.0f;
@@ -52,9 +53,10 @@ int light_build(light_set *ls, const mesh *m, const vec3 *Ng, const float *area)
         e->Le = Ke;
         e->area = area[i];
         e->tri = i;
-        ls->total_area += area[i];
+        total_area += area[i];
         ls->emitter_of_tri[i] = ls->n++;
     }
+    ls->total_area = (float)total_area;
     if (ls->n == 0) return 0;
     for (st = 0; st < LIGHT_NSTRATEGIES; st++)
         if (build_cdf(ls, (light_strategy)st)) return 1;
@@ -70,7 +72,7 @@ void light_free(light_set *ls)
 }
 
 /* Smallest i with u < cdf[i]: binary search. */
-static int pick(const float *cdf, int n, float u)
+static int pick(const double *cdf, int n, double u)
 {
     int lo = 0, hi = n - 1;
     while (lo < hi) {
@@ -82,7 +84,7 @@ static int pick(const float *cdf, int n, float u)
 
 static float choice_prob(const light_set *ls, light_strategy st, int i)
 {
-    return ls->cdf[st][i] - (i > 0 ? ls->cdf[st][i - 1] : 0.0f);
+    return (float)(ls->cdf[st][i] - (i > 0 ? ls->cdf[st][i - 1] : 0.0));
 }
 
 float light_pdf_area(const light_set *ls, light_strategy st, int i)
@@ -92,7 +94,7 @@ float light_pdf_area(const light_set *ls, light_strategy st, int i)
     return choice_prob(ls, st, i) / ls->e[i].area;
 }
 
-void light_sample_point(const light_set *ls, light_strategy st, float u0, float u1, float u2, light_sample *out)
+void light_sample_point(const light_set *ls, light_strategy st, double u0, float u1, float u2, light_sample *out)
 {
     int i = pick(ls->cdf[st], ls->n, u0);
     const emitter *e = &ls->e[i];

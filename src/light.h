@@ -16,7 +16,8 @@ typedef struct {
     emitter *e;
     int n;
     float total_area;
-    float *cdf[LIGHT_NSTRATEGIES];   /* cumulative probability of choosing emitters 0..i */
+    double *cdf[LIGHT_NSTRATEGIES];  /* cumulative probability of choosing emitters 0..i (double:
+                                      * a float cdf would quantise the probabilities to 2^-24) */
     int *emitter_of_tri;             /* mesh triangle -> emitter index, or -1 */
 } light_set;
 
@@ -29,8 +30,8 @@ typedef struct {
 /* Collects the emitters of m (with unit normals Ng and areas of its triangles); 0 on success. */
 int light_build(light_set *ls, const mesh *m, const vec3 *Ng, const float *area);
 void light_free(light_set *ls);
-/* Samples s with three uniform numbers; ls->n must be > 0. */
-void light_sample_point(const light_set *ls, light_strategy st, float u0, float u1, float u2, light_sample *out);
+/* Samples s: u0 (32 random bits, see pcg32_double) chooses the emitter, u1, u2 the point on it. */
+void light_sample_point(const light_set *ls, light_strategy st, double u0, float u1, float u2, light_sample *out);
 /* pdf1(s) per unit area of the point s on emitter i under strategy st. */
 float light_pdf_area(const light_set *ls, light_strategy st, int i);
 /* Converts an area pdf at a point seen at distance^2 dist2 and cosine cos_s into a solid-angle pdf. */

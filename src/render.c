@@ -59,24 +59,20 @@ static void store_pixel(render_result *out, int k, int idx, const double *a, int
 static void render_pixel(job *j, int px, int py, vec3 *L, double *acc, trace_stats *st)
 {
     const render_opts *o = j->o;
-    int nb = j->out->nlayers - 1, nL = nb > 0 ? nb : 1;   /* bounce layers, integrator slots */
-    int i, k, idx = py * j->c->width + px;
+    int n = j->out->nlayers, i, k, idx = py * j->c->width + px;
     pcg32 rng;
     pcg32_init(&rng, mix64(o->seed ^ mix64((uint64_t)idx)), (uint64_t)idx);
-    memset(acc, 0, sizeof(double) * 6 * (size_t)j->out->nlayers);   /* sum, sum of squares */
+    memset(acc, 0, sizeof(double) * 6 * (size_t)n);   /* sum, sum of squares per layer */
     for (i = 0; i < o->spp; i++) {
         float jx = o->pixel_center ? 0.5f : pcg32_float(&rng);
         float jy = o->pixel_center ? 0.5f : pcg32_float(&rng);
         ray r = camera_ray(j->c, (float)px + jx, (float)py + jy);
-        vec3 total = v3(0, 0, 0);
-        memset(L, 0, sizeof(vec3) * (size_t)nL);
+        memset(L, 0, sizeof(vec3) * (size_t)n);
         integrate(j->s, &o->io, &r, &rng, L, st);
-        for (k = 0; k < nL; k++) total = v3_add(total, L[k]);
-        if (!finite3(total)) { st->nonfinite++; continue; }   /* counted, reported, dropped */
-        accumulate(acc, total);
-        for (k = 0; k < nb; k++) accumulate(acc + 6 * (k + 1), L[k]);
+        if (!finite3(L[0])) { st->nonfinite++; continue; }   /* counted, reported, dropped */
+        for (k = 0; k < n; k++) accumulate(acc + 6 * k, L[k]);
     }
-    for (k = 0; k <= nb; k++) store_pixel(j->out, k, idx, acc + 6 * k, o->spp);
+    for (k = 0; k < n; k++) store_pixel(j->out, k, idx, acc + 6 * k, o->spp);
 }
 
 static void draw_progress(job *j)

@@ -29,6 +29,10 @@ static inline void pcg32_init(pcg32 *r, uint64_t seed, uint64_t sequence)
     pcg32_next(r);
 }
 
+/* Uniform double in [0, 1) with 32 random bits: for discrete choices among millions of items,
+ * where 24 bits would quantise each item's probability. */
+static inline double pcg32_double(pcg32 *r) { return (double)pcg32_next(r) * (1.0 / 4294967296.0); }
+
 /* Uniform float in [0, 1): the top 24 bits, so that 1 is never returned. */
 static inline float pcg32_float(pcg32 *r) { return (float)(pcg32_next(r) >> 8) * (1.0f / 16777216.0f); }
 #endif

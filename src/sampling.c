@@ -4,7 +4,8 @@
 
 vec3 sample_uniform_hemisphere(float u1, float u2)
 {
-    float z = u1, r = sqrtf(fmaxf(0.0f, 1.0f - z * z)), phi = 2.0f * PI_F * u2;
+    /* z = 1 - u1 lies in (0, 1]: z = u1 could be 0, a direction on the horizon of pdf 0 */
+    float z = 1.0f - u1, r = sqrtf(fmaxf(0.0f, 1.0f - z * z)), phi = 2.0f * PI_F * u2;
     return v3(r * cosf(phi), r * sinf(phi), z);
 }
 

@@ -23,6 +23,10 @@ void sample_uniform_triangle(float u1, float u2, float *b1, float *b2);
 
 /* Power heuristic with beta = 2 and balance heuristic: MIS weight of the strategy with density pf
  * against one with density pg (both in the same measure, one sample each). */
-static inline float power_heuristic(float pf, float pg) { return pf * pf / (pf * pf + pg * pg); }
-static inline float balance_heuristic(float pf, float pg) { return pf / (pf + pg); }
+static inline float power_heuristic(float pf, float pg)
+{
+    float r = pg / pf;   /* as a ratio, so that pf^2 cannot overflow; pf = 0 gives weight 0 */
+    return pf > 0.0f ? 1.0f / (1.0f + r * r) : 0.0f;
+}
+static inline float balance_heuristic(float pf, float pg) { return pf > 0.0f ? 1.0f / (1.0f + pg / pf) : 0.0f; }
 #endif

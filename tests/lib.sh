@@ -23,3 +23,12 @@ expect_no_file() {
     done
     pass "$name"
 }
+# zcheck_expect NAME WANT A VA B VB: runs tests/zcheck and wants exit status WANT (0: same up to
+# noise, 1: told apart); a bad input (status 2) always fails the test instead of passing for nothing.
+zcheck_expect() {
+    local name=$1 want=$2; shift 2
+    local msg rc
+    msg=$("$BUILD/tests/zcheck" "$@" 2>&1); rc=$?
+    if [ "$rc" -eq "$want" ]; then pass "$name ($msg)"; else fail "$name: zcheck exit $rc, wanted $want: $msg"; fi
+}
+PFMTOOL=$BUILD/tests/pfmtool

@@ -1,0 +1,461 @@
+/* test_bvh.c — the BVH against brute force, watertightness, and self-intersection.
+ *  1. Triangle soups of several sizes and distributions (uniform, clustered, long and thin, big and
+ *     small, coplanar on axis planes, duplicated, exponentially spaced): for random rays the bvh's
+ *     closest hit has exactly the t of a loop over every triangle with the same triangle test, and
+ *     bvh_occluded agrees. Axis-parallel rays (zero direction components) and finite tmax included.
+ *  2. Closed meshes (an icosphere, a cube of many triangles), also moved 1e4 away: rays from inside
+ *     and from outside aimed exactly at shared vertices and at points of shared edges never miss.
+ *  3. tmax: a hit at t is reported with tmax = next float above t, not with tmax = t.
+ *  4. Builds with 1, 2 and 3 threads give the same hits.
+ *  5. offset_ray_origin: rays leaving points of triangles 1e5 from the origin never hit their own.
+ * Sanitizer builds, and PATHLAB_TEST_QUICK=1, shrink the sizes. */
+#include "bvh.h"
+#include "check.h"
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#if defined(__SANITIZE_ADDRESS__)
+#define SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define SANITIZED 1
+#endif
+#endif
+#ifndef SANITIZED
+#define SANITIZED 0
+#endif
+
+static int quick;
+
+/* ---- Random numbers: a 64-bit LCG, its top bits -------------------------------------------- */
+static uint64_t rng_state = 0x9e3779b97f4a7c15ULL;
+static float rnd(void)   /* [0, 1) */
+{
+    rng_state = rng_state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (float)(rng_state >> 40) * (1.0f / 16777216.0f);
+}
+static float rnd_range(float lo, float hi) { return lo + (hi - lo) * rnd(); }
+static vec3 rnd_vec(float lo, float hi) { return v3(rnd_range(lo, hi), rnd_range(lo, hi), rnd_range(lo, hi)); }
+static vec3 rnd_dir(void)
+{
+    for (;;) {
+        vec3 d = rnd_vec(-1, 1);
+        float l = v3_dot(d, d);
+        if (l > 1e-4f && l <= 1) return v3_scale(d, 1.0f / sqrtf(l));
+    }
+}
+
+/* ---- Meshes ------------------------------------------------------------------------------------ */
+typedef struct { vec3 *P; int *tri; int nverts, ntris, cap_v, cap_t; } soup;
+
+static int add_vert(soup *s, vec3 p)
+{
+    if (s->nverts == s->cap_v) { s->cap_v = s->cap_v ? 2 * s->cap_v : 64; s->P = realloc(s->P, (size_t)s->cap_v * sizeof(vec3)); }
+    s->P[s->nverts] = p;
+    return s->nverts++;
+}
+static void add_tri_idx(soup *s, int a, int b, int c)
+{
+    if (s->ntris == s->cap_t) { s->cap_t = s->cap_t ? 2 * s->cap_t : 64; s->tri = realloc(s->tri, 3 * (size_t)s->cap_t * sizeof(int)); }
+    s->tri[3 * s->ntris] = a; s->tri[3 * s->ntris + 1] = b; s->tri[3 * s->ntris + 2] = c;
+    s->ntris++;
+}
+static void add_tri(soup *s, vec3 a, vec3 b, vec3 c) { add_tri_idx(s, add_vert(s, a), add_vert(s, b), add_vert(s, c)); }
+static void soup_free(soup *s) { free(s->P); free(s->tri); memset(s, 0, sizeof *s); }
+static vec3 corner(const soup *s, int t, int k) { return s->P[s->tri[3 * t + k]]; }
+
+enum { UNIFORM, CLUSTERED, THIN, MIXED, COPLANAR, DUPLICATES, EXPONENTIAL, NKINDS };
+static const char *kind_name[NKINDS] = {"uniform", "clustered", "thin", "mixed", "coplanar", "duplicates", "exponential"};
+
+static void make_soup(soup *s, int kind, int n)
+{
+    vec3 centers[8];
+    for (int k = 0; k < 8; k++) centers[k] = rnd_vec(-1, 1);
+    for (int i = 0; i < n; i++) {
+        vec3 c = rnd_vec(-1, 1);
+        float size = 0.1f;
+        if (kind == CLUSTERED) { c = v3_add(centers[i % 8], rnd_vec(-0.01f, 0.01f)); size = 0.005f; }
+        if (kind == MIXED) size = (i % 10 == 0) ? 1.5f : 0.01f;
+        if (kind == EXPONENTIAL) { float e = ldexpf(1.0f, -(i % 40)); c = v3(e, e * rnd(), e * rnd()); size = 0.3f * e; }
+        if (kind == THIN) {
+            int axis = i % 3;
+            vec3 a = rnd_vec(-1, 1), b = a;
+            if (axis == 0) b.x = -a.x; else if (axis == 1) b.y = -a.y; else b.z = -a.z;
+            add_tri(s, a, b, v3_add(a, rnd_vec(-1e-3f, 1e-3f)));
+        } else if (kind == COPLANAR) {   /* on the planes x, y or z = a multiple of 1/4 */
+            int axis = i % 3;
+            float plane = (float)((int)rnd_range(-4, 5)) * 0.25f;
+            vec3 p[3];
+            for (int k = 0; k < 3; k++) {
+                p[k] = v3_add(c, rnd_vec(-size, size));
+                if (axis == 0) p[k].x = plane; else if (axis == 1) p[k].y = plane; else p[k].z = plane;
+            }
+            add_tri(s, p[0], p[1], p[2]);
+        } else if (kind == DUPLICATES && i > 0 && i % 3 != 0) {
+            int t = s->ntris - 1;      /* the same triangle again: shared indices, then new copies */
+            if (i % 3 == 1) add_tri_idx(s, s->tri[3 * t], s->tri[3 * t + 1], s->tri[3 * t + 2]);
+            else add_tri(s, corner(s, t, 0), corner(s, t, 1), corner(s, t, 2));
+        } else
+            add_tri(s, v3_add(c, rnd_vec(-size, size)), v3_add(c, rnd_vec(-size, size)), v3_add(c, rnd_vec(-size, size)));
+    }
+}
+
+/* Icosphere of radius r around c: an icosahedron subdivided `levels` times, vertices shared. */
+static int midpoint(soup *s, int a, int b, int *cache_a, int *cache_b, int *cache_m, int *ncache, vec3 c, float r)
+{
+    for (int i = 0; i < *ncache; i++)
+        if ((cache_a[i] == a && cache_b[i] == b) || (cache_a[i] == b && cache_b[i] == a)) return cache_m[i];
+    vec3 m = v3_scale(v3_add(v3_sub(s->P[a], c), v3_sub(s->P[b], c)), 0.5f);
+    int k = add_vert(s, v3_add(c, v3_scale(v3_normalize(m), r)));
+    cache_a[*ncache] = a; cache_b[*ncache] = b; cache_m[*ncache] = k; ++*ncache;
+    return k;
+}
+
+static void make_icosphere(soup *s, vec3 c, float r, int levels)
+{
+    static const int F[20][3] = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+        {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8}, {3, 8, 9}, {4, 9, 5},
+        {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+    float g = (1.0f + sqrtf(5.0f)) / 2;
+    vec3 V[12] = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g}, {0, -1, -g}, {0, 1, -g},
+                  {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+    for (int i = 0; i < 12; i++) add_vert(s, v3_add(c, v3_scale(v3_normalize(V[i]), r)));
+    for (int i = 0; i < 20; i++) add_tri_idx(s, F[i][0], F[i][1], F[i][2]);
+    for (int l = 0; l < levels; l++) {
+        int n = s->ntris, *old = malloc(3 * (size_t)n * sizeof(int)), ncache = 0;
+        int *ca = malloc(3 * (size_t)n * sizeof(int)), *cb = malloc(3 * (size_t)n * sizeof(int)), *cm = malloc(3 * (size_t)n * sizeof(int));
+        memcpy(old, s->tri, 3 * (size_t)n * sizeof(int));
+        s->ntris = 0;
+        for (int t = 0; t < n; t++) {
+            int a = old[3 * t], b = old[3 * t + 1], d = old[3 * t + 2];
+            int ab = midpoint(s, a, b, ca, cb, cm, &ncache, c, r), bd = midpoint(s, b, d, ca, cb, cm, &ncache, c, r);
+            int da = midpoint(s, d, a, ca, cb, cm, &ncache, c, r);
+            add_tri_idx(s, a, ab, da); add_tri_idx(s, b, bd, ab); add_tri_idx(s, d, da, bd); add_tri_idx(s, ab, bd, da);
+        }
+        free(old); free(ca); free(cb); free(cm);
+    }
+}
+
+/* Cube [c - h, c + h] whose faces are n x n grids of quads split in two, vertices shared. */
+static void make_cube(soup *s, vec3 c, float h, int n)
+{
+    int base = s->nverts;
+    /* every grid point of the cube surface, indexed by (i, j, k) in [0, n]^3 */
+    int *id = malloc((size_t)(n + 1) * (n + 1) * (n + 1) * sizeof(int));
+    for (int i = 0; i <= n; i++)
+        for (int j = 0; j <= n; j++)
+            for (int k = 0; k <= n; k++) {
+                int on = i == 0 || i == n || j == 0 || j == n || k == 0 || k == n;
+                vec3 p = v3(c.x - h + 2 * h * i / n, c.y - h + 2 * h * j / n, c.z - h + 2 * h * k / n);
+                id[(i * (n + 1) + j) * (n + 1) + k] = on ? add_vert(s, p) : -1;
+            }
+    for (int axis = 0; axis < 3; axis++)
+        for (int side = 0; side <= n; side += n)
+            for (int u = 0; u < n; u++)
+                for (int v = 0; v < n; v++) {
+                    int q[4], uv[4][2] = {{u, v}, {u + 1, v}, {u + 1, v + 1}, {u, v + 1}};
+                    for (int k = 0; k < 4; k++) {
+                        int g[3];
+                        g[axis] = side; g[(axis + 1) % 3] = uv[k][0]; g[(axis + 2) % 3] = uv[k][1];
+                        q[k] = id[(g[0] * (n + 1) + g[1]) * (n + 1) + g[2]];
+                    }
+                    add_tri_idx(s, q[0], q[1], q[2]);
+                    add_tri_idx(s, q[0], q[2], q[3]);
+                }
+    (void)base;
+    free(id);
+}
+
+/* ---- Brute force ------------------------------------------------------------------------------- */
+static int brute_intersect(const soup *s, const ray *r, hit *best)
+{
+    ray rr = *r;
+    best->tri = -1;
+    for (int t = 0; t < s->ntris; t++) {
+        hit h;
+        if (bvh_triangle_hit(corner(s, t, 0), corner(s, t, 1), corner(s, t, 2), &rr, &h)) {
+            *best = h; best->tri = t;
+            rr.tmax = h.t;     /* strictly closer from now on, like the bvh */
+        }
+    }
+    return best->tri >= 0;
+}
+
+/* 1 when the bvh's answer for r matches brute force; *why says how it does not. */
+static int agrees(const bvh *b, const soup *s, const ray *r, const char **why)
+{
+    hit hb, hf, again;
+    int ib = bvh_intersect(b, r, &hb), ifb = brute_intersect(s, r, &hf), oc = bvh_occluded(b, r);
+    *why = "";
+    if (ib != ifb) { *why = ib ? "bvh hit, brute force missed" : "bvh missed, brute force hit"; return 0; }
+    if (oc != ifb) { *why = "occluded disagrees"; return 0; }
+    if (!ib) return hb.tri == -1 || (*why = "tri not -1 on a miss", 0);
+    if (hb.t != hf.t) { *why = "different t"; return 0; }
+    if (!(hb.t > 0 && hb.t < r->tmax)) { *why = "t out of (0, tmax)"; return 0; }
+    /* ties: any triangle at the same t will do, with its own barycentrics */
+    if (!bvh_triangle_hit(corner(s, hb.tri, 0), corner(s, hb.tri, 1), corner(s, hb.tri, 2), r, &again) ||
+        again.t != hb.t || again.u != hb.u || again.v != hb.v) { *why = "hit triangle does not give that t, u, v"; return 0; }
+    return 1;
+}
+
+static ray random_ray(float extent)
+{
+    ray r;
+    r.o = rnd_vec(-extent, extent);
+    r.d = rnd_dir();
+    switch ((int)(rnd() * 8)) {      /* a quarter with zero direction components */
+    case 0: r.d = v3(rnd() < 0.5f ? -1.0f : 1.0f, 0, 0); break;
+    case 1: r.d = v3_normalize(v3(0, r.d.y, r.d.z)); break;
+    default: break;
+    }
+    if (rnd() < 0.1f) r.o.x = 0.25f * (float)(int)rnd_range(-4, 5);   /* origin on a coplanar plane */
+    r.tmax = rnd() < 0.3f ? rnd_range(0.1f, 3.0f) : INFINITY;
+    return r;
+}
+
+/* A ray through a corner of a random triangle that lies in a plane of the triangle's box: zero
+ * direction components, origin on the plane, so the slab test meets 0 * inf = NaN. */
+static ray ray_in_box_plane(const soup *s)
+{
+    int t = (int)(rnd() * (float)s->ntris), axis = (int)(rnd() * 3);
+    vec3 a = corner(s, t, (int)(rnd() * 3)), off = rnd_vec(-0.5f, 0.5f);
+    ray r;
+    if (axis == 0) off.x = 0; else if (axis == 1) off.y = 0; else off.z = 0;
+    if (rnd() < 0.3f) off = axis == 0 ? v3(0, 0, off.z) : axis == 1 ? v3(off.x, 0, 0) : v3(0, off.y, 0);
+    if (v3_is_zero(off)) off = v3(0, 0, 0.5f);
+    r.o = v3_add(a, off);
+    r.d = v3_sub(a, r.o);   /* exact zeros where off is zero: the ray stays in those planes */
+    r.tmax = INFINITY;
+    return r;
+}
+
+/* Also aims a third of the rays at a random triangle's centroid so that most rays hit something,
+ * and a sixth at triangle corners along planes of their boxes. */
+static void test_soup(int kind, int n, int nrays)
+{
+    soup s = {0};
+    make_soup(&s, kind, n);
+    bvh *b = bvh_build(s.P, s.tri, s.ntris, 2);
+    int bad = 0, hits = 0;
+    const char *why = "", *first_why = "";
+    for (int i = 0; i < nrays && b; i++) {
+        ray r = random_ray(1.5f);
+        if (i % 3 == 0) {
+            int t = (int)(rnd() * (float)s.ntris);
+            vec3 m = v3_scale(v3_add(v3_add(corner(&s, t, 0), corner(&s, t, 1)), corner(&s, t, 2)), 1.0f / 3);
+            r.d = v3_normalize(v3_sub(m, r.o));
+        } else if (i % 3 == 1 && i % 2 == 0)
+            r = ray_in_box_plane(&s);
+        hit h;
+        hits += bvh_intersect(b, &r, &h);
+        if (!agrees(b, &s, &r, &why)) { if (!bad++) first_why = why; }
+    }
+    char name[64];
+    snprintf(name, sizeof name, "soup_%s_%d", kind_name[kind], n);
+    check(b && bad == 0, name, "%d of %d rays disagree with brute force (%s); %d hits", bad, nrays, first_why, hits);
+    bvh_free(b);
+    soup_free(&s);
+}
+
+/* ---- Watertightness ------------------------------------------------------------------------ */
+/* Rays toward targets: every vertex, and points of every edge at several fractions. From inside,
+ * o is fixed; from outside (outside != 0), o lies beyond the target, away from the centre, so that
+ * the ray enters the (convex) solid at the target instead of grazing its silhouette. */
+static int count_misses(const bvh *b, const soup *s, vec3 o, int outside, vec3 center, int *nrays)
+{
+    static const float frac[] = {0.5f, 0.25f, 1.0f / 3.0f, 0.1f, 0.999f, 1e-4f};
+    int misses = 0;
+    for (int t = 0; t < s->ntris; t++)
+        for (int k = 0; k < 3; k++) {
+            vec3 a = corner(s, t, k), c = corner(s, t, (k + 1) % 3);
+            for (int f = -1; f < (int)(sizeof frac / sizeof frac[0]); f++) {
+                vec3 target = f < 0 ? a : v3_add(a, v3_scale(v3_sub(c, a), frac[f]));
+                if (outside) {
+                    vec3 out = v3_sub(target, center);
+                    o = v3_add(target, v3_add(v3_scale(out, 2.0f), v3_scale(rnd_dir(), 0.3f * v3_length(out))));
+                }
+                ray r = {o, v3_sub(target, o), INFINITY};
+                hit h;
+                if (v3_is_zero(r.d)) continue;
+                ++*nrays;
+                if (!bvh_intersect(b, &r, &h) || !bvh_occluded(b, &r)) misses++;
+            }
+        }
+    return misses;
+}
+
+static void test_closed(const char *name, const soup *s, vec3 center, float radius)
+{
+    bvh *b = bvh_build(s->P, s->tri, s->ntris, 2);
+    int miss_in = 0, miss_out = 0, nin = 0, nout = 0;
+    vec3 inside[3] = {center, v3_add(center, v3_scale(v3(0.3f, -0.2f, 0.1f), radius)),
+                      v3_add(center, v3_scale(v3(-0.05f, 0.4f, -0.3f), radius))};
+    for (int i = 0; i < 3 && b; i++) miss_in += count_misses(b, s, inside[i], 0, center, &nin);
+    if (b) miss_out = count_misses(b, s, center, 1, center, &nout);
+    check(b && miss_in + miss_out == 0, name, "%d misses of %d rays from inside, %d of %d from outside, at vertices and edges",
+          miss_in, nin, miss_out, nout);
+    bvh_free(b);
+}
+
+/* Axis-parallel rays from inside the cube through grid points of its faces: the direction has two
+ * zero components and the origin lies on box planes of the bvh. */
+static void test_axis_rays(const char *name, const soup *cube, vec3 c, float h, int n)
+{
+    bvh *b = bvh_build(cube->P, cube->tri, cube->ntris, 1);
+    int misses = 0, nrays = 0;
+    for (int i = 1; i < n && b; i++)
+        for (int j = 1; j < n; j++)
+            for (int axis = 0; axis < 3; axis++)
+                for (int sign = -1; sign <= 1; sign += 2) {
+                    float g[3] = {c.x, c.y, c.z}, d[3] = {0, 0, 0}, u = -h + 2 * h * i / n, v = -h + 2 * h * j / n;
+                    g[(axis + 1) % 3] += u; g[(axis + 2) % 3] += v; d[axis] = (float)sign;
+                    ray r = {v3(g[0], g[1], g[2]), v3(d[0], d[1], d[2]), INFINITY};
+                    hit hh;
+                    nrays++;
+                    if (!bvh_intersect(b, &r, &hh) || !bvh_occluded(b, &r)) misses++;
+                }
+    check(b && misses == 0, name, "%d misses of %d axis-parallel rays", misses, nrays);
+    bvh_free(b);
+}
+
+static void test_watertight(void)
+{
+    vec3 far = v3(1e4f, -1e4f, 1e4f);
+    int levels = quick ? 3 : 4, grid = quick ? 8 : 16;
+    for (int moved = 0; moved < 2; moved++) {
+        vec3 c = moved ? far : v3(0, 0, 0);
+        soup sphere = {0}, cube = {0};
+        char name[64];
+        make_icosphere(&sphere, c, 1.0f, levels);
+        make_cube(&cube, c, 1.0f, grid);
+        snprintf(name, sizeof name, "watertight_icosphere%s", moved ? "_at_1e4" : "");
+        test_closed(name, &sphere, c, 1.0f);
+        snprintf(name, sizeof name, "watertight_cube%s", moved ? "_at_1e4" : "");
+        test_closed(name, &cube, c, 1.0f);
+        snprintf(name, sizeof name, "watertight_cube_axis_rays%s", moved ? "_at_1e4" : "");
+        test_axis_rays(name, &cube, c, 1.0f, grid);
+        soup_free(&sphere); soup_free(&cube);
+    }
+}
+
+/* ---- tmax, threads, empty ------------------------------------------------------------------ */
+static void test_tmax(void)
+{
+    soup s = {0};
+    make_soup(&s, UNIFORM, 2000);
+    bvh *b = bvh_build(s.P, s.tri, s.ntris, 1);
+    int bad = 0, tested = 0;
+    for (int i = 0; i < 2000 && b; i++) {
+        ray r = {rnd_vec(-1.5f, 1.5f), rnd_dir(), INFINITY};
+        hit h, h2;
+        if (!bvh_intersect(b, &r, &h)) continue;
+        tested++;
+        r.tmax = h.t;                        /* the hit is at t = tmax: not in (0, tmax) */
+        if (bvh_intersect(b, &r, &h2) && h2.t >= h.t) bad++;
+        if (bvh_occluded(b, &r) != bvh_intersect(b, &r, &h2)) bad++;
+        r.tmax = nextafterf(h.t, INFINITY);  /* now it is */
+        if (!bvh_intersect(b, &r, &h2) || h2.t != h.t || !bvh_occluded(b, &r)) bad++;
+    }
+    check(b && bad == 0 && tested > 100, "tmax_exclusive", "%d failures over %d hit rays", bad, tested);
+    bvh_free(b);
+    soup_free(&s);
+}
+
+static void test_threads(void)
+{
+    soup s = {0};
+    int n = quick ? 20000 : 100000, bad = 0, stats[3][3];
+    make_soup(&s, UNIFORM, n);   /* not MIXED: its 10% of big triangles make every ray slow */
+    bvh *b[3];
+    for (int k = 0; k < 3; k++) {
+        b[k] = bvh_build(s.P, s.tri, s.ntris, k + 1);
+        if (b[k]) bvh_stats(b[k], &stats[k][0], &stats[k][1], &stats[k][2]);
+    }
+    for (int i = 0; i < 20000 && b[0] && b[1] && b[2]; i++) {
+        ray r = random_ray(1.5f);
+        hit h[3];
+        int got[3];
+        for (int k = 0; k < 3; k++) got[k] = bvh_intersect(b[k], &r, &h[k]);
+        for (int k = 1; k < 3; k++)
+            if (got[k] != got[0] || (got[0] && (h[k].t != h[0].t || h[k].tri != h[0].tri || h[k].u != h[0].u))) bad++;
+    }
+    check(b[0] && b[1] && b[2] && bad == 0 && !memcmp(stats[0], stats[1], sizeof stats[0]) && !memcmp(stats[0], stats[2], sizeof stats[0]),
+          "threads_same_hits", "%d differences; nodes %d %d %d, leaves %d, depth %d", bad, stats[0][0], stats[1][0], stats[2][0], stats[0][1], stats[0][2]);
+    for (int k = 0; k < 3; k++) bvh_free(b[k]);
+    soup_free(&s);
+}
+
+static void test_empty_and_single(void)
+{
+    vec3 P[3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    int tri[3] = {0, 1, 2};
+    bvh *e = bvh_build(P, tri, 0, 1), *one = bvh_build(P, tri, 1, 4);
+    ray r = {v3(0.25f, 0.25f, 1), v3(0, 0, -1), INFINITY};
+    hit h;
+    int ok_e = e && !bvh_intersect(e, &r, &h) && h.tri == -1 && !bvh_occluded(e, &r);
+    int ok_1 = one && bvh_intersect(one, &r, &h) && h.tri == 0 && h.t == 1.0f && h.u == 0.25f && h.v == 0.25f && bvh_occluded(one, &r);
+    check(ok_e, "empty_bvh_misses", NULL);
+    check(ok_1, "single_triangle", "t %g u %g v %g", (double)h.t, (double)h.u, (double)h.v);
+    r.d = v3(0, 0, 1);
+    check(one && !bvh_intersect(one, &r, &h) && !bvh_occluded(one, &r), "behind_origin_misses", NULL);
+    bvh_free(e); bvh_free(one);
+}
+
+/* ---- offset_ray_origin --------------------------------------------------------------------- */
+/* Direction about n with cos theta >= mincos. */
+static vec3 rnd_hemisphere(vec3 n, float mincos)
+{
+    for (;;) {
+        vec3 d = rnd_dir();
+        if (v3_dot(d, n) >= mincos) return d;
+    }
+}
+
+/* Points on triangles of an icosphere of radius 10 moved 1e5 away; rays leave outward (must miss
+ * everything) and inward from the point offset along -n (must not hit their own triangle). */
+static void test_offset(void)
+{
+    soup s = {0};
+    make_icosphere(&s, v3(1e5f, -1e5f, 1e5f), 10.0f, 3);
+    bvh *b = bvh_build(s.P, s.tri, s.ntris, 1);
+    int self = 0, self_raw = 0, rays = 0;
+    for (int i = 0; i < (quick ? 5000 : 40000) && b; i++) {
+        int t = (int)(rnd() * (float)s.ntris);
+        vec3 a = corner(&s, t, 0), bb = corner(&s, t, 1), c = corner(&s, t, 2);
+        vec3 n = v3_normalize(v3_cross(v3_sub(bb, a), v3_sub(c, a)));   /* outward */
+        float u = rnd(), v = rnd();
+        if (u + v > 1) { u = 1 - u; v = 1 - v; }
+        vec3 p = v3_add(a, v3_add(v3_scale(v3_sub(bb, a), u), v3_scale(v3_sub(c, a), v)));
+        for (int side = -1; side <= 1; side += 2) {
+            vec3 ns = v3_scale(n, (float)side);
+            ray r = {offset_ray_origin(p, ns), rnd_hemisphere(ns, 0.01f), INFINITY}, raw = r;
+            hit h;
+            raw.o = p;
+            rays++;
+            if (bvh_intersect(b, &r, &h) && h.tri == t) self++;
+            if (bvh_intersect(b, &raw, &h) && h.tri == t) self_raw++;
+        }
+    }
+    check(b && self == 0, "offset_origin_no_self_hit_at_1e5", "%d self hits of %d rays (%d without the offset)", self, rays, self_raw);
+    bvh_free(b);
+    soup_free(&s);
+}
+
+int main(void)
+{
+    static const int sizes[] = {1, 2, 5, 17, 100, 1000, 20000};
+    quick = SANITIZED || getenv("PATHLAB_TEST_QUICK") != NULL;
+    for (int kind = 0; kind < NKINDS; kind++)
+        for (int i = 0; i < (int)(sizeof sizes / sizeof sizes[0]); i++) {
+            int n = sizes[i], nrays = n >= 20000 ? 300 : 2000;
+            if (quick && n > 1000) continue;
+            test_soup(kind, n, quick ? nrays / 4 : nrays);
+        }
+    test_empty_and_single();
+    test_tmax();
+    test_threads();
+    test_watertight();
+    test_offset();
+    return check_summary();
+}

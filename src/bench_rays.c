@@ -45,7 +45,8 @@ static uint32_t lowbias32(uint32_t x)
 }
 static float u01(uint32_t h) { return (float)(h >> 8) * (1.0f / 16777216.0f); }
 
-static void trace_primary(job *j, int px, int py)
+/* Each returns 1 for a hit (or an occluded shadow ray). */
+static int trace_primary(const job *j, int px, int py)
 {
     const scene *s = j->s;
     int i = py * s->res + px;
@@ -53,14 +54,13 @@ static void trace_primary(job *j, int px, int py)
     vec3 d = v3_normalize(v3_add(s->cw, v3_add(v3_scale(s->cu, sx), v3_scale(s->cv, sy))));
     ray r = {s->eye, d, INFINITY};
     hit h;
-    j->rays++;
-    if (!bvh_intersect(s->b, &r, &h)) return;
+    if (!bvh_intersect(s->b, &r, &h)) return 0;
     const int *t = s->m->tri + 3 * h.tri;
     vec3 a = s->m->P[t[0]], b = s->m->P[t[1]], c = s->m->P[t[2]];
     vec3 n = v3_normalize(v3_cross(v3_sub(b, a), v3_sub(c, a)));
     if (v3_dot(n, d) > 0) n = v3_scale(n, -1.0f);
     s->hitp[i] = v3_add(s->eye, v3_scale(d, h.t)); s->hitn[i] = n; s->hitok[i] = 1;
-    j->hits++;
+    return 1;
 }
 
 static vec3 diffuse_dir(vec3 n, int i)
@@ -73,20 +73,19 @@ static vec3 diffuse_dir(vec3 n, int i)
                                v3_scale(n, sqrtf(fmaxf(0.0f, 1.0f - u1)))));
 }
 
-static void trace_secondary(job *j, int i)
+static int trace_secondary(const job *j, int i)
 {
     const scene *s = j->s;
     vec3 o = v3_add(s->hitp[i], v3_scale(s->hitn[i], s->offs));
-    j->rays++;
     if (j->kind == DIFFUSE) {
         ray r = {o, diffuse_dir(s->hitn[i], i), INFINITY};
         hit h;
-        j->hits += bvh_intersect(s->b, &r, &h);
+        return bvh_intersect(s->b, &r, &h);
     } else {
         vec3 to = v3_sub(s->light, o);
         float dist = sqrtf(v3_dot(to, to));
         ray r = {o, v3_scale(to, 1.0f / dist), dist * (1.0f - 1e-4f)};
-        j->hits += bvh_occluded(s->b, &r);
+        return bvh_occluded(s->b, &r);
     }
 }
 
@@ -94,11 +93,14 @@ static void *work(void *arg)
 {
     job *j = arg;
     int res = j->s->res;
+    long rays = 0, hits = 0;   /* counted here, stored once: the jobs share cache lines */
     for (int row = j->k; row < res; row += j->nthreads)   /* rows dealt round-robin */
         for (int px = 0; px < res; px++) {
-            if (j->kind == PRIMARY) trace_primary(j, px, row);
-            else if (j->s->hitok[row * res + px]) trace_secondary(j, row * res + px);
+            if (j->kind == PRIMARY) rays++, hits += trace_primary(j, px, row);
+            else if (j->s->hitok[row * res + px]) rays++, hits += trace_secondary(j, row * res + px);
         }
+    j->rays = rays;
+    j->hits = hits;
     return NULL;
 }
 

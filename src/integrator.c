@@ -78,7 +78,7 @@ static vec3 direct_from_light(const scene *s, const integrator_opts *o, const ve
     ray shadow;
     double u0 = pcg32_double(rng);
     float u1 = pcg32_float(rng), u2 = pcg32_float(rng);
-    light_sample_point(&s->lights, o->light, u0, u1, u2, &ls);
+    light_sample_point(&s->lights, o->light, v->p, u0, u1, u2, &ls);
     d = v3_sub(ls.p, v->p);
     dist2 = v3_dot(d, d);
     dist = sqrtf(dist2);
@@ -99,8 +99,8 @@ static vec3 direct_from_light(const scene *s, const integrator_opts *o, const ve
     return v3_scale(v3_mul(f, ls.Le), cos_p / pdf_light * w);
 }
 
-/* L_k by direction sampling: the continuation ray from p hit an emitter at q (hit h). */
-static vec3 direct_from_dir(const scene *s, const integrator_opts *o, const hit *h, const ray *r, float pdf2)
+/* L_k by direction sampling: the continuation ray from p (vertex v) hit an emitter at q (hit h). */
+static vec3 direct_from_dir(const scene *s, const integrator_opts *o, const vertex *v, const hit *h, const ray *r, float pdf2)
 {
     vec3 Le = emitted(s, h, r->d);
     float w = 1.0f;
@@ -109,7 +109,7 @@ static vec3 direct_from_dir(const scene *s, const integrator_opts *o, const hit 
         int i = s->lights.emitter_of_tri[h->tri];
         float dist2 = h->t * h->t * v3_dot(r->d, r->d);
         float cos_s = -v3_dot(s->Ng[h->tri], r->d) / v3_length(r->d);
-        float pdf_light = pdf_area_to_solid_angle(light_pdf_area(&s->lights, o->light, i), dist2, cos_s);
+        float pdf_light = pdf_area_to_solid_angle(light_pdf_area(&s->lights, o->light, i, v->p, scene_hit_point(s, h)), dist2, cos_s);
         w = mis_weight(o->direct, pdf2, pdf_light);
     }
     return v3_scale(Le, w);
@@ -161,7 +161,7 @@ void integrate(const scene *s, const integrator_opts *o, const ray *camera, pcg3
 
         /* L_k, direction sampling: q is on a light */
         if (k >= o->bmin && lights && uses_dir_sampling(o->direct))
-            add(L, o, k, v3_mul(beta, direct_from_dir(s, o, &h, &r, pdf2)));
+            add(L, o, k, v3_mul(beta, direct_from_dir(s, o, &v, &h, &r, pdf2)));
 
         /* "et on arrete quand ?": Russian roulette, survival in proportion to the throughput */
         if (o->rr_depth >= 0 && k >= o->rr_depth && k < o->bmax) {

@@ -30,6 +30,9 @@ static int build_cdf(light_set *ls, light_strategy st)
     return 0;
 }
 
+/* solid-angle chooses its triangle as power does */
+static light_strategy choice_of(light_strategy st) { return st == LIGHT_SOLID_ANGLE ? LIGHT_POWER : st; }
+
 int light_build(light_set *ls, const mesh *m, const vec3 *Ng, const float *area)
 {
     double total_area = 0.0;   /* a float sum of 1e5 small areas drifts by 1e-4 or more */
@@ -58,7 +61,7 @@ int light_build(light_set *ls, const mesh *m, const vec3 *Ng, const float *area)
     }
     ls->total_area = (float)total_area;
     if (ls->n == 0) return 0;
-    for (st = 0; st < LIGHT_NSTRATEGIES; st++)
+    for (st = 0; st <= LIGHT_POWER; st++)
         if (build_cdf(ls, (light_strategy)st)) return 1;
     return 0;
 }
@@ -82,33 +85,102 @@ static int pick(const double *cdf, int n, double u)
     return lo;
 }
 
-static float choice_prob(const light_set *ls, light_strategy st, int i)
+float light_choice_prob(const light_set *ls, light_strategy st, int i)
 {
-    return (float)(ls->cdf[st][i] - (i > 0 ? ls->cdf[st][i - 1] : 0.0));
+    const double *cdf = ls->cdf[choice_of(st)];
+    return (float)(cdf[i] - (i > 0 ? cdf[i - 1] : 0.0));
 }
 
-float light_pdf_area(const light_set *ls, light_strategy st, int i)
+/* The spherical triangle an emitter subtends from p: unit directions A, B, C to its corners, its
+ * solid angle Omega (Van Oosterom and Strackee 1983: tan(Omega/2) = |A.(B x C)| / (1 + A.B + B.C +
+ * C.A)) and its angle alpha at A, between the great arcs AB and AC. */
+typedef struct { vec3 A, B, C; float omega, alpha; } spherical_triangle;
+
+static spherical_triangle spherical_triangle_from(const emitter *e, vec3 p)
 {
+    spherical_triangle t;
+    vec3 a = v3_sub(e->a, p), tb, tc;
+    t.A = v3_normalize(a);
+    t.B = v3_normalize(v3_add(a, e->e1));
+    t.C = v3_normalize(v3_add(a, e->e2));
+    t.omega = 2.0f * atan2f(fabsf(v3_dot(t.A, v3_cross(t.B, t.C))),
+                            1.0f + v3_dot(t.A, t.B) + v3_dot(t.B, t.C) + v3_dot(t.C, t.A));
+    tb = v3_normalize(v3_madd(t.B, t.A, -v3_dot(t.A, t.B)));   /* tangents of the arcs at A */
+    tc = v3_normalize(v3_madd(t.C, t.A, -v3_dot(t.A, t.C)));
+    t.alpha = acosf(fminf(1.0f, fmaxf(-1.0f, v3_dot(tb, tc))));
+    return t;
+}
+
+/* Float Arvo sampling is accurate only for spherical triangles neither tiny nor close to a
+ * hemisphere; outside these bounds a point uniform in area is used instead (and its pdf). */
+#define SOLID_ANGLE_MIN 3e-4f
+#define SOLID_ANGLE_MAX 6.0f
+static int solid_angle_usable(const spherical_triangle *t)
+{
+    return t->omega > SOLID_ANGLE_MIN && t->omega < SOLID_ANGLE_MAX && t->alpha > 0.0f;
+}
+
+/* v minus its component along the unit vector u, normalised */
+static vec3 orthogonal_part(vec3 v, vec3 u) { return v3_normalize(v3_madd(v, u, -v3_dot(v, u))); }
+
+/* Arvo 1995: a direction uniform over the spherical triangle. u1 picks the sub-triangle A B C'
+ * of area u1 Omega (C' on the arc AC), u2 a point on the arc from B to C' with the right density. */
+static vec3 sample_spherical_triangle(const spherical_triangle *t, float u1, float u2)
+{
+    float sub = u1 * t->omega, s = sinf(sub - t->alpha), c = cosf(sub - t->alpha);
+    float cos_alpha = cosf(t->alpha), sin_alpha = sinf(t->alpha);
+    float u = c - cos_alpha, v = s + sin_alpha * v3_dot(t->A, t->B);
+    float q = ((v * c - u * s) * cos_alpha - v) / ((v * s + u * c) * sin_alpha);   /* cos of arc AC' */
+    vec3 C1;
+    float z;
+    q = fminf(1.0f, fmaxf(-1.0f, q));
+    C1 = v3_madd(v3_scale(t->A, q), orthogonal_part(t->C, t->A), sqrtf(1.0f - q * q));
+    z = 1.0f - u2 * (1.0f - v3_dot(C1, t->B));                                      /* cos of arc B P */
+    return v3_madd(v3_scale(t->B, z), orthogonal_part(C1, t->B), sqrtf(fmaxf(0.0f, 1.0f - z * z)));
+}
+
+float light_pdf_area(const light_set *ls, light_strategy st, int i, vec3 p, vec3 s)
+{
+    const emitter *e = &ls->e[i];
     /* the area strategy is exactly 1/A; computing it from the cdf would add rounding */
     if (st == LIGHT_AREA) return 1.0f / ls->total_area;
-    return choice_prob(ls, st, i) / ls->e[i].area;
+    if (st == LIGHT_SOLID_ANGLE) {
+        spherical_triangle t = spherical_triangle_from(e, p);
+        if (solid_angle_usable(&t)) {
+            vec3 d = v3_sub(s, p);
+            float dist2 = v3_dot(d, d), cos_s = fabsf(v3_dot(e->n, d)) / sqrtf(dist2);
+            return light_choice_prob(ls, st, i) / t.omega * cos_s / dist2;   /* 1/Omega per steradian */
+        }
+    }
+    return light_choice_prob(ls, st, i) / e->area;
 }
 
-void light_sample_point(const light_set *ls, light_strategy st, double u0, float u1, float u2, light_sample *out)
+void light_sample_point(const light_set *ls, light_strategy st, vec3 p, double u0, float u1, float u2, light_sample *out)
 {
-    int i = pick(ls->cdf[st], ls->n, u0);
+    int i = pick(ls->cdf[choice_of(st)], ls->n, u0);
     const emitter *e = &ls->e[i];
     float b1, b2;
-    sample_uniform_triangle(u1, u2, &b1, &b2);
-    out->p = v3_add(e->a, v3_add(v3_scale(e->e1, b1), v3_scale(e->e2, b2)));
     out->n = e->n;
     out->Le = e->Le;
     out->emitter = i;
-    out->pdf_area = light_pdf_area(ls, st, i);
+    if (st == LIGHT_SOLID_ANGLE) {
+        spherical_triangle t = spherical_triangle_from(e, p);
+        if (solid_angle_usable(&t)) {
+            /* the point of the triangle's plane in the sampled direction */
+            vec3 w = sample_spherical_triangle(&t, u1, u2);
+            float dist = v3_dot(v3_sub(e->a, p), e->n) / v3_dot(w, e->n);
+            out->p = v3_madd(p, w, dist);
+            out->pdf_area = light_pdf_area(ls, st, i, p, out->p);
+            return;
+        }
+    }
+    sample_uniform_triangle(u1, u2, &b1, &b2);
+    out->p = v3_add(e->a, v3_add(v3_scale(e->e1, b1), v3_scale(e->e2, b2)));
+    out->pdf_area = light_pdf_area(ls, st, i, p, out->p);
 }
 
 const char *light_strategy_name(light_strategy st)
 {
-    static const char *names[] = {"area", "triangle", "power"};
+    static const char *names[] = {"area", "triangle", "power", "solid-angle"};
     return names[st];
 }

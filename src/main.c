@@ -29,13 +29,13 @@ static const char *USAGE =
     "  --bounces A:B        render L_A + ... + L_B; B may be inf (default 0:inf)\n"
     "  --bounce K           the same as --bounces K:K\n"
     "  --split              also write one image per bounce: FILE_L0.pfm, FILE_L1.pfm, ...\n"
-    "  --light area|triangle|power      how a point s on a light is chosen (default area)\n"
+    "  --light area|triangle|power|solid-angle   how a point s on a light is chosen (default area)\n"
     "  --dir uniform|cosine|brdf        how a direction is chosen at a surface (default brdf)\n"
     "  --direct light|brdf|mis-balance|mis-power   the estimator of direct light (default mis-power)\n"
     "  --rr D|off           Russian roulette after D bounces (default 3)\n"
     "  --variance FILE.pfm  also write the variance of each pixel's mean\n";
 
-static const char *const LIGHT_NAMES[] = {"area", "triangle", "power", NULL};
+static const char *const LIGHT_NAMES[] = {"area", "triangle", "power", "solid-angle", NULL};
 static const char *const DIR_NAMES[] = {"uniform", "cosine", "brdf", NULL};
 static const char *const DIRECT_NAMES[] = {"light", "brdf", "mis-balance", "mis-power", NULL};
 

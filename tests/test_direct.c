@@ -300,6 +300,7 @@ int main(void)
         {"light sampling (area)", LIGHT_AREA, DIR_COSINE, DIRECT_LIGHT},
         {"light sampling (triangle)", LIGHT_TRIANGLE, DIR_COSINE, DIRECT_LIGHT},
         {"light sampling (power)", LIGHT_POWER, DIR_COSINE, DIRECT_LIGHT},
+        {"light sampling (solid angle)", LIGHT_SOLID_ANGLE, DIR_COSINE, DIRECT_LIGHT},
         {"BRDF sampling (cosine)", LIGHT_AREA, DIR_COSINE, DIRECT_BRDF},
         {"BRDF sampling (brdf)", LIGHT_AREA, DIR_BRDF, DIRECT_BRDF},
         {"BRDF sampling (uniform)", LIGHT_AREA, DIR_UNIFORM, DIRECT_BRDF},
@@ -308,6 +309,7 @@ int main(void)
         {"MIS balance (triangle + brdf)", LIGHT_TRIANGLE, DIR_BRDF, DIRECT_MIS_BALANCE},
         {"MIS power (power + cosine)", LIGHT_POWER, DIR_COSINE, DIRECT_MIS_POWER},
         {"MIS power (area + brdf)", LIGHT_AREA, DIR_BRDF, DIRECT_MIS_POWER},
+        {"MIS power (solid angle + brdf)", LIGHT_SOLID_ANGLE, DIR_BRDF, DIRECT_MIS_POWER},
     };
     static const struct { const char *where; double eye[3], x[3]; } P[] = {
         {"under the light centre", {0, -3, 0.5}, {0, 0, 0}},

@@ -727,7 +727,7 @@ static void test_lights(void)
         check(ok && fabs(ls.total_area - A) < 1e-6 * A, "light_build emitters and areas",
               "total area %.6f (expected %.6f)", ls.total_area, A);
     }
-    for (st = 0; st < LIGHT_NSTRATEGIES; st++) {
+    for (st = 0; st <= LIGHT_POWER; st++) {   /* the strategies whose pdf is choice / area */
         double w[NTRI], sum = 0.0, obs[NTRI], expct[NTRI], pdf_err = 0.0, geo_err = 0.0, cell[64], cell_e[64];
         char name[96];
         long k;
@@ -739,7 +739,7 @@ static void test_lights(void)
         }
         for (e = 0; e < ls.n; e++) {   /* pdf1(s) = (choice probability) / area */
             double want = w[e] / sum / ls.e[e].area;
-            pdf_err = fmax(pdf_err, fabs(light_pdf_area(&ls, (light_strategy)st, e) - want) / want);
+            pdf_err = fmax(pdf_err, fabs(light_pdf_area(&ls, (light_strategy)st, e, v3(0, 0, 0), v3(0, 0, 0)) - want) / want);
             obs[e] = 0.0, expct[e] = w[e] / sum * (double)n_samples;
         }
         for (k = 0; k < 64; k++) cell[k] = 0.0, cell_e[k] = (double)n_samples / 64.0;
@@ -749,7 +749,7 @@ static void test_lights(void)
             const emitter *em;
             vec3 d;
             double b1, b2, nn;
-            light_sample_point(&ls, (light_strategy)st, pcg32_double(&rng), pcg32_float(&rng), pcg32_float(&rng), &s);
+            light_sample_point(&ls, (light_strategy)st, v3(0, 0, 0), pcg32_double(&rng), pcg32_float(&rng), pcg32_float(&rng), &s);
             if (s.emitter < 0 || s.emitter >= ls.n) {
                 geo_err = INFINITY;
                 break;
@@ -766,7 +766,7 @@ static void test_lights(void)
             nn = fabs(v3_dot(d, em->n));
             cell[subtriangle(b1, b2, 8)] += 1.0;
             geo_err = fmax(geo_err, fmax(fmax(-b1, -b2), fmax(b1 + b2 - 1.0, nn)));
-            if (fabs(s.pdf_area - light_pdf_area(&ls, (light_strategy)st, s.emitter)) > 1e-6f * s.pdf_area ||
+            if (fabs(s.pdf_area - light_pdf_area(&ls, (light_strategy)st, s.emitter, v3(0, 0, 0), s.p)) > 1e-6f * s.pdf_area ||
                 !v3_is_zero(v3_sub(s.n, Ng[em->tri])) || !v3_is_zero(v3_sub(s.Le, mats[em->tri].Ke)))
                 geo_err = INFINITY;
         }
@@ -816,15 +816,15 @@ static void test_many_emitters(void)
     m.P = P, m.nverts = 3 * n, m.tri = tri, m.tri_mat = tri_mat, m.ntris = n, m.mats = mats, m.nmats = 3;
     i = light_build(&ls, &m, Ng, area);
     if (check(i == 0 && ls.n == n, "light_build on 300000 emitters", "%d emitters", ls.n)) {
-        check(fabs(light_pdf_area(&ls, LIGHT_AREA, 0) * A - 1.0) < 1e-5, "area pdf of 300000 emitters = 1 / total area",
-              "1/pdf = %.7g, sum of the areas %.7g (relative gap %.2g)", 1.0 / light_pdf_area(&ls, LIGHT_AREA, 0), A,
-              light_pdf_area(&ls, LIGHT_AREA, 0) * A - 1.0);
-        for (st = 0; st < LIGHT_NSTRATEGIES; st++) {
+        check(fabs(light_pdf_area(&ls, LIGHT_AREA, 0, v3(0, 0, 0), v3(0, 0, 0)) * A - 1.0) < 1e-5, "area pdf of 300000 emitters = 1 / total area",
+              "1/pdf = %.7g, sum of the areas %.7g (relative gap %.2g)", 1.0 / light_pdf_area(&ls, LIGHT_AREA, 0, v3(0, 0, 0), v3(0, 0, 0)), A,
+              light_pdf_area(&ls, LIGHT_AREA, 0, v3(0, 0, 0), v3(0, 0, 0)) * A - 1.0);
+        for (st = 0; st <= LIGHT_POWER; st++) {   /* the strategies whose pdf is choice / area */
             double worst = 0.0, worst_allowed = 0.0, prev = 0.0, sum_p = 0.0;
             char name[96];
             for (i = 0; i < n; i++) {
                 double next = ceil((double)ls.cdf[st][i] * 4294967296.0), picked = (next - prev) / 4294967296.0;
-                double claimed = (double)light_pdf_area(&ls, (light_strategy)st, i) * ls.e[i].area;
+                double claimed = (double)light_pdf_area(&ls, (light_strategy)st, i, v3(0, 0, 0), v3(0, 0, 0)) * ls.e[i].area;
                 double gap = fabs(picked - claimed) / claimed, allowed = 1.0 / 4294967296.0 / claimed + 1e-5;
                 if (gap / allowed > worst) worst = gap / allowed, worst_allowed = allowed;
                 sum_p += claimed;
@@ -896,7 +896,7 @@ int main(void)
         {"glossy Ns=10", 0.0f, 0.5f, 10.0f},      {"glossy Ns=100", 0.0f, 0.5f, 100.0f},
         {"glossy Ns=1e4", 0.0f, 0.9f, 1e4f},      {"mixed Kd .5 Ks .3 Ns=10", 0.5f, 0.3f, 10.0f},
         {"mixed Kd .2 Ks .6 Ns=1e4", 0.2f, 0.6f, 1e4f}};
-    const int nwarps = 6, nthetas = 5, nmats = 7, ncases = nwarps + nthetas * nmats + 1 + LIGHT_NSTRATEGIES + 1;
+    const int nwarps = 6, nthetas = 5, nmats = 7, ncases = nwarps + nthetas * nmats + 1 + (LIGHT_POWER + 1) + 1;
     const char *fast = getenv("PATHLAB_FAST");
     int i, j;
     unsigned seed = 1;

@@ -125,6 +125,42 @@ static int image_ok(const image *im, const char *path)
     return 0;
 }
 
+/* One row of linear floats (3 per pixel) into the bytes of a file format. */
+typedef void (*row_encoder)(const float *src, int w, unsigned char *out, float gain);
+
+/* The shared body of every image writer: a header (printf format taking w and h), then the rows,
+ * top first or bottom first, each encoded into bytes_per_pixel * w bytes; written atomically. */
+static int write_rows(const image *im, const char *path, const char *header, size_t bytes_per_pixel,
+                      int bottom_up, row_encoder encode, float gain)
+{
+    size_t row_bytes;
+    unsigned char *row;
+    char *tmp;
+    FILE *f;
+    int y, ok;
+    if (!image_ok(im, path)) return 1;
+    row_bytes = (size_t)im->w * bytes_per_pixel;
+    row = malloc(row_bytes);
+    if (!row) {
+        fprintf(stderr, "%s: out of memory\n", path);
+        return 1;
+    }
+    f = atomic_open(path, &tmp);
+    if (!f) {
+        free(row);
+        return 1;
+    }
+    ok = fprintf(f, header, im->w, im->h) > 0;
+    for (y = 0; ok && y < im->h; y++) {
+        int src_y = bottom_up ? im->h - 1 - y : y;
+        encode(im->px + (size_t)src_y * im->w * 3, im->w, row, gain);
+        ok = fwrite(row, 1, row_bytes, f) == row_bytes;
+    }
+    if (!ok) fprintf(stderr, "%s: cannot write: %s\n", path, strerror(errno));
+    free(row);
+    return atomic_close(f, tmp, path, ok);
+}
+
 /* ---- PFM ---- */
 
 static void put_f32_le(unsigned char *b, float v)
@@ -149,35 +185,17 @@ static float get_f32(const unsigned char *b, int big_endian)
     return v;
 }
 
+static void encode_pfm_row(const float *src, int w, unsigned char *out, float gain)
+{
+    size_t i;
+    (void)gain;   /* PFM keeps the linear values as they are */
+    for (i = 0; i < (size_t)w * 3; i++) put_f32_le(out + 4 * i, src[i]);
+}
+
 int img_write_pfm(const image *im, const char *path)
 {
-    size_t row_bytes, i;
-    unsigned char *row;
-    char *tmp;
-    FILE *f;
-    int y, ok;
-    if (!image_ok(im, path)) return 1;
-    row_bytes = (size_t)im->w * 12;
-    row = malloc(row_bytes);
-    if (!row) {
-        fprintf(stderr, "%s: out of memory\n", path);
-        return 1;
-    }
-    f = atomic_open(path, &tmp);
-    if (!f) {
-        free(row);
-        return 1;
-    }
-    ok = fprintf(f, "PF\n%d %d\n-1.0\n", im->w, im->h) > 0;
     /* PFM stores the bottom row first; our row 0 is the top. */
-    for (y = im->h - 1; ok && y >= 0; y--) {
-        const float *src = im->px + (size_t)y * im->w * 3;
-        for (i = 0; i < (size_t)im->w * 3; i++) put_f32_le(row + 4 * i, src[i]);
-        ok = fwrite(row, 1, row_bytes, f) == row_bytes;
-    }
-    if (!ok) fprintf(stderr, "%s: cannot write: %s\n", path, strerror(errno));
-    free(row);
-    return atomic_close(f, tmp, path, ok);
+    return write_rows(im, path, "PF\n%d %d\n-1.0\n", 12, 1, encode_pfm_row, 1.0f);
 }
 
 /* Reads one whitespace-separated header token into tok (at most size-1 chars).
@@ -315,35 +333,15 @@ static unsigned char to_byte(float linear, float gain)
     return (unsigned char)(srgb_encode(linear * gain) * 255.0f + 0.5f);
 }
 
+static void encode_ppm_row(const float *src, int w, unsigned char *out, float gain)
+{
+    size_t i;
+    for (i = 0; i < (size_t)w * 3; i++) out[i] = to_byte(src[i], gain);
+}
+
 int img_write_ppm(const image *im, const char *path, float exposure)
 {
-    float gain = exp2f(exposure);
-    size_t row_bytes, i;
-    unsigned char *row;
-    char *tmp;
-    FILE *f;
-    int y, ok;
-    if (!image_ok(im, path)) return 1;
-    row_bytes = (size_t)im->w * 3;
-    row = malloc(row_bytes);
-    if (!row) {
-        fprintf(stderr, "%s: out of memory\n", path);
-        return 1;
-    }
-    f = atomic_open(path, &tmp);
-    if (!f) {
-        free(row);
-        return 1;
-    }
-    ok = fprintf(f, "P6\n%d %d\n255\n", im->w, im->h) > 0;
-    for (y = 0; ok && y < im->h; y++) {
-        const float *src = im->px + (size_t)y * im->w * 3;
-        for (i = 0; i < row_bytes; i++) row[i] = to_byte(src[i], gain);
-        ok = fwrite(row, 1, row_bytes, f) == row_bytes;
-    }
-    if (!ok) fprintf(stderr, "%s: cannot write: %s\n", path, strerror(errno));
-    free(row);
-    return atomic_close(f, tmp, path, ok);
+    return write_rows(im, path, "P6\n%d %d\n255\n", 3, 0, encode_ppm_row, exp2f(exposure));
 }
 
 /* ---- by extension ---- */

@@ -137,7 +137,7 @@ void integrate(const scene *s, const integrator_opts *o, const ray *camera, pcg3
     for (k = 1; k <= o->bmax; k++) {
         vertex v = make_vertex(s, &h, r.d);
         vec3 wi, f;
-        float pdf2, cos_q;
+        float pdf2, cos_p;
 
         /* L_k, light sampling: choose s on a light */
         if (k >= o->bmin && lights && uses_light_sampling(o->direct))
@@ -146,12 +146,13 @@ void integrate(const scene *s, const integrator_opts *o, const ray *camera, pcg3
         /* the last bounce needs a continuation ray only to find emitters by direction sampling */
         if (k == o->bmax && !uses_dir_sampling(o->direct)) break;
 
-        /* choose the next vertex q in a direction with pdf2; beta *= f cos / pdf2 */
+        /* choose the next vertex q in a direction with pdf2; then beta *= f G(p,q) / pdf2(q),
+         * which is f cos(theta_p) / pdf2(w): the cos(theta_q) / d^2 of G and of the area pdf cancel */
         wi = sample_dir(o, &v, rng, &pdf2);
         if (!(pdf2 > 0.0f)) break;
         f = brdf_eval(v.mat, v.wo_local, wi);
-        cos_q = wi.z;
-        beta = v3_mul(beta, v3_scale(f, cos_q / pdf2));
+        cos_p = wi.z;
+        beta = v3_mul(beta, v3_scale(f, cos_p / pdf2));
         if (v3_is_zero(beta)) break;                                    /* no light can follow */
         r.o = offset_ray_origin(v.p, v.n);
         r.d = frame_to_world(&v.f, wi);

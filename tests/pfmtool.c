@@ -2,7 +2,12 @@
  *   pfmtool const W H R G B OUT.pfm     a constant image
  *   pfmtool scale IN.pfm F OUT.pfm      every value times F
  *   pfmtool sum OUT.pfm IN.pfm...       the pixelwise sum
+ *   pfmtool rmse A.pfm B.pfm [B_VAR.pfm]  how far A is from B, over all pixel-channels, on one line:
+ *       rmse R relrmse R/mean(B) relmse mean((A-B)^2 / (B^2 + 0.01)) mean_a M mean_b M
+ *       and, given B's variance of the pixel mean (pathlab --variance), var_b mean(B_VAR) and
+ *       rmse_ref sqrt(max(0, rmse^2 - var_b)): the RMSE against B's expectation, B's own noise removed
  * Exit 0 on success, 2 on bad input. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -47,11 +52,42 @@ static int sum(int n, char **a)
     return rc;
 }
 
+static int rmse(int n, char **a)
+{
+    image im[3];
+    int k, i, m;
+    double d, se = 0.0, rel = 0.0, sa = 0.0, sb = 0.0, sv = 0.0, mse;
+    for (k = 0; k < n; k++) {
+        if (img_read_pfm(&im[k], a[k])) { while (k--) img_free(&im[k]); return 2; }
+        if (k > 0 && (im[k].w != im[0].w || im[k].h != im[0].h)) {
+            fprintf(stderr, "pfmtool: %s: size differs\n", a[k]);
+            while (k >= 0) img_free(&im[k--]);
+            return 2;
+        }
+    }
+    m = 3 * im[0].w * im[0].h;
+    for (i = 0; i < m; i++) {
+        d = (double)im[0].px[i] - im[1].px[i];
+        se += d * d;
+        rel += d * d / ((double)im[1].px[i] * im[1].px[i] + 0.01);
+        sa += im[0].px[i];
+        sb += im[1].px[i];
+        if (n == 3) sv += im[2].px[i];
+    }
+    mse = se / m;
+    printf("rmse %.6g relrmse %.6g relmse %.6g mean_a %.6g mean_b %.6g", sqrt(mse), sqrt(mse) / (sb / m), rel / m, sa / m, sb / m);
+    if (n == 3) printf(" var_b %.6g rmse_ref %.6g", sv / m, sqrt(mse > sv / m ? mse - sv / m : 0.0));
+    printf("\n");
+    for (k = 0; k < n; k++) img_free(&im[k]);
+    return isfinite(mse) ? 0 : 2;
+}
+
 int main(int argc, char **argv)
 {
     if (argc == 8 && !strcmp(argv[1], "const")) return constant(argv + 2);
     if (argc == 5 && !strcmp(argv[1], "scale")) return scale(argv + 2);
     if (argc >= 4 && !strcmp(argv[1], "sum")) return sum(argc - 2, argv + 2);
-    fprintf(stderr, "usage: pfmtool const W H R G B OUT | scale IN F OUT | sum OUT IN...\n");
+    if ((argc == 4 || argc == 5) && !strcmp(argv[1], "rmse")) return rmse(argc - 2, argv + 2);
+    fprintf(stderr, "usage: pfmtool const W H R G B OUT | scale IN F OUT | sum OUT IN... | rmse A B [B_VAR]\n");
     return 2;
 }

@@ -33,7 +33,7 @@ static const char *USAGE =
     "  --dir uniform|cosine|brdf        how a direction is chosen at a surface (default brdf)\n"
     "  --direct light|brdf|mis-balance|mis-power   the estimator of direct light (default mis-power)\n"
     "  --rr D|off           Russian roulette after D bounces (default 3)\n"
-    "  --variance FILE.pfm  also write the variance of each pixel's mean\n";
+    "  --variance FILE.pfm  also write the variance of each pixel's mean (with --split, one per bounce too)\n";
 
 static const char *const LIGHT_NAMES[] = {"area", "triangle", "power", "solid-angle", NULL};
 static const char *const DIR_NAMES[] = {"uniform", "cosine", "brdf", NULL};
@@ -180,6 +180,10 @@ static int write_outputs(const render_args *a, const render_result *r)
         err = img_write(&r->mean[k], path, a->exposure);
     }
     if (a->variance && !err) err = img_write(&r->var[0], a->variance, 0.0f);
+    for (k = 1; k < r->nlayers && a->variance && !err; k++) {
+        bounce_path(path, sizeof path, a->variance, a->ro.io.bmin + k - 1);
+        err = img_write(&r->var[k], path, 0.0f);
+    }
     return err;
 }
 

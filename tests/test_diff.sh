@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# pathlab diff: metrics with exact answers on constant images, a heatmap, and errors.
+. "$(dirname "$0")/lib.sh"
+$PFMTOOL const 8 4 1.5 1.5 1.5 "$TMP/a.pfm"
+$PFMTOOL const 8 4 1 1 1 "$TMP/b.pfm"
+$PFMTOOL const 4 4 1 1 1 "$TMP/small.pfm"
+out=$($PATHLAB diff "$TMP/a.pfm" "$TMP/b.pfm" --heatmap "$TMP/h.ppm")
+metric() { echo "$out" | awk -v k="$1" '$1 == k { print $2 }'; }
+near() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { exit !(a - b <= t && b - a <= t) }'; }
+# a = 1.5, ref = 1: d = 0.5 everywhere; relMSE = 0.25 / (1 + 0.01); PSNR = 10 log10(1 / 0.25)
+
+    else fail "diff: $1 is '$(metric "$1")', expected $2"; fi
+done
+if echo "$out" | grep -q '^mean *+0.5 +- 0 '; then pass "diff: mean signed difference +0.5, standard error 0"; else fail "diff: mean line: $(echo "$out" | grep mean)"; fi
+if [ "$(head -c 2 "$TMP/h.ppm")" = "P6" ]; then pass "diff: heatmap written"; else fail "diff: no heatmap"; fi
+expect_status "diff: sizes differ, status 2" 2 $PATHLAB diff "$TMP/a.pfm" "$TMP/small.pfm"
+expect_err "diff: sizes named" "8x4.*4x4"
+expect_status "diff: missing file, status 2" 2 $PATHLAB diff "$TMP/a.pfm" "$TMP/none.pfm"
+expect_err "diff: missing file named" "none.pfm"
+expect_status "diff: one image only, status 2" 2 $PATHLAB diff "$TMP/a.pfm"
+exit 0

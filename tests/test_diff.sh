@@ -8,8 +8,9 @@ out=$($PATHLAB diff "$TMP/a.pfm" "$TMP/b.pfm" --heatmap "$TMP/h.ppm")
 metric() { echo "$out" | awk -v k="$1" '$1 == k { print $2 }'; }
 near() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { exit !(a - b <= t && b - a <= t) }'; }
 # a = 1.5, ref = 1: d = 0.5 everywhere; relMSE = 0.25 / (1 + 0.01); PSNR = 10 log10(1 / 0.25)
-
-    else fail "diff: $1 is '$(metric "$1")', expected $2"; fi
+for kvt in "RMSE 0.5 1e-6" "MAE 0.5 1e-6" "max 0.5 1e-6" "relMSE 0.247525 1e-6" "PSNR 6.0206 0.005"; do
+    set -- $kvt
+    if near "$(metric "$1")" "$2" "$3"; then pass "diff: $1 = $2"; else fail "diff: $1 is '$(metric "$1")', expected $2"; fi
 done
 if echo "$out" | grep -q '^mean *+0.5 +- 0 '; then pass "diff: mean signed difference +0.5, standard error 0"; else fail "diff: mean line: $(echo "$out" | grep mean)"; fi
 if [ "$(head -c 2 "$TMP/h.ppm")" = "P6" ]; then pass "diff: heatmap written"; else fail "diff: no heatmap"; fi

@@ -50,17 +50,23 @@ TOOLS = $(BUILD)/tests/zcheck $(BUILD)/tests/pfmtool
 test: $(PROG) $(TEST_BIN) $(TOOLS) test-deps
 	BUILD=$(BUILD) PATHLAB=./$(PROG) PATHLAB_FAST=$(SAN) tests/run.sh
 
+# The numerical stress suite (tests/stress/run.sh): scaled and moved scenes, slivers, z-fighting,
+# sharp lobes, tiny and grazing lights, rays along edges, acne; about 2 minutes on 2 cores.
+stress: $(PROG) $(TOOLS)
+	BUILD=$(BUILD) PATHLAB=./$(PROG) tests/stress/run.sh
+
 # Reference images and their manifest (slow; the result is committed).
 refs: $(PROG)
 	ref/make_refs.sh
 
 # Ray speed against Embree 3 on the Stanford meshes (needs ../shared and Debian's libembree-dev).
 BENCH_MESHES ?= ../shared/data/meshes/bunny.obj ../shared/data/meshes/dragon.obj
-bench: $(PROG)
+bench: $(PROG) $(BUILD)/tests/pfmtool
 	@for m in $(BENCH_MESHES); do for t in 1 2; do \
 	  echo "== $$m, $$t thread(s)"; ../shared/tools/embree-rays/compare.sh $$m $$t 3; done; done
+	BUILD=$(BUILD) PATHLAB=./$(PROG) bench/direct_modes.sh
 
 clean:
 	rm -rf build build-san pathlab
 
-.PHONY: all run test test-deps refs bench clean
+.PHONY: all run test test-deps stress refs bench clean

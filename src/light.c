@@ -91,52 +91,56 @@ float light_choice_prob(const light_set *ls, light_strategy st, int i)
     return (float)(cdf[i] - (i > 0 ? cdf[i - 1] : 0.0));
 }
 
+/* Spherical trigonometry runs in double: in float, cos(arc AC') rounds to 1 for the thin
+ * sub-triangles of a small spherical triangle, which bent the density by several percent below
+ * Omega ~ 1e-2 sr (caught by `pathlab check-sampling`, case "Omega = 4e-4 sr"). */
+typedef struct { double x, y, z; } dvec3;
+static dvec3 d3(double x, double y, double z) { dvec3 r; r.x = x; r.y = y; r.z = z; return r; }
+static double d3_dot(dvec3 a, dvec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static dvec3 d3_lin(dvec3 a, double s, dvec3 b, double r) { return d3(s * a.x + r * b.x, s * a.y + r * b.y, s * a.z + r * b.z); }
+static dvec3 d3_normalize(dvec3 a) { return d3_lin(a, 1.0 / sqrt(d3_dot(a, a)), a, 0.0); }
+static dvec3 d3_cross(dvec3 a, dvec3 b) { return d3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x); }
+/* v minus its component along the unit vector u, normalised */
+static dvec3 orthogonal_part(dvec3 v, dvec3 u) { return d3_normalize(d3_lin(v, 1.0, u, -d3_dot(v, u))); }
+
 /* The spherical triangle an emitter subtends from p: unit directions A, B, C to its corners, its
  * solid angle Omega (Van Oosterom and Strackee 1983: tan(Omega/2) = |A.(B x C)| / (1 + A.B + B.C +
  * C.A)) and its angle alpha at A, between the great arcs AB and AC. */
-typedef struct { vec3 A, B, C; float omega, alpha; } spherical_triangle;
+typedef struct { dvec3 A, B, C; double omega, alpha; } spherical_triangle;
 
 static spherical_triangle spherical_triangle_from(const emitter *e, vec3 p)
 {
     spherical_triangle t;
-    vec3 a = v3_sub(e->a, p), tb, tc;
-    t.A = v3_normalize(a);
-    t.B = v3_normalize(v3_add(a, e->e1));
-    t.C = v3_normalize(v3_add(a, e->e2));
-    t.omega = 2.0f * atan2f(fabsf(v3_dot(t.A, v3_cross(t.B, t.C))),
-                            1.0f + v3_dot(t.A, t.B) + v3_dot(t.B, t.C) + v3_dot(t.C, t.A));
-    tb = v3_normalize(v3_madd(t.B, t.A, -v3_dot(t.A, t.B)));   /* tangents of the arcs at A */
-    tc = v3_normalize(v3_madd(t.C, t.A, -v3_dot(t.A, t.C)));
-    t.alpha = acosf(fminf(1.0f, fmaxf(-1.0f, v3_dot(tb, tc))));
+    dvec3 a = d3((double)e->a.x - p.x, (double)e->a.y - p.y, (double)e->a.z - p.z);
+    t.A = d3_normalize(a);
+    t.B = d3_normalize(d3(a.x + e->e1.x, a.y + e->e1.y, a.z + e->e1.z));
+    t.C = d3_normalize(d3(a.x + e->e2.x, a.y + e->e2.y, a.z + e->e2.z));
+    t.omega = 2.0 * atan2(fabs(d3_dot(t.A, d3_cross(t.B, t.C))),
+                          1.0 + d3_dot(t.A, t.B) + d3_dot(t.B, t.C) + d3_dot(t.C, t.A));
+    t.alpha = acos(fmin(1.0, fmax(-1.0, d3_dot(orthogonal_part(t.B, t.A), orthogonal_part(t.C, t.A)))));
     return t;
 }
 
-/* Float Arvo sampling is accurate only for spherical triangles neither tiny nor close to a
- * hemisphere; outside these bounds a point uniform in area is used instead (and its pdf). */
-#define SOLID_ANGLE_MIN 3e-4f
-#define SOLID_ANGLE_MAX 6.0f
+/* Arvo sampling only where its trigonometry stays accurate (light.h); elsewhere, by area. */
 static int solid_angle_usable(const spherical_triangle *t)
 {
-    return t->omega > SOLID_ANGLE_MIN && t->omega < SOLID_ANGLE_MAX && t->alpha > 0.0f;
+    return t->omega > LIGHT_SOLID_ANGLE_MIN && t->omega < LIGHT_SOLID_ANGLE_MAX && t->alpha > 0.0;
 }
-
-/* v minus its component along the unit vector u, normalised */
-static vec3 orthogonal_part(vec3 v, vec3 u) { return v3_normalize(v3_madd(v, u, -v3_dot(v, u))); }
 
 /* Arvo 1995: a direction uniform over the spherical triangle. u1 picks the sub-triangle A B C'
  * of area u1 Omega (C' on the arc AC), u2 a point on the arc from B to C' with the right density. */
 static vec3 sample_spherical_triangle(const spherical_triangle *t, float u1, float u2)
 {
-    float sub = u1 * t->omega, s = sinf(sub - t->alpha), c = cosf(sub - t->alpha);
-    float cos_alpha = cosf(t->alpha), sin_alpha = sinf(t->alpha);
-    float u = c - cos_alpha, v = s + sin_alpha * v3_dot(t->A, t->B);
-    float q = ((v * c - u * s) * cos_alpha - v) / ((v * s + u * c) * sin_alpha);   /* cos of arc AC' */
-    vec3 C1;
-    float z;
-    q = fminf(1.0f, fmaxf(-1.0f, q));
-    C1 = v3_madd(v3_scale(t->A, q), orthogonal_part(t->C, t->A), sqrtf(1.0f - q * q));
-    z = 1.0f - u2 * (1.0f - v3_dot(C1, t->B));                                      /* cos of arc B P */
-    return v3_madd(v3_scale(t->B, z), orthogonal_part(C1, t->B), sqrtf(fmaxf(0.0f, 1.0f - z * z)));
+    double sub = u1 * t->omega, s = sin(sub - t->alpha), c = cos(sub - t->alpha);
+    double cos_alpha = cos(t->alpha), sin_alpha = sin(t->alpha);
+    double u = c - cos_alpha, v = s + sin_alpha * d3_dot(t->A, t->B), z;
+    double q = ((v * c - u * s) * cos_alpha - v) / ((v * s + u * c) * sin_alpha);   /* cos of arc AC' */
+    dvec3 C1, w;
+    q = fmin(1.0, fmax(-1.0, q));
+    C1 = d3_lin(t->A, q, orthogonal_part(t->C, t->A), sqrt(1.0 - q * q));
+    z = 1.0 - u2 * (1.0 - d3_dot(C1, t->B));                                         /* cos of arc B P */
+    w = d3_lin(t->B, z, orthogonal_part(C1, t->B), sqrt(fmax(0.0, 1.0 - z * z)));
+    return v3((float)w.x, (float)w.y, (float)w.z);
 }
 
 float light_pdf_area(const light_set *ls, light_strategy st, int i, vec3 p, vec3 s)
@@ -149,7 +153,7 @@ float light_pdf_area(const light_set *ls, light_strategy st, int i, vec3 p, vec3
         if (solid_angle_usable(&t)) {
             vec3 d = v3_sub(s, p);
             float dist2 = v3_dot(d, d), cos_s = fabsf(v3_dot(e->n, d)) / sqrtf(dist2);
-            return light_choice_prob(ls, st, i) / t.omega * cos_s / dist2;   /* 1/Omega per steradian */
+            return light_choice_prob(ls, st, i) / (float)t.omega * cos_s / dist2;   /* 1/Omega per steradian */
         }
     }
     return light_choice_prob(ls, st, i) / e->area;

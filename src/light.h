@@ -10,6 +10,11 @@
 #define PATHLAB_LIGHT_H
 #include "mesh.h"
 
+/* solid-angle uses Arvo's map only for spherical triangles of Omega in (MIN, MAX) steradians, where
+ * its trigonometry is accurate; outside, that triangle is sampled uniformly by area. */
+#define LIGHT_SOLID_ANGLE_MIN 3e-4
+#define LIGHT_SOLID_ANGLE_MAX 6.0
+
 typedef enum { LIGHT_AREA, LIGHT_TRIANGLE, LIGHT_POWER, LIGHT_SOLID_ANGLE, LIGHT_NSTRATEGIES } light_strategy;
 
 typedef struct { vec3 a, e1, e2, n, Le; float area; int tri; } emitter;   /* corners a, a+e1, a+e2 */

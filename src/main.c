@@ -4,7 +4,9 @@
 #include <string.h>
 #include <unistd.h>
 #include "bench_rays.h"
+#include "check_sampling.h"
 #include "cli.h"
+#include "diff.h"
 #include "render.h"
 
 static const char *USAGE =
@@ -13,6 +15,8 @@ static const char *USAGE =
     "usage:\n"
     "  pathlab render SCENE.obj [flags] -o FILE.pfm|FILE.ppm\n"
     "  pathlab bench-rays MESH.obj [-r RES] [-t THREADS]\n"
+    "  pathlab check-sampling [--samples N] [--seed S] [--threads T] [--quiet]\n"
+    "  pathlab diff A.pfm REF.pfm [--heatmap OUT.ppm] [--scale S]\n"
     "  pathlab help\n"
     "\n"
     "render flags:\n"
@@ -215,6 +219,8 @@ int main(int argc, char **argv)
     if (argc < 2) { fputs(USAGE, stderr); return 2; }
     if (!strcmp(argv[1], "render")) return cmd_render(argc - 1, argv + 1);
     if (!strcmp(argv[1], "bench-rays")) return bench_rays_main(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "check-sampling")) return check_sampling_main(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "diff")) return diff_main(argc - 1, argv + 1);
     if (!strcmp(argv[1], "help") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) { fputs(USAGE, stdout); return 0; }
     fprintf(stderr, "pathlab: unknown command '%s'\n\n%s", argv[1], USAGE);
     return 2;

@@ -67,9 +67,9 @@ int diff_main(int argc, char **argv)
         if (!strcmp(argv[i], "--heatmap")) { if (!(heat = cli_value(argc, argv, &i))) return 2; }
         else if (!strcmp(argv[i], "--scale")) { const char *v = cli_value(argc, argv, &i); if (!v || cli_float("--scale", v, &scale)) return 2; }
         else if (n < 2 && argv[i][0] != '-') path[n++] = argv[i];
-        else { fprintf(stderr, "pathlab: diff: unexpected '%s'\nusage: pathlab diff A.pfm REF.pfm [--heatmap out.ppm] [--scale S]\n", argv[i]); return 2; }
+        else { fprintf(stderr, "pathlab: diff: unexpected '%s'\nusage: pathlab diff A.pfm REF.pfm [--heatmap OUT.ppm|OUT.png] [--scale S]\n", argv[i]); return 2; }
     }
-    if (n != 2) { fprintf(stderr, "usage: pathlab diff A.pfm REF.pfm [--heatmap out.ppm] [--scale S]\n"); return 2; }
+    if (n != 2) { fprintf(stderr, "usage: pathlab diff A.pfm REF.pfm [--heatmap OUT.ppm|OUT.png] [--scale S]\n"); return 2; }
     if (img_read_pfm(&im[0], path[0])) return 2;
     if (img_read_pfm(&im[1], path[1])) { img_free(&im[0]); return 2; }
     if (diff_compute(&s, &im[0], &im[1])) {

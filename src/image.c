@@ -1,4 +1,4 @@
-/* image.c — linear RGB float images and their files (PFM, PPM).
+/* image.c — linear RGB float images and their files (PFM, PPM, PNG).
  *
  * PFM ("portable float map"): a text header "PF\n<w> <h>\n<scale>\n" (or "Pf" for one channel),
  * then w*h pixels of IEEE 754 binary32 floats, rows from the BOTTOM of the image to the top.
@@ -8,6 +8,7 @@
  * files are the same on any host; we only assume that float is binary32 (true wherever pathlab runs).
  *
  * PPM: "P6\n<w> <h>\n255\n" then 8-bit RGB, rows top to bottom, sRGB-encoded.
+ * PNG: the same bytes as the PPM, in an uncompressed PNG file (png.c).
  *
  * Every write goes to "<path>.tmp.XXXXXX" in the same folder and is renamed over <path> only
  * after fflush and fclose succeeded: a crash or a full disk never leaves a half-written image, and
@@ -20,6 +21,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include "png.h"
 
 /* Limits that keep every size computation far from overflow and refuse absurd headers before we
  * try to allocate: 2^20 pixels per side, 2^28 pixels in all (3 GiB of floats). */
@@ -344,6 +346,34 @@ int img_write_ppm(const image *im, const char *path, float exposure)
     return write_rows(im, path, "P6\n%d %d\n255\n", 3, 0, encode_ppm_row, exp2f(exposure));
 }
 
+/* ---- PNG (the format itself is in png.c) ---- */
+
+int img_write_png(const image *im, const char *path, float exposure)
+{
+    unsigned char *rgb;
+    char *tmp;
+    FILE *f;
+    float gain = exp2f(exposure);
+    int y, ok;
+    if (!image_ok(im, path)) return 1;
+    rgb = malloc((size_t)im->w * im->h * 3);
+    if (!rgb) {
+        fprintf(stderr, "%s: out of memory\n", path);
+        return 1;
+    }
+    for (y = 0; y < im->h; y++)
+        encode_ppm_row(im->px + (size_t)y * im->w * 3, im->w, rgb + (size_t)y * im->w * 3, gain);
+    f = atomic_open(path, &tmp);
+    if (!f) {
+        free(rgb);
+        return 1;
+    }
+    ok = png_write_rgb8(f, rgb, im->w, im->h) == 0;
+    if (!ok) fprintf(stderr, "%s: cannot write: %s\n", path, strerror(errno));
+    free(rgb);
+    return atomic_close(f, tmp, path, ok);
+}
+
 /* ---- by extension ---- */
 
 /* 1 when the file name (after the last '/') ends in ext, ignoring ASCII case. */
@@ -366,6 +396,7 @@ int img_write(const image *im, const char *path, float exposure)
 {
     if (has_extension(path, ".pfm")) return img_write_pfm(im, path);
     if (has_extension(path, ".ppm")) return img_write_ppm(im, path, exposure);
-    fprintf(stderr, "%s: unknown image format (use .pfm or .ppm)\n", path);
+    if (has_extension(path, ".png")) return img_write_png(im, path, exposure);
+    fprintf(stderr, "%s: unknown image format (use .pfm, .ppm or .png)\n", path);
     return 1;
 }

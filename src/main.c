@@ -7,25 +7,28 @@
 #include "check_sampling.h"
 #include "cli.h"
 #include "diff.h"
+#include "grade.h"
 #include "render.h"
 
 static const char *USAGE =
     "pathlab — a teaching path tracer (see README.md)\n"
     "\n"
     "usage:\n"
-    "  pathlab render SCENE.obj [flags] -o FILE.pfm|FILE.ppm\n"
+    "  pathlab render SCENE.obj [flags] -o FILE.pfm|FILE.ppm|FILE.png\n"
     "  pathlab bench-rays MESH.obj [-r RES] [-t THREADS]\n"
     "  pathlab check-sampling [--samples N] [--seed S] [--threads T] [--quiet]\n"
-    "  pathlab diff A.pfm REF.pfm [--heatmap OUT.ppm] [--scale S]\n"
+    "  pathlab diff A.pfm REF.pfm [--heatmap OUT.ppm|OUT.png] [--scale S]\n"
+    "  pathlab grade IMAGE.pfm --ref REF.pfm [--alpha A] [--block B] [--heatmap OUT.ppm|OUT.png]\n"
+    "                [--spp N] [--var REF_VAR.pfm --ref-spp M]   is IMAGE - REF noise or bias? (below)\n"
     "  pathlab help\n"
     "\n"
     "render flags:\n"
-    "  -o FILE              output image; .pfm (linear float) or .ppm (8-bit sRGB)\n"
+    "  -o FILE              output image; .pfm (linear float), .ppm or .png (8-bit sRGB)\n"
     "  --spp N              samples per pixel (default 16)\n"
     "  --seed S             random seed (default 1); same seed, same image, any thread count\n"
     "  --threads N          worker threads (default: every core)\n"
     "  --quiet              no progress bar and no stats line\n"
-    "  --exposure STOPS     PPM only: multiply by 2^STOPS before the sRGB curve (default 0)\n"
+    "  --exposure STOPS     PPM and PNG: multiply by 2^STOPS before the sRGB curve (default 0)\n"
     "camera (defaults from SCENE.view, else framing the whole scene):\n"
     "  --eye X,Y,Z  --target X,Y,Z  --up X,Y,Z  --fov DEGREES (vertical)  --size WxH\n"
     "  --pixel-center       shoot through pixel centres instead of jittering in the pixel\n"
@@ -37,7 +40,14 @@ static const char *USAGE =
     "  --dir uniform|cosine|brdf        how a direction is chosen at a surface (default brdf)\n"
     "  --direct light|brdf|mis-balance|mis-power   the estimator of direct light (default mis-power)\n"
     "  --rr D|off           Russian roulette after D bounces (default 3)\n"
-    "  --variance FILE.pfm  also write the variance of each pixel's mean (with --split, one per bounce too)\n";
+    "  --variance FILE.pfm  also write the variance of each pixel's mean (with --split, one per bounce too)\n"
+    "grade (exit 0 pass, 1 fail, 2 bad input), on d = IMAGE - REF per pixel-channel, at family-wise level alpha\n"
+    "(default 0.01; alpha/2 to each family, Sidak within it); the noise is estimated from the scatter of d:\n"
+    "  whole image  z of the mean of d, per channel: catches a bias spread everywhere (all 2 percent too bright)\n"
+    "  blocks       Student t of the mean of d over each B x B block (default max(8, min(w,h)/16)), per channel:\n"
+    "               averaging shrinks noise, not bias; prints where the significant blocks are, brighter or darker\n"
+    "  --var        with --spp and --ref-spp, a per-pixel Z-test assuming the reference's estimator (information only)\n"
+    "  --heatmap    the reference in grey, significantly brighter blocks red, darker blue\n";
 
 static const char *const LIGHT_NAMES[] = {"area", "triangle", "power", "solid-angle", NULL};
 static const char *const DIR_NAMES[] = {"uniform", "cosine", "brdf", NULL};
@@ -116,7 +126,8 @@ static const char *extension(const char *path)
 static int image_extension_ok(const char *path, int pfm_only)
 {
     const char *e = extension(path);
-    return !strcmp(e, ".pfm") || !strcmp(e, ".PFM") || (!pfm_only && (!strcmp(e, ".ppm") || !strcmp(e, ".PPM")));
+    return !strcmp(e, ".pfm") || !strcmp(e, ".PFM")
+           || (!pfm_only && (!strcmp(e, ".ppm") || !strcmp(e, ".PPM") || !strcmp(e, ".png") || !strcmp(e, ".PNG")));
 }
 
 static int parse_render_args(render_args *a, int argc, char **argv)
@@ -136,7 +147,7 @@ static int parse_render_args(render_args *a, int argc, char **argv)
         if (parse_flag(a, argc, argv, &i)) return 1;
     if (!a->scene) { fprintf(stderr, "pathlab: render needs a scene: pathlab render SCENE.obj -o FILE\n"); return 1; }
     if (!a->out) { fprintf(stderr, "pathlab: render needs an output: -o FILE.pfm or -o FILE.ppm\n"); return 1; }
-    if (!image_extension_ok(a->out, 0)) { fprintf(stderr, "pathlab: -o %s: unknown image format (use .pfm or .ppm)\n", a->out); return 1; }
+    if (!image_extension_ok(a->out, 0)) { fprintf(stderr, "pathlab: -o %s: unknown image format (use .pfm, .ppm or .png)\n", a->out); return 1; }
     if (a->variance && !image_extension_ok(a->variance, 1)) { fprintf(stderr, "pathlab: --variance %s: the variance is written as .pfm\n", a->variance); return 1; }
     if (a->ro.io.split && a->ro.io.bmax == BOUNCES_INF) {
         fprintf(stderr, "pathlab: --split needs a last bounce, e.g. --bounces 0:8\n");
@@ -221,6 +232,7 @@ int main(int argc, char **argv)
     if (!strcmp(argv[1], "bench-rays")) return bench_rays_main(argc - 1, argv + 1);
     if (!strcmp(argv[1], "check-sampling")) return check_sampling_main(argc - 1, argv + 1);
     if (!strcmp(argv[1], "diff")) return diff_main(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "grade")) return grade_main(argc - 1, argv + 1);
     if (!strcmp(argv[1], "help") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) { fputs(USAGE, stdout); return 0; }
     fprintf(stderr, "pathlab: unknown command '%s'\n\n%s", argv[1], USAGE);
     return 2;

@@ -20,7 +20,7 @@ for bad in "--spp abc" "--spp 0" "--spp 3.5" "--bounces 3:1" "--bounces x" "--li
 done
 expect_status "no -o" 2 $PATHLAB render scenes/cornell.obj
 expect_status "unknown output extension" 2 $PATHLAB render scenes/cornell.obj -o "$TMP/x.jpg"
-expect_err "unknown output extension explained" "use .pfm or .ppm"
+expect_err "unknown output extension explained" "use .pfm, .ppm or .png"
 expect_status "--split without a last bounce" 2 $PATHLAB render scenes/cornell.obj --split -o "$out"
 
 # a malformed OBJ: the message names file and line

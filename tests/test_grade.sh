@@ -1,0 +1,122 @@
+#!/usr/bin/env bash
+# pathlab grade: passes unbiased renders (4 and 64 spp, several seeds, another estimator), fails
+# biased ones (2% too bright, L2 missing, the cosine forgotten at the first bounce) and says
+# brighter or darker; exact images; bad input.
+#
+# False alarms: grade fails an unbiased image with probability at most alpha = 0.01 (the default,
+# used here). Measured on 64x64 Cornell boxes against one 1024-spp reference: 0 of 200 unbiased
+# renders failed at 4 spp, 1 of 100 at 64 spp; the whole-image z was N(0, 1)-like (sd 0.92-0.99).
+# The seeds are fixed, so this test is deterministic; but after a change to the renderer's random
+# streams, the 9 independent unbiased cases below (5 at 4 spp, 3 at 64 spp, 1 with another
+# estimator) all pass with probability >= 0.99^9 = 91% (97% at the measured rate), 5 with
+# PATHLAB_FAST (>= 95%). A failing unbiased case is then worth one more seed before a bug hunt.
+# Power: 2% too bright at 64 spp was found in 100 of 100 64x64 renders (z per channel 4.8 to 12.5,
+# limit 3.14); in 59 of 60 with PATHLAB_FAST (48x48, 512-spp reference; the seeds used here pass).
+. "$(dirname "$0")/lib.sh"
+if [ "${PATHLAB_FAST:-0}" != 0 ]; then
+    SIZE=48x48 REF_SPP=512 SEEDS4="1 2" SEEDS64="1 2"        # the sanitizer build is ~15x slower
+else
+    SIZE=64x64 REF_SPP=1024 SEEDS4="1 2 3 4 5" SEEDS64="1 2 3"
+fi
+SCENE="scenes/cornell.obj --quiet --size $SIZE --bounces 0:3"
+R="$PATHLAB render $SCENE"
+
+# grade_expect NAME WANT PATTERN IMAGE [FLAGS...]: grade IMAGE against the reference; wants exit
+# status WANT and, if PATTERN is not empty, an output line matching it (grep -E). Shows the verdict.
+grade_expect() {
+    local name=$1 want=$2 pattern=$3 rc out; shift 3
+    out=$($PATHLAB grade "$@" --ref "$TMP/ref.pfm" 2> "$TMP/err"); rc=$?
+    echo "$out" > "$TMP/grade.txt"
+    local verdict
+    verdict=$(echo "$out" | grep -E '^(PASS|FAIL):|^  (brighter|darker)' | sed 's/^ *//' | paste -sd ';' -)
+    if [ "$rc" -ne "$want" ]; then fail "$name: grade exit $rc, wanted $want: $verdict $(head -c 200 "$TMP/err")"
+    elif [ -n "$pattern" ] && ! echo "$out" | grep -qE -- "$pattern"; then fail "$name: no line matches '$pattern': $verdict"
+    else pass "$name [$verdict]"; fi
+}
+
+start=$(date +%s)
+$R --spp "$REF_SPP" --seed 1000 -o "$TMP/ref.pfm" --variance "$TMP/ref_var.pfm"
+
+# 1. unbiased: the reference's estimator at 4 and 64 spp, each with several seeds
+for s in $SEEDS4; do
+    $R --spp 4 --seed "$s" -o "$TMP/u4_$s.pfm"
+    grade_expect "unbiased, 4 spp, seed $s: pass" 0 "" "$TMP/u4_$s.pfm" --spp 4
+done
+for s in $SEEDS64; do
+    $R --spp 64 --seed "$s" -o "$TMP/u64_$s.pfm"
+    grade_expect "unbiased, 64 spp, seed $s: pass" 0 "" "$TMP/u64_$s.pfm" --spp 64
+done
+# ... another estimator (BRDF sampling only for direct light: other noise, same expectation)
+$R --spp 64 --seed 7 --direct brdf -o "$TMP/brdf.pfm"
+grade_expect "unbiased, another estimator (--direct brdf), 64 spp: pass" 0 "" "$TMP/brdf.pfm" --spp 64
+# ... with the per-pixel Z-test for information: printed, not part of the verdict
+grade_expect "unbiased, 64 spp, with --var: pass, per-pixel test printed" 0 "^pixels \(information only" \
+    "$TMP/u64_1.pfm" --spp 64 --var "$TMP/ref_var.pfm" --ref-spp "$REF_SPP"
+
+# 2. 2% too bright: every 64-spp image above, scaled by 1.02
+for s in $SEEDS64; do
+    $PFMTOOL scale "$TMP/u64_$s.pfm" 1.02 "$TMP/b64_$s.pfm"
+    grade_expect "2% too bright, 64 spp, seed $s: fail, brighter" 1 "^  brighter over the whole image: \+[12]\.[0-9]+%" "$TMP/b64_$s.pfm" --spp 64
+done
+
+# 3. L2 missing: L0 + L1 + L3 of a split render, against L0..L3
+for spp in 4 64; do
+    $R --spp $spp --seed 11 --split -o "$TMP/split$spp.pfm"
+    $PFMTOOL sum "$TMP/noL2_$spp.pfm" "$TMP/split${spp}_L0.pfm" "$TMP/split${spp}_L1.pfm" "$TMP/split${spp}_L3.pfm"
+    grade_expect "L2 missing, $spp spp: fail, darker" 1 "^  darker over the whole image" "$TMP/noL2_$spp.pfm" --spp $spp \
+        --heatmap "$TMP/noL2_$spp.png"
+done
+# the heatmap shows the darker blocks in blue, and no red
+colours=$(python3 -c '
+import struct, sys, zlib
+png = open(sys.argv[1], "rb").read(); pos = 8; idat = b""
+while pos < len(png):
+    n, kind = struct.unpack(">I4s", png[pos:pos + 8])
+    if kind == b"IDAT": idat += png[pos + 8:pos + 8 + n]
+    pos += 12 + n
+w, h = struct.unpack(">II", png[16:24]); raw = zlib.decompress(idat); s = 3 * w + 1
+px = [raw[y * s + 1 + 3 * x:y * s + 4 + 3 * x] for y in range(h) for x in range(w)]
+print(sum(b[2] > 150 and b[0] < 100 for b in px), sum(b[0] > 150 and b[2] < 100 for b in px))' "$TMP/noL2_64.png" 2>&1)
+set -- $colours
+if [ "${1:-0}" -gt 0 ] 2>/dev/null && [ "${2:-1}" -eq 0 ]; then pass "heatmap: $1 blue (darker) pixels, no red"
+else fail "heatmap of the missing-L2 image: blue and red pixel counts '$colours'"; fi
+
+# 4. the cosine forgotten at the first bounce: a copy of src/ with the bug, built with the same cc
+mkdir -p "$TMP/broken"
+cp src/*.c src/*.h "$TMP/broken/"
+sed -i 's|beta = v3_mul(beta, v3_scale(f, cos_p / pdf2));|beta = v3_mul(beta, v3_scale(f, (k == 1 ? 1.0f : cos_p) / pdf2));|' "$TMP/broken/integrator.c"
+if cmp -s src/integrator.c "$TMP/broken/integrator.c"; then
+    fail "cosine forgotten: the throughput line 'beta = v3_mul(beta, v3_scale(f, cos_p / pdf2));' is no longer in src/integrator.c; update this test"
+elif ! ${CC:-cc} -std=c99 -D_POSIX_C_SOURCE=200809L -O1 -o "$TMP/broken/pathlab" "$TMP"/broken/*.c -lm -lpthread 2> "$TMP/err"; then
+    fail "cosine forgotten: the broken copy does not build: $(head -c 300 "$TMP/err")"
+else
+    for spp in 4 64; do
+        "$TMP/broken/pathlab" render $SCENE --spp $spp --seed 12 -o "$TMP/nocos_$spp.pfm"
+        grade_expect "cosine forgotten at the first bounce, $spp spp: fail, brighter" 1 "^  brighter over the whole image" \
+            "$TMP/nocos_$spp.pfm" --spp $spp
+    done
+fi
+
+# 5. exact images: no noise, so any difference beyond float rounding is bias
+$PFMTOOL const 32 32 0.5 0.25 1 "$TMP/c.pfm"
+$PFMTOOL scale "$TMP/c.pfm" 1.0000001 "$TMP/c_ulp.pfm"
+$PFMTOOL scale "$TMP/c.pfm" 1.001 "$TMP/c_bright.pfm"
+cp "$TMP/c.pfm" "$TMP/ref.pfm"
+grade_expect "an exact image against itself: pass" 0 "" "$TMP/c.pfm"
+grade_expect "an exact image 1 ulp off: pass (rounding)" 0 "" "$TMP/c_ulp.pfm"
+grade_expect "an exact image 0.1% too bright: fail, every block brighter" 1 "brighter in 16 of 16 blocks" "$TMP/c_bright.pfm"
+
+# 6. bad input: status 2 and the files named
+$PFMTOOL const 16 16 1 1 1 "$TMP/small.pfm"
+expect_status "missing image: status 2" 2 $PATHLAB grade "$TMP/none.pfm" --ref "$TMP/c.pfm"
+expect_err "missing image named" "none.pfm"
+expect_status "missing reference: status 2" 2 $PATHLAB grade "$TMP/c.pfm" --ref "$TMP/noref.pfm"
+expect_err "missing reference named" "noref.pfm"
+expect_status "sizes differ: status 2" 2 $PATHLAB grade "$TMP/small.pfm" --ref "$TMP/c.pfm"
+expect_err "sizes differ: both files and sizes named" "small.pfm is 16x16.*c.pfm is 32x32"
+expect_status "no --ref: status 2" 2 $PATHLAB grade "$TMP/c.pfm"
+expect_status "--var without --spp and --ref-spp: status 2" 2 $PATHLAB grade "$TMP/c.pfm" --ref "$TMP/c.pfm" --var "$TMP/c.pfm"
+expect_err "--var without --spp: explained" "--var needs --spp"
+expect_status "--alpha 2: status 2" 2 $PATHLAB grade "$TMP/c.pfm" --ref "$TMP/c.pfm" --alpha 2
+echo "grade tests took $(( $(date +%s) - start )) s (size $SIZE, reference $REF_SPP spp)"
+exit 0

@@ -1,0 +1,147 @@
+/* test_grade_stats.c — the statistics of `pathlab grade` on synthetic images, where the truth is
+ * known: Student's t tails against tables; false alarms on many unbiased images with heavy-tailed
+ * (firefly) noise; the fitted relative bias and its standard error calibrated on images 2% too
+ * bright; a bias in one quadrant found there, with its sign. */
+#include <math.h>
+#include <stdlib.h>
+#include "check.h"
+#include "grade.h"
+#include "rng.h"
+
+/* The reference: a smooth picture from 0.05 to 1, exact (the truth). */
+static void make_ref(image *ref, int w, int h)
+{
+    int x, y, c;
+    img_alloc(ref, w, h);
+    for (y = 0; y < h; y++)
+        for (x = 0; x < w; x++)
+            for (c = 0; c < 3; c++)
+                ref->px[3 * (y * w + x) + c] = (float)(0.05 + 0.95 * (x + 2.0 * y + 5.0 * c) / (w + 2.0 * h + 10.0));
+}
+
+/* A Monte Carlo image of ref with spp samples per pixel, each sample ref / p with probability p
+ * ("fireflies": the skewed noise of a path tracer), times gain where the mask says so. */
+static void make_image(image *im, const image *ref, int spp, double p, double gain, int quadrant_only, pcg32 *rng)
+{
+    int x, y, c, k;
+    img_alloc(im, ref->w, ref->h);
+    for (y = 0; y < ref->h; y++)
+        for (x = 0; x < ref->w; x++) {
+            int biased = !quadrant_only || (x < ref->w / 2 && y < ref->h / 2);
+            for (k = 0; k < spp; k++) {
+                int hit = pcg32_double(rng) < p;   /* one path for the three channels */
+                for (c = 0; c < 3; c++) {
+                    size_t i = 3 * ((size_t)y * ref->w + x) + c;
+                    im->px[i] += hit ? (float)(ref->px[i] / p / spp * (biased ? gain : 1.0)) : 0.0f;
+                }
+            }
+        }
+}
+
+static void t_table(void)
+{
+    /* two-sided 5% and 1% points of Student's t, from tables */
+    static const struct { int df; double t, p; } tab[] = {
+        {1, 12.706, 0.05}, {2, 4.303, 0.05}, {3, 3.182, 0.05}, {10, 2.228, 0.05},
+        {30, 2.750, 0.01}, {63, 2.656, 0.01}, {1000, 1.962, 0.05}, {1000000, 2.576, 0.01}};
+    size_t i;
+    for (i = 0; i < sizeof tab / sizeof tab[0]; i++) {
+        double p = student_t_tail(tab[i].t, tab[i].df);
+        check(fabs(p - tab[i].p) < 0.002 * tab[i].p / 0.01, "t_tail_table", "df %d, t %.3f: P(|T| > t) = %.5f, table %.2f",
+              tab[i].df, tab[i].t, p, tab[i].p);
+    }
+}
+
+/* Unbiased images with skewed noise: the fraction that fails must stay near or below alpha. */
+static void false_alarms(int spp, double p, int runs)
+{
+    grade_opts o = {0.01, 0, 0, 0};
+    image ref, im;
+    grade_report r;
+    pcg32 rng;
+    int k, fails = 0;
+    double zmax = 0.0;
+    make_ref(&ref, 64, 64);
+    pcg32_init(&rng, 42 + spp, 7);
+    for (k = 0; k < runs; k++) {
+        make_image(&im, &ref, spp, p, 1.0, 0, &rng);
+        grade_compute(&r, &im, &ref, NULL, &o);
+        fails += grade_failed(&r);
+        zmax = fmax(zmax, fmax(fabs(r.image_z[0]), fmax(fabs(r.image_z[1]), fabs(r.image_z[2]))));
+        grade_free(&r);
+        img_free(&im);
+    }
+    /* binomial(runs, 0.01): more than 3 + 3 sigma of the mean would be a broken test */
+    check(fails <= runs * 0.01 + 3.0 * sqrt(runs * 0.01) + 3, "false_alarms_heavy_tails",
+          "%d spp, a sample is 1/p = %.0f times the mean with probability p, else 0: %d of %d unbiased images fail "
+          "(alpha 0.01); largest whole-image |z| %.2f", spp, 1.0 / p, fails, runs, zmax);
+    img_free(&ref);
+}
+
+/* Images 2% too bright: always found, eps near 2%, and its standard error honest. */
+static void two_percent(int runs)
+{
+    grade_opts o = {0.01, 0, 0, 0};
+    image ref, im;
+    grade_report r;
+    pcg32 rng;
+    int k, found = 0;
+    double sum = 0.0, sum2 = 0.0, se = 0.0;
+    make_ref(&ref, 64, 64);
+    pcg32_init(&rng, 99, 3);
+    for (k = 0; k < runs; k++) {
+        make_image(&im, &ref, 64, 0.3, 1.02, 0, &rng);
+        grade_compute(&r, &im, &ref, NULL, &o);
+        found += r.image_fail && r.image_z[1] > 0;
+        sum += r.image_eps[1];
+        sum2 += r.image_eps[1] * r.image_eps[1];
+        se += r.image_eps_se[1];
+        grade_free(&r);
+        img_free(&im);
+    }
+    {
+        double mean = sum / runs, sd = sqrt(fmax(0.0, (sum2 - runs * mean * mean) / (runs - 1))), mse = se / runs;
+        check(found == runs, "two_percent_found", "%d of %d images 2%% too bright fail the whole-image test", found, runs);
+        check(fabs(mean - 0.02) < 4.0 * sd / sqrt(runs), "two_percent_eps_unbiased", "mean eps %.4f, expected 0.02 (sd %.4f)", mean, sd);
+        /* the spread of eps over the runs against the standard error grade states */
+        check(mse > 0.7 * sd && mse < 1.4 * sd, "two_percent_se_calibrated", "stated se %.5f, observed sd of eps %.5f", mse, sd);
+    }
+    img_free(&ref);
+}
+
+/* A bias in the top-left quadrant only: significant blocks there and nowhere else. */
+static void quadrant(double gain, int sign)
+{
+    grade_opts o = {0.01, 0, 0, 0};
+    image ref, im;
+    grade_report r;
+    pcg32 rng;
+    int b, inside = 0, outside = 0, wrong_sign = 0;
+    make_ref(&ref, 64, 64);
+    pcg32_init(&rng, 5, 5);
+    make_image(&im, &ref, 64, 0.5, gain, 1, &rng);
+    grade_compute(&r, &im, &ref, NULL, &o);
+    for (b = 0; b < r.nblocks; b++) {
+        const grade_block *k = &r.blocks[b];
+        if (!k->sign) continue;
+        if (k->x1 <= 32 && k->y1 <= 32) inside++; else outside++;
+        wrong_sign += k->sign != sign;
+    }
+    check(grade_failed(&r) && inside >= 8 && outside == 0 && wrong_sign == 0, sign > 0 ? "quadrant_brighter" : "quadrant_darker",
+          "gain %.2f in the top-left quadrant: %d of its 16 blocks significant, %d elsewhere, %d of the wrong sign",
+          gain, inside, outside, wrong_sign);
+    grade_free(&r);
+    img_free(&im);
+    img_free(&ref);
+}
+
+int main(void)
+{
+    t_table();
+    false_alarms(4, 0.05, 200);
+    false_alarms(64, 0.01, 100);
+    two_percent(60);
+    quadrant(1.2, 1);
+    quadrant(0.8, -1);
+    return check_summary();
+}

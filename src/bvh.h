@@ -25,8 +25,9 @@ int bvh_triangle_hit(vec3 a, vec3 b, vec3 c, const ray *r, hit *h);
 /* Node and leaf counts, for stats. */
 void bvh_stats(const bvh *b, int *nodes, int *leaves, int *depth);
 
-/* Offsets p along the geometric normal n by a few ulps scaled to |p| (Waechter and Binder,
- * Ray Tracing Gems ch. 6), so that a ray leaving p does not hit its own surface. n must point to
- * the side the ray leaves to. */
-vec3 offset_ray_origin(vec3 p, vec3 n);
+/* Offsets p (a point of a triangle) along its geometric normal n by a few ulps of `scale`, the
+ * triangle's largest |coordinate| (triangle_scale), so that a ray leaving p does not hit the
+ * triangle again. n must point to the side the ray leaves to. */
+vec3 offset_ray_origin(vec3 p, vec3 n, float scale);
+float triangle_scale(vec3 a, vec3 b, vec3 c);
 #endif

@@ -10,6 +10,7 @@
 /* A shading point: position, normal facing the incoming ray, local frame, material. */
 typedef struct {
     vec3 p, n, wo_local;
+    float scale;              /* triangle_scale of its triangle, for offset_ray_origin */
     frame f;
     const material *mat;
 } vertex;
@@ -19,6 +20,7 @@ static vertex make_vertex(const scene *s, const hit *h, vec3 dir)
     vertex v;
     vec3 wo = v3_scale(dir, -1.0f / v3_length(dir));
     v.p = scene_hit_point(s, h);
+    v.scale = scene_triangle_scale(s, h->tri);
     v.n = s->Ng[h->tri];
     if (v3_dot(v.n, wo) < 0.0f) v.n = v3_scale(v.n, -1.0f);   /* the BRDF is two-sided */
     v.f = frame_from_normal(v.n);
@@ -89,8 +91,8 @@ static vec3 direct_from_light(const scene *s, const integrator_opts *o, const ve
     f = brdf_eval(v->mat, v->wo_local, frame_to_local(&v->f, wi));
     if (v3_is_zero(f)) return v3(0, 0, 0);
     /* from just off p to just off s: no epsilon on t, the offsets keep both surfaces out */
-    shadow.o = offset_ray_origin(v->p, v->n);
-    shadow.d = v3_sub(offset_ray_origin(ls.p, ls.n), shadow.o);
+    shadow.o = offset_ray_origin(v->p, v->n, v->scale);
+    shadow.d = v3_sub(offset_ray_origin(ls.p, ls.n, scene_triangle_scale(s, s->lights.e[ls.emitter].tri)), shadow.o);
     shadow.tmax = 1.0f;
     st->shadow_rays++;
     if (bvh_occluded(s->accel, &shadow)) return v3(0, 0, 0);
@@ -154,7 +156,7 @@ void integrate(const scene *s, const integrator_opts *o, const ray *camera, pcg3
         cos_p = wi.z;
         beta = v3_mul(beta, v3_scale(f, cos_p / pdf2));
         if (v3_is_zero(beta)) break;                                    /* no light can follow */
-        r.o = offset_ray_origin(v.p, v.n);
+        r.o = offset_ray_origin(v.p, v.n, v.scale);
         r.d = frame_to_world(&v.f, wi);
         r.tmax = INFINITY;
         st->continuation_rays++;

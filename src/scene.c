@@ -68,3 +68,9 @@ vec3 scene_hit_point(const scene *s, const hit *h)
     vec3 a = s->m.P[t[0]], b = s->m.P[t[1]], c = s->m.P[t[2]];
     return v3_add(a, v3_add(v3_scale(v3_sub(b, a), h->u), v3_scale(v3_sub(c, a), h->v)));
 }
+
+float scene_triangle_scale(const scene *s, int tri)
+{
+    const int *t = s->m.tri + 3 * tri;
+    return triangle_scale(s->m.P[t[0]], s->m.P[t[1]], s->m.P[t[2]]);
+}

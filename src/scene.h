@@ -21,4 +21,6 @@ int scene_load(scene *s, const char *path, int threads, int quiet);
 void scene_free(scene *s);
 /* Hit point on triangle h->tri from its barycentrics. */
 vec3 scene_hit_point(const scene *s, const hit *h);
+/* The largest |coordinate| of triangle tri's corners: the scale of its rounding errors. */
+float scene_triangle_scale(const scene *s, int tri);
 #endif

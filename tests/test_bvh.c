@@ -429,7 +429,7 @@ static void test_offset(void)
         vec3 p = v3_add(a, v3_add(v3_scale(v3_sub(bb, a), u), v3_scale(v3_sub(c, a), v)));
         for (int side = -1; side <= 1; side += 2) {
             vec3 ns = v3_scale(n, (float)side);
-            ray r = {offset_ray_origin(p, ns), rnd_hemisphere(ns, 0.01f), INFINITY}, raw = r;
+            ray r = {offset_ray_origin(p, ns, triangle_scale(a, bb, c)), rnd_hemisphere(ns, 0.01f), INFINITY}, raw = r;
             hit h;
             raw.o = p;
             rays++;

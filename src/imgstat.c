@@ -58,7 +58,7 @@ int zreport_compute(zreport *r, const image *a, const image *va, const image *b,
                     double alpha, int block)
 {
     size_t i, n = (size_t)a->w * a->h;
-    double d[3] = {0, 0, 0}, v[3] = {0, 0, 0}, rs[3] = {0, 0, 0};
+    double d[3] = {0, 0, 0}, v[3] = {0, 0, 0}, rs[3] = {0, 0, 0}, mb[3] = {0, 0, 0};
     int ch;
     memset(r, 0, sizeof *r);
     if (a->w != b->w || a->h != b->h || va->w != a->w || va->h != a->h || vb->w != a->w || vb->h != a->h) return 1;
@@ -71,11 +71,14 @@ int zreport_compute(zreport *r, const image *a, const image *va, const image *b,
         d[i % 3] += di;
         v[i % 3] += vi;
         rs[i % 3] += ri;
+        mb[i % 3] += b->px[i];
     }
     r->image_zcrit = sidak_zcrit(alpha, 3);
     for (ch = 0; ch < 3; ch++) {
         r->image_z[ch] = zscore(d[ch], v[ch] + rs[ch] * rs[ch]);
         r->mean_diff[ch] = d[ch] / (double)n;
+        r->mean_sd[ch] = sqrt(v[ch] + rs[ch] * rs[ch]) / (double)n;
+        r->mean_b[ch] = mb[ch] / (double)n;
     }
     if (block > 0) block_test(r, a, va, b, vb, block);
     return 0;

@@ -18,6 +18,8 @@ typedef struct {
     double image_z[3];          /* z of the whole-image mean difference, per channel */
     double image_zcrit;
     double mean_diff[3];        /* mean of a - b per channel */
+    double mean_sd[3];          /* its standard deviation (noise and rounding), per channel */
+    double mean_b[3];           /* mean of b per channel (for relative figures) */
 } zreport;
 
 /* Standard normal quantile: x with P(Z < x) = p. */

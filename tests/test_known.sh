@@ -4,46 +4,67 @@
 #    L = Le (1 + a + a^2 + ...) = Le / (1 - a) = 2 everywhere;
 #  - sphere-furnace (pbrt-v4's integrator test): inside a sphere with Kd = 0.5 emitting Le = 0.5,
 #    L = 0.5 / (1 - 0.5) = 1 everywhere.
-# Each render (16x16 pixels, 1024 spp) is checked against the exact constant image (variance 0) by
-# tests/zcheck: per-block (8x8 pixels) and whole-image Z-tests, alpha = 0.01 with Sidak's
-# correction. No per-pixel test here: light sampling near the box's corners, where
-# cos cos / d^2 is unbounded, gives heavy-tailed pixel estimates whose variance 1024 samples do
-# not pin down; means over 64 and 256 pixels do.
+# Each render is checked against the exact constant image (variance 0) by tests/zcheck: per-block
+# (8x8 pixels) and whole-image Z-tests, alpha = 0.01 with Sidak's correction. No per-pixel test
+# here: light sampling near the box's corners, where cos cos / d^2 is unbounded, gives heavy-tailed
+# pixel estimates whose variance 1024 samples do not pin down; means over many pixels do.
 . "$(dirname "$0")/lib.sh"
-$PFMTOOL const 16 16 0 0 0 "$TMP/zero.pfm"
-known() {   # name scene value flags...
-    local name=$1 scene=$2 value=$3; shift 3
-    $PATHLAB render "scenes/$scene.obj" --quiet --size 16x16 --spp 1024 "$@" -o "$TMP/r.pfm" --variance "$TMP/r_var.pfm"
-    $PFMTOOL const 16 16 "$value" "$value" "$value" "$TMP/exact.pfm"
-    zcheck_expect "$name: L = $value" 0 "$TMP/r.pfm" "$TMP/r_var.pfm" "$TMP/exact.pfm" "$TMP/zero.pfm" --pixel-pass 0
+# Precision: where the estimator's variance is finite, the sample counts are chosen so that the
+# whole-image test's tolerance (critical z 2.93 times the standard deviation of the mean, ~3 sigma)
+# is at most 1e-3 of the exact value, and zcheck --precision 1e-3 fails the check if it is not
+# (too few samples to see a 0.1% error is a failed test, not a pass). Light sampling alone in the
+# box furnace is the exception: its variance is infinite (next to an edge, with x the distance of p
+# to the edge and y that of s, cos cos / d^2 = x y / (x^2 + y^2)^2, whose square integrates to a
+# divergent x^-3), so its mean converges, but slower than 1/sqrt(N) and with no trustworthy
+# sigma; it gets the plain 3-sigma test. In the sphere, cos cos / d^2 = 1 / (4 R^2) everywhere:
+# light sampling is nearly exact there, and the sphere carries the light-only precision checks.
+known() {   # name scene value size spp precision flags...
+    local name=$1 scene=$2 value=$3 size=$4 spp=$5 prec=$6; shift 6
+    $PATHLAB render "scenes/$scene.obj" --quiet --size "${size}x$size" --spp "$spp" "$@" -o "$TMP/r.pfm" --variance "$TMP/r_var.pfm"
+    $PFMTOOL const "$size" "$size" "$value" "$value" "$value" "$TMP/exact.pfm"
+    $PFMTOOL const "$size" "$size" 0 0 0 "$TMP/zero.pfm"
+    zcheck_expect "$name: L = $value" 0 "$TMP/r.pfm" "$TMP/r_var.pfm" "$TMP/exact.pfm" "$TMP/zero.pfm" --pixel-pass 0 --precision "$prec"
 }
-known "furnace, default estimators" furnace 2
-known "furnace, light sampling only, cosine" furnace 2 --direct light --dir cosine
-known "furnace, BRDF sampling only, uniform" furnace 2 --direct brdf --dir uniform
-known "sphere furnace, default estimators" sphere-furnace 1
-known "sphere furnace, mis-balance, power lights, no roulette, 40 bounces" sphere-furnace 1 --direct mis-balance --light power --rr off --bounces 0:40
+known "furnace, default estimators, 32x32 x 1024 spp" furnace 2 32 1024 1e-3
+known "furnace, BRDF sampling only, uniform, 32x32 x 2048 spp" furnace 2 32 2048 1e-3 --direct brdf --dir uniform
+known "furnace, light sampling only, cosine, 16x16 x 1024 spp (infinite variance: no precision asked)" furnace 2 16 1024 0 --direct light --dir cosine
+known "sphere furnace, default estimators, 32x32 x 1024 spp" sphere-furnace 1 32 1024 1e-3
+known "sphere furnace, light sampling only, 32x32 x 512 spp" sphere-furnace 1 32 512 1e-3 --direct light --dir cosine
+known "sphere furnace, mis-balance, power lights, no roulette, 40 bounces, 16x16 x 256 spp" sphere-furnace 1 16 256 1e-3 --direct mis-balance --light power --rr off --bounces 0:40
+$PFMTOOL const 16 16 0 0 0 "$TMP/zero.pfm"
 # the check must see a wrong answer: L0..L3 of the furnace is 1 + .5 + .25 + .125 = 1.875, not 2
 $PATHLAB render scenes/furnace.obj --quiet --size 16x16 --spp 1024 --bounces 0:3 -o "$TMP/f3.pfm" --variance "$TMP/f3_var.pfm"
 $PFMTOOL const 16 16 2 2 2 "$TMP/exact.pfm"
 zcheck_expect "furnace L0..L3 (1.875) is told apart from the full answer (2)" 1 "$TMP/f3.pfm" "$TMP/f3_var.pfm" "$TMP/exact.pfm" "$TMP/zero.pfm" --pixel-pass 0
-# and a 0.5% error: the furnace with its albedo at 0.5025 instead of 0.5 would give 2.01
-$PFMTOOL const 16 16 2.01 2.01 2.01 "$TMP/exact.pfm"
-$PATHLAB render scenes/furnace.obj --quiet --size 16x16 --spp 1024 -o "$TMP/r.pfm" --variance "$TMP/r_var.pfm"
-zcheck_expect "furnace: an answer 0.5% off (2.01) is told apart" 1 "$TMP/r.pfm" "$TMP/r_var.pfm" "$TMP/exact.pfm" "$TMP/zero.pfm" --pixel-pass 0
+# and a 0.1% error: the furnace with its albedo at 0.5005 instead of 0.5 would give 2.002
+$PFMTOOL const 32 32 2.002 2.002 2.002 "$TMP/exact.pfm"
+$PFMTOOL const 32 32 0 0 0 "$TMP/zero32.pfm"
+$PATHLAB render scenes/furnace.obj --quiet --size 32x32 --spp 1024 --seed 77 -o "$TMP/r.pfm" --variance "$TMP/r_var.pfm"
+zcheck_expect "furnace: an answer 0.1% off (2.002) is told apart" 1 "$TMP/r.pfm" "$TMP/r_var.pfm" "$TMP/exact.pfm" "$TMP/zero32.pfm" --pixel-pass 0
+# and --precision must refuse a check too coarse to see 0.1% (16x16 x 64 spp)
+$PATHLAB render scenes/furnace.obj --quiet --size 16x16 --spp 64 -o "$TMP/r.pfm" --variance "$TMP/r_var.pfm"
+$PFMTOOL const 16 16 2 2 2 "$TMP/exact.pfm"
+zcheck_expect "furnace at 64 spp: --precision 1e-3 refuses a too coarse check" 3 "$TMP/r.pfm" "$TMP/r_var.pfm" "$TMP/exact.pfm" "$TMP/zero.pfm" --pixel-pass 0 --precision 1e-3
 
-# Bounce by bounce: in the furnace L_k = Le a^k = 0.5^k exactly, for k = 0..6, with each --direct
-# strategy (one --split render each). MIS gets the block and whole-image tests; light-only and
-# BRDF-only get the whole-image test only: light sampling near the box's edges has unbounded
-# variance (cos cos / d^2 ~ 1/d^2 as both points near the edge), which makes block variances
-# unreliable, and Russian roulette (from bounce 3) multiplies the spikes.
-for mode in "mis-power:8" "light:0" "brdf:0"; do
-    direct=${mode%%:*}; block=${mode##*:}
-    $PATHLAB render scenes/furnace.obj --quiet --size 16x16 --spp 1024 --bounces 0:6 --split --direct "$direct" \
-        -o "$TMP/fk.pfm" --variance "$TMP/fkv.pfm"
+# Bounce by bounce: inside a closed shape of albedo a whose walls emit Le, L_k = Le a^k exactly, for
+# k = 0..6, with each --direct strategy (one --split render each), Russian roulette off (its
+# effect is tested bounce by bounce in test_rr.sh; here it would only add variance).
+# Box furnace (Le = 1): MIS to 1e-3 with block and whole-image tests; light-only with the
+# whole-image test only (infinite variance, above); BRDF-only with uniform directions too, whose
+# variance grows as 2^k with the bounce (plain 3-sigma test). Sphere furnace (Le = 0.5): all three to 1e-3.
+# BRDF sampling with cosine directions is exact in a diffuse furnace (f cos / pdf = a at every
+# bounce): zcheck's rounding floor is then the only tolerance.
+for mode in "furnace:1:mis-power:brdf:8:32:1024:1e-3" "furnace:1:light:cosine:0:16:1024:0" "furnace:1:brdf:cosine:0:16:256:1e-3" "furnace:1:brdf:uniform:0:16:1024:0" \
+            "sphere-furnace:0.5:mis-power:brdf:0:16:512:1e-3" "sphere-furnace:0.5:light:cosine:0:16:512:1e-3" "sphere-furnace:0.5:brdf:brdf:0:16:256:1e-3"; do
+    IFS=: read -r scene le direct dir block size spp prec <<< "$mode"
+    $PATHLAB render "scenes/$scene.obj" --quiet --size "${size}x$size" --spp "$spp" --bounces 0:6 --split --rr off \
+        --direct "$direct" --dir "$dir" -o "$TMP/fk.pfm" --variance "$TMP/fkv.pfm"
+    $PFMTOOL const "$size" "$size" 0 0 0 "$TMP/zero.pfm"
     for k in 0 1 2 3 4 5 6; do
-        v=$(awk -v k=$k 'BEGIN { printf "%.9g", 0.5 ^ k }')
-        $PFMTOOL const 16 16 "$v" "$v" "$v" "$TMP/exact.pfm"
-        zcheck_expect "furnace --direct $direct: L$k = 0.5^$k = $v" 0 "$TMP/fk_L$k.pfm" "$TMP/fkv_L$k.pfm" "$TMP/exact.pfm" "$TMP/zero.pfm" --pixel-pass 0 --block "$block"
+        v=$(awk -v k=$k -v le="$le" 'BEGIN { printf "%.9g", le * 0.5 ^ k }')
+        $PFMTOOL const "$size" "$size" "$v" "$v" "$v" "$TMP/exact.pfm"
+        zcheck_expect "$scene --direct $direct --dir $dir, ${size}x$size x $spp spp: L$k = $le x 0.5^$k = $v" 0 \
+            "$TMP/fk_L$k.pfm" "$TMP/fkv_L$k.pfm" "$TMP/exact.pfm" "$TMP/zero.pfm" --pixel-pass 0 --block "$block" --precision "$prec"
     done
 done
 exit 0

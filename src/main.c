@@ -2,10 +2,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 #include "bench_rays.h"
 #include "check_sampling.h"
 #include "cli.h"
+#include "compare.h"
 #include "diff.h"
 #include "grade.h"
 #include "render.h"
@@ -20,6 +20,7 @@ static const char *USAGE =
     "  pathlab diff A.pfm REF.pfm [--heatmap OUT.ppm|OUT.png] [--scale S]\n"
     "  pathlab grade IMAGE.pfm --ref REF.pfm [--alpha A] [--block B] [--heatmap OUT.ppm|OUT.png]\n"
     "                [--spp N] [--var REF_VAR.pfm --ref-spp M]   is IMAGE - REF noise or bias? (below)\n"
+    COMPARE_USAGE
     "  pathlab help\n"
     "\n"
     "render flags:\n"
@@ -47,85 +48,12 @@ static const char *USAGE =
     "  blocks       Student t of the mean of d over each B x B block (default max(8, min(w,h)/16)), per channel:\n"
     "               averaging shrinks noise, not bias; prints where the significant blocks are, brighter or darker\n"
     "  --var        with --spp and --ref-spp, a per-pixel Z-test assuming the reference's estimator (information only)\n"
-    "  --heatmap    the reference in grey, significantly brighter blocks red, darker blue\n";
-
-static const char *const LIGHT_NAMES[] = {"area", "triangle", "power", "solid-angle", NULL};
-static const char *const DIR_NAMES[] = {"uniform", "cosine", "brdf", NULL};
-static const char *const DIRECT_NAMES[] = {"light", "brdf", "mis-balance", "mis-power", NULL};
-
-typedef struct {
-    const char *scene, *out, *variance;
-    float exposure;
-    view vw, flags;                  /* flags: values given on the command line */
-    int eye, target, up, fov, size;  /* which camera flags were given */
-    render_opts ro;
-} render_args;
-
-static int parse_bounces(const char *flag, const char *s, integrator_opts *io)
-{
-    const char *colon = strchr(s, ':');
-    char first[32];
-    if (!colon || colon - s >= (long)sizeof first) {
-        fprintf(stderr, "pathlab: %s expects A:B (e.g. 0:1, 2:inf), got '%s'\n", flag, s);
-        return 1;
-    }
-    memcpy(first, s, (size_t)(colon - s));
-    first[colon - s] = '\0';
-    if (cli_int(flag, first, 0, 1000, &io->bmin)) return 1;
-    if (!strcmp(colon + 1, "inf")) io->bmax = BOUNCES_INF;
-    else if (cli_int(flag, colon + 1, 0, 1000, &io->bmax)) return 1;
-    if (io->bmax < io->bmin) {
-        fprintf(stderr, "pathlab: %s A:B needs A <= B, got '%s'\n", flag, s);
-        return 1;
-    }
-    return 0;
-}
-
-/* One flag at argv[*i]; 0 if understood and valid. */
-static int parse_flag(render_args *a, int argc, char **argv, int *i)
-{
-    const char *f = argv[*i], *v;
-    integrator_opts *io = &a->ro.io;
-    int choice;
-    if (!strcmp(f, "--quiet")) { a->ro.quiet = 1; return 0; }
-    if (!strcmp(f, "--pixel-center")) { a->ro.pixel_center = 1; return 0; }
-    if (!strcmp(f, "--split")) { io->split = 1; return 0; }
-    if (f[0] != '-') {
-        if (a->scene) { fprintf(stderr, "pathlab: one scene only, got '%s' and '%s'\n", a->scene, f); return 1; }
-        a->scene = f;
-        return 0;
-    }
-    if (!(v = cli_value(argc, argv, i))) return 1;
-    if (!strcmp(f, "-o")) { a->out = v; return 0; }
-    if (!strcmp(f, "--variance")) { a->variance = v; return 0; }
-    if (!strcmp(f, "--spp")) return cli_int(f, v, 1, 1 << 30, &a->ro.spp);
-    if (!strcmp(f, "--seed")) return cli_u64(f, v, &a->ro.seed);
-    if (!strcmp(f, "--threads")) return cli_int(f, v, 1, 256, &a->ro.threads);
-    if (!strcmp(f, "--exposure")) return cli_float(f, v, &a->exposure);
-    if (!strcmp(f, "--eye")) return a->eye = 1, cli_vec3(f, v, &a->flags.eye);
-    if (!strcmp(f, "--target")) return a->target = 1, cli_vec3(f, v, &a->flags.target);
-    if (!strcmp(f, "--up")) return a->up = 1, cli_vec3(f, v, &a->flags.up);
-    if (!strcmp(f, "--fov")) return a->fov = 1, cli_float(f, v, &a->flags.fov);
-    if (!strcmp(f, "--size")) return a->size = 1, cli_size(f, v, &a->flags.width, &a->flags.height);
-    if (!strcmp(f, "--bounces")) return parse_bounces(f, v, io);
-    if (!strcmp(f, "--bounce")) return cli_int(f, v, 0, 1000, &io->bmin) || (io->bmax = io->bmin, 0);
-    if (!strcmp(f, "--rr")) return !strcmp(v, "off") ? (io->rr_depth = -1, 0) : cli_int(f, v, 0, 1000, &io->rr_depth);
-    if (!strcmp(f, "--light")) return cli_choice(f, v, LIGHT_NAMES, &choice) || (io->light = (light_strategy)choice, 0);
-    if (!strcmp(f, "--dir")) return cli_choice(f, v, DIR_NAMES, &choice) || (io->dir = (dir_strategy)choice, 0);
-    if (!strcmp(f, "--direct")) return cli_choice(f, v, DIRECT_NAMES, &choice) || (io->direct = (direct_strategy)choice, 0);
-    fprintf(stderr, "pathlab: unknown flag '%s' (see pathlab help)\n", f);
-    return 1;
-}
-
-static const char *extension(const char *path)
-{
-    const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
-    return dot && (!slash || dot > slash) ? dot : "";
-}
+    "  --heatmap    the reference in grey, significantly brighter blocks red, darker blue\n"
+    COMPARE_HELP;
 
 static int image_extension_ok(const char *path, int pfm_only)
 {
-    const char *e = extension(path);
+    const char *e = path_extension(path);
     return !strcmp(e, ".pfm") || !strcmp(e, ".PFM")
            || (!pfm_only && (!strcmp(e, ".ppm") || !strcmp(e, ".PPM") || !strcmp(e, ".png") || !strcmp(e, ".PNG")));
 }
@@ -133,18 +61,9 @@ static int image_extension_ok(const char *path, int pfm_only)
 static int parse_render_args(render_args *a, int argc, char **argv)
 {
     int i;
-    memset(a, 0, sizeof *a);
-    a->ro.spp = 16;
-    a->ro.seed = 1;
-    a->ro.threads = (int)sysconf(_SC_NPROCESSORS_ONLN);
-    a->ro.io.light = LIGHT_AREA;
-    a->ro.io.dir = DIR_BRDF;
-    a->ro.io.direct = DIRECT_MIS_POWER;
-    a->ro.io.bmin = 0;
-    a->ro.io.bmax = BOUNCES_INF;
-    a->ro.io.rr_depth = 3;
+    render_args_init(a);
     for (i = 1; i < argc; i++)
-        if (parse_flag(a, argc, argv, &i)) return 1;
+        if (render_parse_flag(a, argc, argv, &i)) return 1;
     if (!a->scene) { fprintf(stderr, "pathlab: render needs a scene: pathlab render SCENE.obj -o FILE\n"); return 1; }
     if (!a->out) { fprintf(stderr, "pathlab: render needs an output: -o FILE.pfm or -o FILE.ppm\n"); return 1; }
     if (!image_extension_ok(a->out, 0)) { fprintf(stderr, "pathlab: -o %s: unknown image format (use .pfm, .ppm or .png)\n", a->out); return 1; }
@@ -157,32 +76,10 @@ static int parse_render_args(render_args *a, int argc, char **argv)
     return 0;
 }
 
-/* The view: SCENE.view if it exists, then the camera flags on top, then framing for what is left. */
-static int make_camera(render_args *a, const scene *s, camera *cam)
-{
-    char path[4096];
-    size_t n = strlen(a->scene) - strlen(extension(a->scene));
-    vec3 lo, hi;
-    view_defaults(&a->vw);
-    if (n + 6 < sizeof path) {
-        memcpy(path, a->scene, n);
-        strcpy(path + n, ".view");
-        if (view_read(&a->vw, path) > 0) return 1;
-    }
-    if (a->eye) { a->vw.eye = a->flags.eye; a->vw.has_eye = 1; }
-    if (a->target) { a->vw.target = a->flags.target; a->vw.has_target = 1; }
-    if (a->up) a->vw.up = a->flags.up;
-    if (a->fov) a->vw.fov = a->flags.fov;
-    if (a->size) { a->vw.width = a->flags.width; a->vw.height = a->flags.height; }
-    mesh_bounds(&s->m, &lo, &hi);
-    view_frame_bounds(&a->vw, lo, hi);
-    return camera_init(cam, &a->vw);
-}
-
 /* out.pfm -> out_L3.pfm */
 static void bounce_path(char *dst, size_t cap, const char *out, int k)
 {
-    const char *e = extension(out);
+    const char *e = path_extension(out);
     snprintf(dst, cap, "%.*s_L%d%s", (int)(strlen(out) - strlen(e)), out, k, e);
 }
 
@@ -214,7 +111,7 @@ static int cmd_render(int argc, char **argv)
     if (!a.ro.quiet)
         fprintf(stderr, "%s: %d triangles (%d degenerate dropped), %d emitting, %d materials; loaded in %.0f ms, BVH in %.0f ms\n",
                 a.scene, s.m.ntris, s.m.ndegenerate, s.lights.n, s.m.nmats - 1, 1e3 * s.load_seconds, 1e3 * s.bvh_seconds);
-    if (make_camera(&a, &s, &cam)) { scene_free(&s); return 2; }
+    if (render_make_camera(&a, &s, &cam)) { scene_free(&s); return 2; }
     if (s.lights.n == 0)
         fprintf(stderr, "pathlab: warning: %s has no emitters (no material with Ke > 0): the image is black\n", a.scene);
     if (render(&s, &cam, &a.ro, &r)) { scene_free(&s); return 1; }
@@ -233,6 +130,7 @@ int main(int argc, char **argv)
     if (!strcmp(argv[1], "check-sampling")) return check_sampling_main(argc - 1, argv + 1);
     if (!strcmp(argv[1], "diff")) return diff_main(argc - 1, argv + 1);
     if (!strcmp(argv[1], "grade")) return grade_main(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "compare")) return compare_main(argc - 1, argv + 1);
     if (!strcmp(argv[1], "help") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) { fputs(USAGE, stdout); return 0; }
     fprintf(stderr, "pathlab: unknown command '%s'\n\n%s", argv[1], USAGE);
     return 2;

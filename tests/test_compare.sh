@@ -1,0 +1,116 @@
+#!/usr/bin/env bash
+# pathlab compare: one table row per estimator with finite metrics that agree with pathlab diff on
+# the written images; the reference-variance correction; equal time gives a cheap estimator more
+# samples than an expensive one; the mosaic has the layout's size and its labels have ink; bad
+# input exits 2 with a clear message and writes nothing. About 2.5 s (5 s with the sanitizers and PATHLAB_FAST=1).
+. "$(dirname "$0")/lib.sh"
+S=scenes/cornell.obj
+C="$PATHLAB compare $S --size 32x32 --threads 2 --quiet"
+if [ "${PATHLAB_FAST:-}" = 1 ]; then SPP=4 SEC=0.25; else SPP=8 SEC=0.4; fi
+near() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { d = a - b; if (d < 0) d = -d; s = b < 0 ? -b : b; exit !(d <= t * s + 1e-12) }'; }
+# csv COLUMN ROW FILE: a field of table.csv (row 1 = first estimator); labels and flags have no commas here
+csv() { awk -F, -v c="$1" -v r="$2" 'NR == r + 1 { gsub(/"/, "", $c); print $c }' "$3"; }
+
+# ---- equal spp, rendered reference ----
+D=$TMP/eq
+expect_status "compare: three estimators at equal spp, exit 0" 0 \
+    $C --spp $SPP --ref-spp 64 --estimators "light,brdf,solid angle=--direct light --light solid-angle" -o "$D"
+rows=$(($(wc -l < "$D/table.csv") - 1))
+if [ "$rows" -eq 3 ] && [ "$(grep -c "^| " "$D/table.md")" -eq 4 ]; then pass "compare: one table row per estimator (csv and md)"
+else fail "compare: $rows csv rows, expected 3: $(cat "$D/table.csv")"; fi
+bad=$(awk -F, 'NR > 1 { for (i = 3; i <= 10; i++) if ($i !~ /^[0-9.e+-]+$/ || $i + 0 != $i + 0) print NR ": " $0 }' "$D/table.csv")
+if [ -z "$bad" ] && [ "$(csv 3 3 "$D/table.csv")" = "$SPP" ]; then pass "compare: every metric finite, spp = $SPP"
+else fail "compare: non-finite or missing metrics: $bad"; fi
+missing=""
+for f in light.pfm light.png heat-light.png brdf.pfm solid-angle.pfm solid-angle.png heat-solid-angle.png \
+         reference.pfm reference-var.pfm mosaic.ppm mosaic.png table.md table.csv; do
+    [ -s "$D/$f" ] || missing="$missing $f"
+done
+if [ -z "$missing" ]; then pass "compare: images, heatmaps, reference, mosaic and tables written"; else fail "compare: missing:$missing"; fi
+if [ "$(csv 2 3 "$D/table.csv")" = "--direct light --light solid-angle" ] && [ "$(csv 1 3 "$D/table.csv")" = "solid angle" ]; then
+    pass "compare: LABEL=FLAGS keeps the label and the flags"
+else fail "compare: row 3 is '$(sed -n 4p "$D/table.csv")'"; fi
+# RMSE, relMSE and MAE of the table are those of pathlab diff on the written images
+for r in 1 2 3; do
+    slug=$(csv 1 $r "$D/table.csv" | tr ' ' '-')
+    out=$($PATHLAB diff "$D/$slug.pfm" "$D/reference.pfm")
+    ok=1
+    for kc in "RMSE 5" "relMSE 6" "MAE 7"; do
+        set -- $kc
+        want=$(echo "$out" | awk -v k="$1" '$1 == k { print $2 }')
+        near "$(csv "$2" $r "$D/table.csv")" "$want" 1e-4 || ok=0
+    done
+    if [ $ok = 1 ]; then pass "compare: $slug: RMSE, relMSE, MAE agree with pathlab diff"
+    else fail "compare: $slug: table $(sed -n "$((r + 1))p" "$D/table.csv") vs diff: $(echo $out)"; fi
+done
+# MSE = RMSE^2 - mean variance of the reference, and efficiency = 1 / (MSE time)
+mv=$(awk '/^- MSE = RMSE\^2 - / { print $6; exit }' "$D/table.md" | tr -d ',')
+r1=$(csv 5 1 "$D/table.csv"); m1=$(csv 8 1 "$D/table.csv"); t1=$(csv 4 1 "$D/table.csv"); e1=$(csv 9 1 "$D/table.csv")
+if [ -n "$mv" ] && near "$m1" "$(awk -v r="$r1" -v v="$mv" 'BEGIN { print r * r - v }')" 2e-3 \
+   && near "$e1" "$(awk -v m="$m1" -v t="$t1" 'BEGIN { print 1 / (m * t) }')" 2e-3; then
+    pass "compare: MSE = RMSE^2 - mean reference variance ($mv), efficiency = 1/(MSE time)"
+else fail "compare: MSE $m1, RMSE $r1, mean var '$mv', efficiency $e1, time $t1"; fi
+if grep -q "reference: rendered with .--direct mis-power --light solid-angle --dir brdf. at 64 spp" "$D/table.md"; then
+    pass "compare: the notes say how the reference was made"; else fail "compare: notes: $(grep reference "$D/table.md")"; fi
+
+# ---- the mosaic: 32x32 panels scaled 4x to 128, 4 columns (reference + 3), two rows, one-line labels ----
+geom=$(python3 - "$D/mosaic.ppm" <<'EOF'
+import sys
+d = open(sys.argv[1], 'rb').read()
+parts = d.split(b'\n', 3)
+w, h = map(int, parts[1].split()); px = parts[3]
+def white(x0, x1, y0, y1):
+    return sum(1 for y in range(y0, y1) for x in range(x0, x1) if px[3 * (y * w + x):3 * (y * w + x) + 3] == b'\xff\xff\xff')
+# label bands: rows 4..16 over each panel column; the gaps between panels (x = 132..135) stay background
+inks = [white(4 + i * 132, 4 + i * 132 + 128, 4, 17) for i in range(4)]
+gap = px[3 * (100 * w + 133):3 * (100 * w + 133) + 3]
+print(w, h, min(inks), gap.hex())
+EOF
+)
+set -- $geom
+if [ "$1" = 532 ] && [ "$2" = 294 ]; then pass "compare: mosaic is 532x294 (4 + 4 x (128 + 4) wide, 4 + 2 x (13 + 128 + 4) high)"
+else fail "compare: mosaic geometry '$geom', expected 532x294"; fi
+if [ "${3:-0}" -ge 15 ]; then pass "compare: every label band has white ink (fewest: $3 pixels)"; else fail "compare: a label band is empty: $geom"; fi
+if [ "${4:-}" = "1d1d1f" ]; then pass "compare: panels are separated by background"; else fail "compare: gap pixel is '${4:-}'"; fi
+
+# ---- a given reference and its variance: the correction is exactly the variance's mean ----
+$PFMTOOL const 32 32 0.001 0.001 0.001 "$TMP/var.pfm"
+expect_status "compare: --ref and --ref-var, exit 0" 0 \
+    $C --spp 2 --estimators "mis-power" --ref "$D/reference.pfm" --ref-var "$TMP/var.pfm" -o "$TMP/given"
+r=$(csv 5 1 "$TMP/given/table.csv"); m=$(csv 8 1 "$TMP/given/table.csv")
+if near "$m" "$(awk -v r="$r" 'BEGIN { print r * r - 0.001 }')" 1e-4 && [ ! -e "$TMP/given/reference.pfm" ]; then
+    pass "compare: MSE = RMSE^2 - 0.001 with a constant --ref-var 0.001; no reference rendered"
+else fail "compare: RMSE $r, MSE $m"; fi
+
+# ---- equal time: the cheapest estimator (no shadow rays) gets more spp than the dearest ----
+expect_status "compare: equal time $SEC s, exit 0" 0 \
+    $C --time $SEC --ref-spp 32 --estimators "brdf,light+solid-angle" -o "$TMP/time"
+s1=$(csv 3 1 "$TMP/time/table.csv"); s2=$(csv 3 2 "$TMP/time/table.csv")
+t1=$(csv 4 1 "$TMP/time/table.csv"); t2=$(csv 4 2 "$TMP/time/table.csv")
+if [ "${s1:-0}" -gt "${s2:-0}" ]; then pass "compare: equal time: brdf $s1 spp > light+solid-angle $s2 spp"
+else fail "compare: equal time: brdf $s1 spp, light+solid-angle $s2 spp"; fi
+if awk -v a="$t1" -v b="$t2" -v s="$SEC" 'BEGIN { exit !(a > s / 4 && a < 3 * s && b > s / 4 && b < 3 * s) }'; then
+    pass "compare: equal time: $t1 s and $t2 s, within a factor 4 below and 3 above $SEC s"
+else fail "compare: equal time: $t1 s and $t2 s for $SEC s"; fi
+
+# ---- bad input: exit 2, a message naming the problem, no DIR ----
+expect_status "compare: unknown estimator name, exit 2" 2 $C --estimators "light,mis-pwoer" -o "$TMP/bad1"
+expect_err "compare: unknown name named" "unknown name 'mis-pwoer'"
+expect_no_file "compare: unknown name, no DIR" "$TMP/bad1"
+expect_status "compare: bad flag value inside an estimator, exit 2" 2 $C --estimators "x=--direct sideways" -o "$TMP/bad2"
+expect_err "compare: bad value named with its estimator" "sideways"
+expect_no_file "compare: bad flag value, no DIR" "$TMP/bad2"
+expect_status "compare: --spp inside an estimator, exit 2" 2 $C --estimators "light --spp 4" -o "$TMP/bad3"
+expect_status "compare: two estimators with one file name, exit 2" 2 $C --estimators "light,Light=--direct light" -o "$TMP/bad4"
+expect_err "compare: the clash is named" "both write"
+expect_status "compare: --spp and --time, exit 2" 2 $C --spp 4 --time 1 --estimators light -o "$TMP/bad5"
+$PFMTOOL const 16 16 1 1 1 "$TMP/small.pfm"
+expect_status "compare: reference of another size, exit 2" 2 $C --estimators light --ref "$TMP/small.pfm" -o "$TMP/bad6"
+expect_err "compare: both sizes named" "16x16.*32x32"
+expect_no_file "compare: reference size mismatch, no DIR" "$TMP/bad6"
+expect_status "compare: estimators with different cameras, exit 2" 2 $C --estimators "light,b=--eye 0,1,5 --direct brdf" -o "$TMP/bad8"
+expect_err "compare: the camera clash is named" "another camera"
+expect_no_file "compare: different cameras, no DIR" "$TMP/bad8"
+expect_status "compare: missing reference file, exit 2" 2 $C --estimators light --ref "$TMP/none.pfm" -o "$TMP/bad7"
+expect_err "compare: missing reference named" "none.pfm"
+exit 0

@@ -45,7 +45,7 @@ test-deps:
 	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
 	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq openimageio-tools >/dev/null; }
 
-TOOLS = $(BUILD)/tests/zcheck $(BUILD)/tests/pfmtool
+TOOLS = $(BUILD)/tests/zcheck $(BUILD)/tests/pfmtool $(BUILD)/bench-plot
 
 test: $(PROG) $(TEST_BIN) $(TOOLS) test-deps
 	BUILD=$(BUILD) PATHLAB=./$(PROG) PATHLAB_FAST=$(SAN) tests/run.sh
@@ -59,14 +59,27 @@ stress: $(PROG) $(TOOLS)
 refs: $(PROG)
 	ref/make_refs.sh
 
-# Ray speed against Embree 3 on the Stanford meshes (needs ../shared and Debian's libembree-dev).
+# The benchmarks (about 7.5 minutes on 2 cores; see docs/performance.md): ray speed against Embree 3 on
+# the Stanford meshes (needs ../shared and Debian's libembree-dev), the time to reach the same L1
+# error per --direct mode (bench/direct_modes.sh), and RMSE against render time for every estimator
+# on every scene (bench/sweep.sh: bench/results.csv, docs/bench.svg).
 BENCH_MESHES ?= ../shared/data/meshes/bunny.obj ../shared/data/meshes/dragon.obj
-bench: $(PROG) $(BUILD)/tests/pfmtool
+bench: $(PROG) $(BUILD)/tests/pfmtool $(BUILD)/bench-plot
 	@for m in $(BENCH_MESHES); do for t in 1 2; do \
 	  echo "== $$m, $$t thread(s)"; ../shared/tools/embree-rays/compare.sh $$m $$t 3; done; done
 	BUILD=$(BUILD) PATHLAB=./$(PROG) bench/direct_modes.sh
+	BUILD=$(BUILD) PATHLAB=./$(PROG) bench/sweep.sh
+
+# The benchmark's error, slopes, ranking and SVG (bench/plot.c), linked like the tests.
+$(BUILD)/bench-plot: bench/plot.c $(LIB_OBJ) | $(BUILD)
+	$(CC) $(CFLAGS) -Isrc -o $@ bench/plot.c $(LIB_OBJ) $(LDLIBS)
+
+# Mutation testing (tests/mutants/run.sh): classic bugs put into a copy of src/, each must make
+# one fast test fail; about 2 minutes on 2 cores.
+mutants:
+	tests/mutants/run.sh
 
 clean:
 	rm -rf build build-san pathlab
 
-.PHONY: all run test test-deps stress refs bench clean
+.PHONY: all run test test-deps stress refs bench clean mutants

@@ -1,6 +1,7 @@
 /* main.c — pathlab's command line: `pathlab render SCENE.obj [flags] -o FILE`, `pathlab bench-rays`. */
 #include <stdio.h>
 #include <stdlib.h>
+#include <math.h>
 #include <string.h>
 #include "bench_rays.h"
 #include "check_sampling.h"
@@ -21,6 +22,8 @@ static const char *USAGE =
     "  pathlab grade IMAGE.pfm --ref REF.pfm [--alpha A] [--block B] [--heatmap OUT.ppm|OUT.png]\n"
     "                [--spp N] [--var REF_VAR.pfm --ref-spp M]   is IMAGE - REF noise or bias? (below)\n"
     COMPARE_USAGE
+    "  pathlab convert IN.pfm OUT.png|OUT.ppm|OUT.pfm [--exposure STOPS]   view a PFM (e.g. a --split layer);\n"
+    "                prints the size and each channel's mean, min and max\n"
     "  pathlab help\n"
     "\n"
     "render flags:\n"
@@ -99,6 +102,44 @@ static int write_outputs(const render_args *a, const render_result *r)
     return err;
 }
 
+/* pathlab convert IN.pfm OUT [--exposure S]: a PFM made viewable, and its figures. */
+static int cmd_convert(int argc, char **argv)
+{
+    image im;
+    float exposure = 0.0f;
+    double sum[3] = {0, 0, 0}, lo[3], hi[3];
+    size_t i, n;
+    int ch, err;
+    char *end;
+    if (argc != 3 && !(argc == 5 && !strcmp(argv[3], "--exposure"))) {
+        fprintf(stderr, "usage: pathlab convert IN.pfm OUT.png|OUT.ppm|OUT.pfm [--exposure STOPS]\n");
+        return 2;
+    }
+    if (argc == 5) {
+        exposure = strtof(argv[4], &end);
+        if (end == argv[4] || *end || !(exposure > -100.0f && exposure < 100.0f)) {
+            fprintf(stderr, "pathlab: convert: --exposure %s: expected a number of stops\n", argv[4]);
+            return 2;
+        }
+    }
+    if (!image_extension_ok(argv[2], 0)) { fprintf(stderr, "pathlab: convert: %s: unknown image format (use .png, .ppm or .pfm)\n", argv[2]); return 2; }
+    if (img_read_pfm(&im, argv[1])) return 2;
+    n = (size_t)im.w * im.h;
+    for (ch = 0; ch < 3; ch++) lo[ch] = HUGE_VAL, hi[ch] = -HUGE_VAL;
+    for (i = 0; i < 3 * n; i++) {
+        double v = im.px[i];
+        sum[i % 3] += v;
+        if (v < lo[i % 3]) lo[i % 3] = v;
+        if (v > hi[i % 3]) hi[i % 3] = v;
+    }
+    printf("%s: %d x %d\n", argv[1], im.w, im.h);
+    for (ch = 0; ch < 3; ch++)
+        printf("  %-5s mean %.6g  min %.6g  max %.6g\n", ch == 0 ? "red" : ch == 1 ? "green" : "blue", sum[ch] / (double)n, lo[ch], hi[ch]);
+    err = img_write(&im, argv[2], exposure);
+    img_free(&im);
+    return err ? 1 : 0;
+}
+
 static int cmd_render(int argc, char **argv)
 {
     render_args a;
@@ -131,6 +172,7 @@ int main(int argc, char **argv)
     if (!strcmp(argv[1], "diff")) return diff_main(argc - 1, argv + 1);
     if (!strcmp(argv[1], "grade")) return grade_main(argc - 1, argv + 1);
     if (!strcmp(argv[1], "compare")) return compare_main(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "convert")) return cmd_convert(argc - 1, argv + 1);
     if (!strcmp(argv[1], "help") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) { fputs(USAGE, stdout); return 0; }
     fprintf(stderr, "pathlab: unknown command '%s'\n\n%s", argv[1], USAGE);
     return 2;

@@ -19,6 +19,8 @@ static const char *USAGE =
     "  pathlab bench-rays MESH.obj [-r RES] [-t THREADS]\n"
     "  pathlab check-sampling [--samples N] [--seed S] [--threads T] [--quiet]\n"
     "  pathlab diff A.pfm REF.pfm [--heatmap OUT.ppm|OUT.png] [--scale S]\n"
+    "                heatmap of |A - REF|: black 0 to white S (default: the largest difference, so\n"
+    "                give the same --scale to compare two heatmaps)\n"
     "  pathlab grade IMAGE.pfm --ref REF.pfm [--alpha A] [--block B] [--heatmap OUT.ppm|OUT.png]\n"
     "                [--spp N] [--var REF_VAR.pfm --ref-spp M]   is IMAGE - REF noise or bias? (below)\n"
     COMPARE_USAGE
@@ -44,7 +46,10 @@ static const char *USAGE =
     "  --dir uniform|cosine|brdf        how a direction is chosen at a surface (default brdf)\n"
     "  --direct light|brdf|mis-balance|mis-power   the estimator of direct light (default mis-power)\n"
     "  --rr D|off           Russian roulette after D bounces (default 3)\n"
-    "  --variance FILE.pfm  also write the variance of each pixel's mean (with --split, one per bounce too)\n"
+    "  --variance FILE.pfm  also write the variance of each pixel's mean (with --split, one per bounce too)\n";
+
+/* C99 compilers need only take string literals of 4095 characters: the help is in two parts. */
+static const char *USAGE_TOOLS =
     "grade (exit 0 pass, 1 fail, 2 bad input), on d = IMAGE - REF per pixel-channel, at family-wise level alpha\n"
     "(default 0.01; alpha/2 to each family, Sidak within it); the noise is estimated from the scatter of d:\n"
     "  whole image  z of the mean of d, per channel: catches a bias spread everywhere (all 2 percent too bright)\n"
@@ -165,7 +170,7 @@ static int cmd_render(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
-    if (argc < 2) { fputs(USAGE, stderr); return 2; }
+    if (argc < 2) { fputs(USAGE, stderr); fputs(USAGE_TOOLS, stderr); return 2; }
     if (!strcmp(argv[1], "render")) return cmd_render(argc - 1, argv + 1);
     if (!strcmp(argv[1], "bench-rays")) return bench_rays_main(argc - 1, argv + 1);
     if (!strcmp(argv[1], "check-sampling")) return check_sampling_main(argc - 1, argv + 1);
@@ -173,7 +178,7 @@ int main(int argc, char **argv)
     if (!strcmp(argv[1], "grade")) return grade_main(argc - 1, argv + 1);
     if (!strcmp(argv[1], "compare")) return compare_main(argc - 1, argv + 1);
     if (!strcmp(argv[1], "convert")) return cmd_convert(argc - 1, argv + 1);
-    if (!strcmp(argv[1], "help") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) { fputs(USAGE, stdout); return 0; }
-    fprintf(stderr, "pathlab: unknown command '%s'\n\n%s", argv[1], USAGE);
+    if (!strcmp(argv[1], "help") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) { fputs(USAGE, stdout); fputs(USAGE_TOOLS, stdout); return 0; }
+    fprintf(stderr, "pathlab: unknown command '%s'\n\n%s%s", argv[1], USAGE, USAGE_TOOLS);
     return 2;
 }

@@ -80,6 +80,8 @@ typedef struct {
 
 /* The cases of check-sampling, with pathlab's routines; returns how many (at most max). */
 int check_sampling_cases(sampling_case *cases, int max);
+/* The test materials: Kd tinted (kd, 0.8 kd, 0.6 kd) so that the lobes' mixture is not grey, Ks grey. */
+material check_sampling_material(float kd, float ks, float Ns);
 /* Runs one case with n samples (times its share) from the streams of seed. */
 void check_sampling_run(const sampling_case *c, long n, uint64_t seed, sampling_result *r);
 /* Runs them all on up to `threads` threads; case i uses a seed made of (seed, i). */

@@ -19,7 +19,7 @@ static float cosine_pdf(vec3 w, float m) { (void)m; return pdf_cosine_hemisphere
 static double cosine_formula(double z, double m) { (void)m; return z / PI; }
 static double cos_power_formula(double z, double m) { return (m + 1.0) / (2.0 * PI) * pow(z, m); }
 
-static material make_material(float kd, float ks, float Ns)
+material check_sampling_material(float kd, float ks, float Ns)
 {
     material m;
     memset(&m, 0, sizeof m);
@@ -75,7 +75,7 @@ static void add_brdfs(sampling_case *cases, int *n, int max)
             snprintf(name, sizeof name, "brdf_sample %s, wo %g deg", mats[i].name, thetas[j]);
             if (!(c = add(cases, n, max, CASE_BRDF, name))) continue;
             c->share = 0.5;
-            c->brdf.mat = make_material(mats[i].kd, mats[i].ks, mats[i].Ns);
+            c->brdf.mat = check_sampling_material(mats[i].kd, mats[i].ks, mats[i].Ns);
             c->brdf.theta_deg = thetas[j], c->brdf.phi_o = 0.7f + (float)j;
         }
 }

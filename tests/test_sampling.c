@@ -31,16 +31,6 @@
 static double alpha_case;   /* Sidak: 1 - (1 - CHECK_ALPHA)^(1 / number of chi-square cases) */
 static int n_chi2_done;
 
-static material make_material(float kd, float ks, float Ns)
-{
-    material m;
-    memset(&m, 0, sizeof m);
-    m.Kd = v3(kd, 0.8f * kd, 0.6f * kd);
-    m.Ks = v3(ks, ks, ks);
-    m.Ns = Ns;
-    return m;
-}
-
 /* ---------- the chi-square distribution ---------- */
 
 /* Closed forms: Q(1/2, x) = erfc(sqrt x), and for integer a Q(a, x) = e^-x sum_{k<a} x^k / k!. */
@@ -88,7 +78,7 @@ static void test_chi2_pvalue(void)
 
 static void test_supports(void)
 {
-    material g = make_material(0.3f, 0.5f, 20.0f);
+    material g = check_sampling_material(0.3f, 0.5f, 20.0f);
     vec3 up = v3(0.3f, 0.1f, 0.9486833f), down = v3(0.3f, 0.1f, -0.9486833f);
     float pdf;
     int ok = pdf_uniform_hemisphere(down) == 0.0f && pdf_cosine_hemisphere(down) == 0.0f &&
@@ -105,7 +95,7 @@ static void test_brdf_eval(void)
     pcg32 rng;
     pcg32_init(&rng, 31u, 4u);
     for (k = 0; k < 4; k++) {
-        material m = make_material(0.5f, 0.4f, Ns[k]);
+        material m = check_sampling_material(0.5f, 0.4f, Ns[k]);
         double tol = 1e-4 + 8.0 * Ns[k] * 5.96e-8;   /* float rounding of cos theta_h, times Ns */
         for (i = 0; i < 20000; i++) {
             vec3 wo = sample_uniform_hemisphere(pcg32_float(&rng), pcg32_float(&rng));

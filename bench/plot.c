@@ -33,7 +33,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include "image.h"
+#include "image/image.h"
 
 #define MAX_SCENES 32
 #define MAX_EST 16

@@ -12,6 +12,7 @@ log=$(mktemp -d); trap 'rm -rf "$log"' EXIT
 only=${1:-}
 for t in "$BUILD"/tests/test_* tests/test_*.sh; do
     [ -e "$t" ] || continue
+    case "$t" in *.d) continue ;; esac   # the compiler's dependency files
     name=$(basename "$t")
     [ -n "$only" ] && [[ "$name" != *"$only"* ]] && continue
     start=$(date +%s%N)

@@ -9,7 +9,7 @@
  *  4. Builds with 1, 2 and 3 threads give the same hits.
  *  5. offset_ray_origin: rays leaving points of triangles 1e5 from the origin never hit their own.
  * Sanitizer builds, and PATHLAB_TEST_QUICK=1, shrink the sizes. */
-#include "bvh.h"
+#include "geometry/bvh.h"
 #include "check.h"
 #include <stdint.h>
 #include <stdlib.h>

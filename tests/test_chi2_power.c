@@ -3,10 +3,10 @@
  * with a sampler or a pdf swapped for a wrong one, run through the same cells, quadrature and pooling,
  * at the same per-case level as `pathlab check-sampling` (Sidak over its cases). Each comes with its
  * control, the unbroken case with the same sample count, which must pass: the FAIL is the breakage's. */
-#include "brdf.h"
+#include "tracer/brdf.h"
 #include "check.h"
-#include "check_sampling.h"
-#include "sampling.h"
+#include "check/check_sampling.h"
+#include "tracer/sampling.h"
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>

@@ -12,8 +12,8 @@
  * the exact value: the check fails if that precision is not reached. Each estimate runs on NTHREADS
  * threads, each with its own stream, so the figures do not depend on the machine. */
 #include "check.h"
-#include "integrator.h"
-#include "scene.h"
+#include "tracer/integrator.h"
+#include "tracer/scene.h"
 #include <math.h>
 #include <pthread.h>
 #include <stdlib.h>

@@ -7,7 +7,7 @@
 # BRDF directions, 131072 spp). The L1 and L2 layers of each L0..L4 render are checked against the
 # same references as L1 and L2 alone, and its split layers must sum to its total.
 #
-# Each comparison (tests/zcheck, src/imgstat.c), on 24x24 images:
+# Each comparison (tests/zcheck, src/stats/imgstat.c), on 24x24 images:
 #  - per pixel: z = (a - ref) / sqrt(var_a + var_ref) with each render's own variance of the pixel
 #    mean (--variance), alpha = 0.01 with Sidak's correction over the 1728 pixel-channels
 #    (|z| < 4.53); at least 99.75% of them must pass (the bar of Mitsuba's render tests: 4 may fail);

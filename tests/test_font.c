@@ -2,7 +2,7 @@
  * is well formed, and drawing puts ink where the text is and nowhere else. */
 #include <string.h>
 #include "check.h"
-#include "font.h"
+#include "image/font.h"
 
 static void glyph_bits(int c, char *out)
 {

@@ -5,8 +5,8 @@
 #include <math.h>
 #include <stdlib.h>
 #include "check.h"
-#include "grade.h"
-#include "rng.h"
+#include "cmd/grade.h"
+#include "math/rng.h"
 
 /* The reference: a smooth picture from 0.05 to 1, exact (the truth). */
 static void make_ref(image *ref, int w, int h)

@@ -1,7 +1,7 @@
 /* test_image.c — PFM and PPM files: exact round trips, byte layout and orientation, foreign
  * byte orders and greyscale, hostile inputs, the sRGB curve, atomic writes, and (when installed)
  * agreement with OpenImageIO's oiiotool, an independent PFM reader. Works in a fresh /tmp folder. */
-#include "image.h"
+#include "image/image.h"
 #include "check.h"
 #include <dirent.h>
 #include <math.h>

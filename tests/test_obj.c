@@ -2,7 +2,7 @@
  * with its "file:line: message", and every OBJ under ../shared/data (skipped if that is absent).
  * Run from the repository root: inputs are tests/obj/... and ../shared/data/... */
 #include "check.h"
-#include "obj.h"
+#include "scene/obj.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

@@ -12,14 +12,14 @@
  * their support, brdf_eval against the slides' formula, light_build, 300000 emitters, and the
  * reference Arvo map (arvo.h) that bins the solid-angle samples: round trip, and uniformity
  * (directions drawn by rejection). */
-#include "arvo.h"
-#include "brdf.h"
+#include "check/arvo.h"
+#include "tracer/brdf.h"
 #include "check.h"
-#include "check_sampling.h"
-#include "chi2_sphere.h"
-#include "light.h"
-#include "rng.h"
-#include "sampling.h"
+#include "check/check_sampling.h"
+#include "check/chi2_sphere.h"
+#include "tracer/light.h"
+#include "math/rng.h"
+#include "tracer/sampling.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <math.h>
-#include "imgstat.h"
+#include "stats/imgstat.h"
 
 int main(int argc, char **argv)
 {

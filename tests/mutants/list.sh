@@ -16,58 +16,58 @@
 # matched text (\& a literal &).
 
 # ---- direct light: the estimator Le f cos(theta_p) cos(theta_s) / d^2 / pdf_A ----
-mutant no-cos-surface src/integrator.c \
+mutant no-cos-surface src/tracer/integrator.c \
     's/cos_p \/ pdf_light \* w/1.0f \/ pdf_light * w/' \
     test_direct PATHLAB_FAST=1 'forgot cos(theta) of the light direction at the surface point'
-mutant no-cos-light src/light.h \
+mutant no-cos-light src/tracer/light.h \
     's/pdf_area \* dist2 \/ cos_s : 0\.0f/pdf_area * dist2 : 0.0f/' \
     test_direct PATHLAB_FAST=1 'forgot cos(theta_s) at the light when turning the area pdf into solid angle'
-mutant area-pdf src/integrator.c \
+mutant area-pdf src/tracer/integrator.c \
     's/pdf_light = pdf_area_to_solid_angle(ls\.pdf_area, dist2, cos_s);/pdf_light = ls.pdf_area;/' \
     test_direct PATHLAB_FAST=1 'divided by the area pdf 1/A instead of the solid-angle pdf (no d^2/cos)'
-mutant light-choice src/light.c \
+mutant light-choice src/tracer/light.c \
     's/return light_choice_prob(ls, st, i) \/ e->area;/return 1.0f \/ e->area;/' \
     test_direct PATHLAB_FAST=1 'picked a light triangle with probability P_i but never divided by P_i'
 # ---- emission and MIS ----
-mutant emission-twice src/integrator.c \
+mutant emission-twice src/tracer/integrator.c \
     's/w = mis_weight(o->direct, pdf2, pdf_light);/w = 1.0f;/' \
     test_direct PATHLAB_FAST=1 'light found by light sampling AND by the BRDF ray, no MIS weight: counted twice'
-mutant le-every-vertex src/integrator.c \
+mutant le-every-vertex src/tracer/integrator.c \
     's/if (!bvh_intersect(s->accel, &r, &h)) break;/&\n        add(L, o, k, v3_mul(beta, emitted(s, \&h, r.d)));/' \
     test_direct PATHLAB_FAST=1 'added Le at every hit on top of next-event estimation'
-mutant mis-swapped src/integrator.c \
+mutant mis-swapped src/tracer/integrator.c \
     's/w = mis_weight(o->direct, pdf2, pdf_light);/w = mis_weight(o->direct, pdf_light, pdf2);/' \
     test_direct PATHLAB_FAST=1 'MIS weights that do not sum to 1 (the pdfs swapped on the BRDF side)'
-mutant two-sided-emission src/integrator.c \
+mutant two-sided-emission src/tracer/integrator.c \
     's/return v3_dot(s->Ng\[h->tri\], dir) < 0\.0f ? Ke : v3(0, 0, 0);/(void)dir; return Ke;/' \
     test_direct PATHLAB_FAST=1 'lights emit from their back face too'
 # ---- paths ----
-mutant no-cos-throughput src/integrator.c \
+mutant no-cos-throughput src/tracer/integrator.c \
     's/beta = v3_mul(beta, v3_scale(f, cos_p \/ pdf2));/beta = v3_mul(beta, v3_scale(f, 1.0f \/ pdf2));/' \
     test_direct PATHLAB_FAST=1 'forgot cos(theta) in the path throughput f cos / pdf'
-mutant rr-no-divide src/integrator.c \
+mutant rr-no-divide src/tracer/integrator.c \
     's/beta = v3_scale(beta, 1\.0f \/ q);/(void)q;/' \
     test_rr PATHLAB_FAST=1 'Russian roulette kills paths but survivors are not divided by q'
 # ---- BRDF and warps ----
-mutant blinn-norm src/brdf.c \
+mutant blinn-norm src/tracer/brdf.c \
     's/(m->Ns + 8\.0f) \/ (8\.0f \* PI_F)/(m->Ns + 2.0f) \/ (8.0f * PI_F)/' \
     test_sampling PATHLAB_FAST=1 'Blinn lobe normalised with (Ns+2) instead of (Ns+8)'
-mutant half-vector-pdf src/brdf.c \
+mutant half-vector-pdf src/tracer/brdf.c \
     's/pdf_cos_power(h, Ns) \/ (4\.0f \* wo_h)/pdf_cos_power(h, Ns)/' \
     test_sampling PATHLAB_FAST=1 'used the pdf of the half vector as the pdf of wi (no 1/(4 wo.h))'
-mutant cos-pdf-const src/sampling.c \
+mutant cos-pdf-const src/tracer/sampling.c \
     's/return w\.z > 0\.0f ? w\.z \* INV_PI_F : 0\.0f;/return w.z > 0.0f ? INV_PI_F : 0.0f;/' \
     test_sampling PATHLAB_FAST=1 'cosine-hemisphere pdf returned as 1/pi instead of cos(theta)/pi'
-mutant triangle-no-sqrt src/sampling.c \
+mutant triangle-no-sqrt src/tracer/sampling.c \
     's/float s = sqrtf(u1);/float s = u1;/' \
     test_sampling PATHLAB_FAST=1 'point on a triangle with b = u1 instead of sqrt(u1): not uniform'
 # ---- ray tracing ----
-mutant acne src/bvh.c \
+mutant acne src/geometry/bvh.c \
     's/return v3_madd(p, n, d);/(void)n; (void)d; return p;/' \
     test_bvh PATHLAB_TEST_QUICK=1 'no ray-origin offset: rays hit the surface they leave (acne)'
-mutant bvh-first-hit src/bvh.c \
+mutant bvh-first-hit src/geometry/bvh.c \
     's/^\( *\)tcull = tmax \* BVH_T_WIDEN;$/&\n\1if (best) goto done;/' \
     test_bvh PATHLAB_TEST_QUICK=1 'BVH traversal stops at the first leaf hit, not the closest hit'
-mutant bvh-child-slot src/bvh.c \
+mutant bvh-child-slot src/geometry/bvh.c \
     '/^static inline unsigned node_hits/,/^}/s/i < BVH_WIDTH; i++/i < BVH_WIDTH - 1; i++/' \
     test_bvh PATHLAB_TEST_QUICK=1 'box test loop off by one: the last child of each node is never entered'

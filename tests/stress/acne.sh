@@ -9,8 +9,8 @@
 # faces the corner nearest the origin (32x32, 1024 spp, fov 90).
 #
 # pathlab has no switch to turn its ray offsets off, so this script builds two variants of the
-# program in a temporary folder from the repository's src/ (never from a copy it keeps): bvh.c is
-# compiled with offset_ray_origin renamed, and one more file gives offset_ray_origin either as
+# program in a temporary folder from the repository's src/ (never from a copy it keeps): the file that defines
+# offset_ray_origin is compiled with it renamed, and one more file gives offset_ray_origin either as
 # "no offset" (the origin is the hit point) or as "fixed epsilon" (1e-4 along the normal, the usual
 # first try). Their figures are information; the test is on the program under test ($PATHLAB):
 # with its robust offsets the furnace must stay at 2 within 0.1% at every scale (the standard error
@@ -37,17 +37,17 @@ build_variant() {   # name body
     local d=$ACNE_TMP/$1 f ok=0
     mkdir -p "$d"
     cat > "$d/origin.c" <<EOF
-/* acne.sh variant "$1" of offset_ray_origin, linked instead of src/bvh.c's */
-#include "bvh.h"
+/* acne.sh variant "$1" of offset_ray_origin, linked instead of src/geometry/bvh.c's */
+#include "$ORIGIN_H"
 $PROTO
 {
     $2
 }
 EOF
     local flags="-std=c99 -O2 -D_POSIX_C_SOURCE=200809L -Isrc"
-    for f in src/*.c; do
+    for f in src/*/*.c; do
         case $f in
-            src/bvh.c) echo "$CC $flags -Doffset_ray_origin=offset_ray_origin_robust -c -o $d/bvh.o $f" ;;
+            "src/$ORIGIN_C") echo "$CC $flags -Doffset_ray_origin=offset_ray_origin_robust -c -o $d/$(basename "$f" .c).o $f" ;;
             *) echo "$CC $flags -c -o $d/$(basename "$f" .c).o $f" ;;
         esac
     done > "$d/cmds"
@@ -56,9 +56,12 @@ EOF
        $CC -o "$d/pathlab" "$d"/*.o -lm -lpthread >> "$d/log" 2>&1; then ok=1; fi
     [ $ok = 1 ] || { echo "FAIL acne: could not build the '$1' variant: $(head -c 400 "$d/log")"; return 1; }
 }
-# the prototype as src/bvh.h declares it (its parameters must include vec3 p and vec3 n)
-PROTO=$(grep -o 'vec3 offset_ray_origin([^)]*)' src/bvh.h | head -n 1)
-case $PROTO in *"vec3 p,"*"vec3 n"*) ;; *) echo "FAIL acne: src/bvh.h declares no offset_ray_origin(vec3 p, vec3 n, ...): '$PROTO'"; PROTO="" ;; esac
+# the header that declares offset_ray_origin, the file that defines it (src/LAYER/NAME), and the
+# prototype as declared (its parameters must include vec3 p and vec3 n)
+ORIGIN_H=$(cd src && grep -l 'vec3 offset_ray_origin(' */*.h | head -n 1)
+ORIGIN_C=${ORIGIN_H%.h}.c
+PROTO=$(grep -o 'vec3 offset_ray_origin([^)]*)' "src/$ORIGIN_H" 2>/dev/null | head -n 1)
+case $PROTO in *"vec3 p,"*"vec3 n"*) ;; *) echo "FAIL acne: no header of src/ declares offset_ray_origin(vec3 p, vec3 n, ...): '$PROTO'"; PROTO="" ;; esac
 variants=""
 [ -n "$PROTO" ] && build_variant nooffset "(void)n; return p;" && variants="$variants nooffset"
 [ -n "$PROTO" ] && build_variant epsilon "return v3_madd(p, n, 1e-4f);" && variants="$variants epsilon"

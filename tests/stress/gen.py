@@ -12,7 +12,7 @@ Python 3 standard library only; everything is written into a temporary folder at
                                       over the whole image) up to noise? (z-fighting: energy plausible)
 
 Conventions of pathlab (README.md): f = Kd/pi + Ks (Ns+8)/(8 pi) cos^Ns(theta_h); emission on the
-front face n = (b - a) x (c - a) only; camera as in src/camera.c; PFM rows bottom to top.
+front face n = (b - a) x (c - a) only; camera as in src/scene/camera.c; PFM rows bottom to top.
 """
 import math
 import os
@@ -87,7 +87,7 @@ def read_pfm(path):
 
 
 # ---------------------------------------------------------------------------------------------
-# Camera (src/camera.c, in double)
+# Camera (src/scene/camera.c, in double)
 
 class Camera:
     def __init__(self, eye, target, up, fov, w, h):
@@ -339,7 +339,7 @@ def degenerate_furnace(d):
     to3 = lambda p: (p[0], p[1], 1.0)
     m.add("furnace", [facing(tuple(to3(p) for p in t), (0, 0, -1)) if orient(*t) != 0 else tuple(to3(p) for p in t)
                       for t in face + extra])
-    # what pathlab's parser keeps: |(b - a) x (c - a)| > 0 computed in binary32 (src/obj.c)
+    # what pathlab's parser keeps: |(b - a) x (c - a)| > 0 computed in binary32 (src/scene/obj.c)
     kept, dropped, dropped_nonzero = [], 0, 0
     for t in face + extra:
         a, b, c = [(f32(p[0]), f32(p[1]), 1.0) for p in t]

@@ -1,0 +1,203 @@
+/* check_sampling_cases.c — the cases of check-sampling with pathlab's routines, running them on
+ * threads, and their verdicts (check_sampling.h). */
+#include "check/check_sampling.h"
+#include "tracer/sampling.h"
+#include <pthread.h>
+#include <stdio.h>
+#include <string.h>
+
+#define PI 3.14159265358979323846
+#define MAX_THREADS 64
+
+/* ---------- pathlab's routines, in the form of the checks ---------- */
+
+static vec3 uniform_warp(float u1, float u2, float m) { (void)m; return sample_uniform_hemisphere(u1, u2); }
+static float uniform_pdf(vec3 w, float m) { (void)m; return pdf_uniform_hemisphere(w); }
+static double uniform_formula(double z, double m) { (void)z, (void)m; return 0.5 / PI; }
+static vec3 cosine_warp(float u1, float u2, float m) { (void)m; return sample_cosine_hemisphere(u1, u2); }
+static float cosine_pdf(vec3 w, float m) { (void)m; return pdf_cosine_hemisphere(w); }
+static double cosine_formula(double z, double m) { (void)m; return z / PI; }
+static double cos_power_formula(double z, double m) { return (m + 1.0) / (2.0 * PI) * pow(z, m); }
+
+material check_sampling_material(float kd, float ks, float Ns)
+{
+    material m;
+    memset(&m, 0, sizeof m);
+    m.Kd = v3(kd, 0.8f * kd, 0.6f * kd);
+    m.Ks = v3(ks, ks, ks);
+    m.Ns = Ns;
+    return m;
+}
+
+static sampling_case *add(sampling_case *c, int *n, int max, sampling_case_kind kind, const char *name)
+{
+    if (*n >= max) return NULL;
+    c += (*n)++;
+    memset(c, 0, sizeof *c);
+    c->kind = kind, c->share = 1.0;
+    snprintf(c->name, sizeof c->name, "%s", name);
+    c->brdf.sample = brdf_sample, c->brdf.pdf = brdf_pdf;
+    c->light.sample = light_sample_point, c->light.pdf = light_pdf_area;
+    return c;
+}
+
+static void add_warps(sampling_case *cases, int *n, int max)
+{
+    static const float m[] = {1.0f, 10.0f, 100.0f, 1e4f};
+    sampling_case *c;
+    char name[80];
+    int i;
+    if ((c = add(cases, n, max, CASE_WARP, "uniform_hemisphere")))
+        c->warp.sample = uniform_warp, c->warp.pdf = uniform_pdf, c->warp.formula = uniform_formula;
+    if ((c = add(cases, n, max, CASE_WARP, "cosine_hemisphere")))
+        c->warp.sample = cosine_warp, c->warp.pdf = cosine_pdf, c->warp.formula = cosine_formula;
+    for (i = 0; i < 4; i++) {   /* the Blinn half vector */
+        snprintf(name, sizeof name, "cos_power m=%g", m[i]);
+        if ((c = add(cases, n, max, CASE_WARP, name)))
+            c->warp.sample = sample_cos_power, c->warp.pdf = pdf_cos_power, c->warp.formula = cos_power_formula, c->warp.m = m[i];
+    }
+}
+
+/* glossy (ps = 1): the reflected direction alone; mixed: the mixture of both lobes */
+static void add_brdfs(sampling_case *cases, int *n, int max)
+{
+    static const float thetas[] = {0.0f, 30.0f, 60.0f, 80.0f, 89.0f};
+    static const struct { const char *name; float kd, ks, Ns; } mats[] = {
+        {"diffuse", 0.8f, 0.0f, 10.0f},           {"glossy Ns=1", 0.0f, 0.5f, 1.0f},
+        {"glossy Ns=10", 0.0f, 0.5f, 10.0f},      {"glossy Ns=100", 0.0f, 0.5f, 100.0f},
+        {"glossy Ns=1e4", 0.0f, 0.9f, 1e4f},      {"mixed Kd .5 Ks .3 Ns=10", 0.5f, 0.3f, 10.0f},
+        {"mixed Kd .2 Ks .6 Ns=1e4", 0.2f, 0.6f, 1e4f}};
+    sampling_case *c;
+    char name[80];
+    int i, j;
+    for (i = 0; i < 7; i++)
+        for (j = 0; j < 5; j++) {
+            snprintf(name, sizeof name, "brdf_sample %s, wo %g deg", mats[i].name, thetas[j]);
+            if (!(c = add(cases, n, max, CASE_BRDF, name))) continue;
+            c->share = 0.5;
+            c->brdf.mat = check_sampling_material(mats[i].kd, mats[i].ks, mats[i].Ns);
+            c->brdf.theta_deg = thetas[j], c->brdf.phi_o = 0.7f + (float)j;
+        }
+}
+
+static void add_lights(sampling_case *cases, int *n, int max)
+{
+    /* points p from which the triangle of LIGHT_SCENE_ONE subtends the solid angle named */
+    static const struct { const char *name; float p[3]; } one[] = {
+        {"solid-angle, Omega = 0.5 sr", {1.0f, 0.4f, 0.376f}},
+        {"solid-angle, Omega = 4e-4 sr (floor 3e-4)", {3.0f, 2.0f, 31.4f}},
+        {"solid-angle, Omega = 5.9 sr (ceiling 6)", {0.42f, 0.3f, 0.0202f}},
+        {"solid-angle, Omega = 2e-4 sr: by area", {3.0f, 2.0f, 44.6f}},
+        {"solid-angle, Omega = 6.1 sr: by area", {0.42f, 0.3f, 0.00963f}}};
+    sampling_case *c;
+    char name[80];
+    int st, i;
+    for (st = 0; st <= LIGHT_POWER; st++) {
+        snprintf(name, sizeof name, "light choice %s", light_strategy_name((light_strategy)st));
+        if ((c = add(cases, n, max, CASE_LIGHT_CHOICE, name))) c->light.st = (light_strategy)st;
+    }
+    if ((c = add(cases, n, max, CASE_LIGHT_POINT, "light_sample_point uniform on its triangle")))
+        c->light.st = LIGHT_TRIANGLE, c->light.grid = 8;
+    if ((c = add(cases, n, max, CASE_LIGHT_POINT, "solid-angle, 5 emitters seen from (1, 1, 2)")))
+        c->light.st = LIGHT_SOLID_ANGLE, c->light.grid = 8, c->light.p = v3(1, 1, 2);
+    for (i = 0; i < 5; i++)
+        if ((c = add(cases, n, max, CASE_LIGHT_POINT, one[i].name))) {
+            c->light.st = LIGHT_SOLID_ANGLE, c->light.grid = 16, c->light.scene = LIGHT_SCENE_ONE;
+            c->light.p = v3(one[i].p[0], one[i].p[1], one[i].p[2]);
+        }
+}
+
+int check_sampling_cases(sampling_case *cases, int max)
+{
+    int n = 0;
+    add_warps(cases, &n, max);
+    add_brdfs(cases, &n, max);
+    if (add(cases, &n, max, CASE_TRIANGLE, "sample_uniform_triangle")) cases[n - 1].triangle.sample = sample_uniform_triangle;
+    add_lights(cases, &n, max);
+    return n;
+}
+
+/* ---------- running them ---------- */
+
+void check_sampling_run(const sampling_case *c, long n, uint64_t seed, sampling_result *r)
+{
+    long m = (long)(c->share * (double)n);
+    memset(r, 0, sizeof *r);
+    snprintf(r->routine, sizeof r->routine, "%s", c->name);
+    switch (c->kind) {
+    case CASE_WARP: check_warp(&c->warp, m, seed, r); break;
+    case CASE_TRIANGLE: check_triangle(&c->triangle, m, seed, r); break;
+    case CASE_BRDF: check_brdf(&c->brdf, m, seed, r); break;
+    case CASE_LIGHT_CHOICE: check_light_choice(&c->light, m, seed, r); break;
+    case CASE_LIGHT_POINT: check_light_point(&c->light, m, seed, r); break;
+    }
+}
+
+/* splitmix64 of (seed, i): the seeds of different cases are unrelated */
+static uint64_t case_seed(uint64_t seed, int i)
+{
+    uint64_t z = seed + 0x9E3779B97F4A7C15ULL * (uint64_t)(i + 1);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return z ^ (z >> 31);
+}
+
+typedef struct {
+    const sampling_case *c;
+    sampling_result *r;
+    int ncases, next;
+    long n;
+    uint64_t seed;
+    pthread_mutex_t lock;
+} work;
+
+static void *worker(void *arg)
+{
+    work *w = arg;
+    for (;;) {
+        int i;
+        pthread_mutex_lock(&w->lock);
+        i = w->next++;
+        pthread_mutex_unlock(&w->lock);
+        if (i >= w->ncases) return NULL;
+        check_sampling_run(&w->c[i], w->n, case_seed(w->seed, i), &w->r[i]);
+    }
+}
+
+void check_sampling_run_all(const sampling_case *c, int ncases, long n, uint64_t seed, int threads, sampling_result *r)
+{
+    pthread_t tid[MAX_THREADS];
+    work w;
+    int t, started = 0;
+    w.c = c, w.r = r, w.ncases = ncases, w.next = 0, w.n = n, w.seed = seed;
+    pthread_mutex_init(&w.lock, NULL);
+    if (threads > MAX_THREADS) threads = MAX_THREADS;
+    for (t = 1; t < threads; t++)   /* this thread is one of the workers */
+        if (pthread_create(&tid[started], NULL, worker, &w) == 0) started++;
+    worker(&w);
+    for (t = 0; t < started; t++) pthread_join(tid[t], NULL);
+    pthread_mutex_destroy(&w.lock);
+}
+
+/* ---------- the verdicts ---------- */
+
+int sampling_chi2_pass(const sampling_result *r, double alpha_case) { return r->chi2.p >= alpha_case; }
+
+int sampling_integral_pass(const sampling_result *r, int k)
+{
+    return fabs(r->integral[k] - r->integral_want[k]) < CHECK_INTEGRAL_TOL;
+}
+
+int sampling_pdf_pass(const sampling_result *r)
+{
+    return r->pdf_mismatch == 0 && (!r->has_formula || r->formula_gap <= r->formula_tol);
+}
+
+int sampling_samples_pass(const sampling_result *r) { return r->outside == 0 && (!r->has_geom || r->geom_gap <= r->geom_tol); }
+
+int sampling_result_pass(const sampling_result *r, double alpha_case)
+{
+    int k, ok = sampling_chi2_pass(r, alpha_case) && sampling_pdf_pass(r) && sampling_samples_pass(r);
+    for (k = 0; k < r->nintegrals; k++) ok &= sampling_integral_pass(r, k);
+    return ok;
+}

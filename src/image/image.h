@@ -1,0 +1,23 @@
+/* image.h — linear RGB float images and their files.
+ * PFM: little-endian (scale -1) on write, rows bottom to top; read also big-endian and greyscale Pf.
+ * PPM: P6, 8 bits, exposure (x 2^stops) then the sRGB curve. PNG: the same bytes as the PPM, in an
+ * 8-bit RGB PNG with stored (uncompressed) deflate blocks. Writes are atomic: a temporary file
+ * in the same folder, renamed over the target only when complete. */
+#ifndef PATHLAB_IMAGE_H
+#define PATHLAB_IMAGE_H
+#include "math/vec.h"
+
+typedef struct { int w, h; float *px; } image;   /* px: 3 floats per pixel, row 0 = top row */
+
+int img_alloc(image *im, int w, int h);          /* zero-filled; 0 on success */
+void img_free(image *im);
+/* Writes by extension (.pfm, .ppm or .png, any case); prints "path: reason" on stderr and returns nonzero on error. */
+int img_write(const image *im, const char *path, float exposure);
+int img_write_pfm(const image *im, const char *path);
+int img_write_ppm(const image *im, const char *path, float exposure);
+int img_write_png(const image *im, const char *path, float exposure);
+/* Reads a PFM (PF or Pf, either endianness); on error prints "path: reason" and returns nonzero. */
+int img_read_pfm(image *im, const char *path);
+/* Linear [0,1] -> sRGB-encoded [0,1]. */
+float srgb_encode(float linear);
+#endif

@@ -1,0 +1,32 @@
+/* camera.h — pinhole camera and the scene's view file.
+ * A view file (SCENE.view beside SCENE.obj) has one key per line, '#' starts a comment:
+ *   eye X Y Z / target X Y Z / up X Y Z / fov DEGREES (vertical) / size W H
+ * Missing keys keep their defaults; without eye and target the camera frames the scene bounds. */
+#ifndef PATHLAB_CAMERA_H
+#define PATHLAB_CAMERA_H
+#include "geometry/bvh.h"
+
+typedef struct {
+    vec3 eye, target, up;
+    float fov;                 /* vertical field of view, degrees */
+    int width, height;
+    int has_eye, has_target;   /* set by a view file or a flag */
+} view;
+
+typedef struct {
+    vec3 eye, w, u, v;         /* w forward; u, v span the image plane at distance 1 */
+    int width, height;
+} camera;
+
+/* Defaults: up (0,1,0), fov 40, 512x512, no eye nor target. */
+void view_defaults(view *vw);
+/* Reads a view file into vw. Returns 0 on success, -1 if the file does not exist (not an error),
+ * 1 after printing "file:line: message" for a malformed file. */
+int view_read(view *vw, const char *path);
+/* Fills in eye and target from the scene bounds where no file or flag gave them. */
+void view_frame_bounds(view *vw, vec3 lo, vec3 hi);
+/* Checks a view and makes the camera; 1 after printing an error (e.g. eye == target). */
+int camera_init(camera *c, const view *vw);
+/* The ray through image position (x, y) in pixels, (0,0) the top-left corner of the image. */
+ray camera_ray(const camera *c, float x, float y);
+#endif

@@ -1,0 +1,31 @@
+/* mesh.h — the scene as the parser leaves it: triangles, their vertices and their materials.
+ * Triangle i has corners P[tri[3i]], P[tri[3i+1]], P[tri[3i+2]] in counter-clockwise order; its
+ * front face (the emitting side, the side the geometric normal points to) is given by that winding:
+ * n = normalize((b - a) x (c - a)). */
+#ifndef PATHLAB_MESH_H
+#define PATHLAB_MESH_H
+#include "math/vec.h"
+
+/* The course's BRDF: f = Kd/pi + Ks (Ns+8)/(8 pi) cos^Ns(theta_h); Ke is emitted radiance. */
+typedef struct {
+    char name[128];
+    vec3 Kd, Ks, Ke;
+    float Ns;
+} material;
+
+typedef struct {
+    vec3 *P;            /* vertex positions, nverts */
+    int nverts;
+    int *tri;           /* 3 vertex indices per triangle, ntris */
+    int *tri_mat;       /* material index per triangle */
+    int ntris;
+    material *mats;     /* mats[0] is the default diffuse material for faces without usemtl */
+    int nmats;
+    int ndegenerate;    /* triangles of zero area dropped at load time */
+    int nnormals, ntexcoords; /* vn / vt lines read (validated, not used for shading) */
+} mesh;
+
+void mesh_free(mesh *m);
+/* Bounds of the vertices used by triangles. */
+void mesh_bounds(const mesh *m, vec3 *lo, vec3 *hi);
+#endif

@@ -1,0 +1,103 @@
+/* mtl.c — the Wavefront MTL reader declared in mtl.h. Only what the course's BRDF uses is read
+ * (Kd, Ks, Ns, Ke); every other key is accepted and reported once per file as ignored. */
+#include "scene/mtl.h"
+#include "scene/objtext.h"
+#include <stdlib.h>
+#include <string.h>
+
+int mtl_find(const mesh *m, const char *name)
+{
+    int i;
+    for (i = m->nmats - 1; i >= 0; i--)
+        if (strcmp(m->mats[i].name, name) == 0) return i;
+    return -1;
+}
+
+/* Appends a material with every value zero: an absent key means zero (see obj.h). Materials are
+ * few, so the array grows one at a time. */
+static int new_material(mesh *m, const objtext *t, const char *name)
+{
+    material *mats;
+    if (strlen(name) >= sizeof mats->name)
+        return objtext_fail(t, "material name longer than %d characters", (int)sizeof mats->name - 1);
+    if (mtl_find(m, name) > 0)
+        objtext_warn(t, t->line, "material '%s' defined again; the later one wins", name);
+    if (!(mats = realloc(m->mats, ((size_t)m->nmats + 1) * sizeof *mats)))
+        return objtext_fail(t, "out of memory");
+    m->mats = mats;
+    memset(&mats[m->nmats], 0, sizeof *mats);
+    strcpy(mats[m->nmats++].name, name);
+    return 1;
+}
+
+/* "Kd r g b", or "Kd g" for grey; negative values are refused. */
+static int read_color(const objtext *t, char *s, const char *kw, vec3 *c)
+{
+    float v[3];
+    int n = objtext_numbers(t, &s, kw, v, 1, 3);
+    if (n < 0) return 0;
+    if (n == 2) return objtext_fail(t, "'%s' needs 1 (grey) or 3 numbers (r g b), found 2", kw);
+    if (n == 1) v[1] = v[2] = v[0];
+    if (v[0] < 0 || v[1] < 0 || v[2] < 0) return objtext_fail(t, "negative value in '%s'", kw);
+    *c = v3(v[0], v[1], v[2]);
+    return 1;
+}
+
+/* A surface reflecting more light than it receives makes the path tracer's estimates grow. */
+static void check_energy(const objtext *t, const material *mat, int line)
+{
+    float most = v3_max_comp(v3_add(mat->Kd, mat->Ks));
+    if (most > 1.0f)
+        objtext_warn(t, line, "material '%s' has Kd + Ks = %g > 1: it creates energy", mat->name, most);
+}
+
+/* One statement other than newmtl, for material mat (NULL before the first newmtl). */
+static int statement(objtext *t, const char *kw, char *s, material *mat)
+{
+    float ns;
+    int used = !strcmp(kw, "Kd") || !strcmp(kw, "Ks") || !strcmp(kw, "Ke") || !strcmp(kw, "Ns");
+    if (!used) {
+        if (objtext_first_time(t, kw))
+            objtext_warn(t, 0, "ignoring MTL key '%s' (pathlab uses Kd, Ks, Ns, Ke)", kw);
+        return 1;
+    }
+    if (!mat) return objtext_fail(t, "'%s' before the first newmtl", kw);
+    if (strcmp(kw, "Kd") == 0) return read_color(t, s, kw, &mat->Kd);
+    if (strcmp(kw, "Ks") == 0) return read_color(t, s, kw, &mat->Ks);
+    if (strcmp(kw, "Ke") == 0) return read_color(t, s, kw, &mat->Ke);
+    if (objtext_numbers(t, &s, kw, &ns, 1, 1) < 0) return 0;
+    if (ns < 0) return objtext_fail(t, "negative value in 'Ns'");
+    mat->Ns = ns;
+    return 1;
+}
+
+/* The energy check of a material runs when it is complete: at the next newmtl or at the end. */
+static int parse(objtext *t, mesh *m)
+{
+    int first = m->nmats, mat_line = 0; /* materials of this file start at index first */
+    char *s, *kw;
+    while ((s = objtext_line(t))) {
+        material *cur = m->nmats > first ? &m->mats[m->nmats - 1] : NULL;
+        if (!(kw = objtext_word(&s))) continue;
+        if (strcmp(kw, "newmtl") != 0) {
+            if (!statement(t, kw, s, cur)) return 0;
+            continue;
+        }
+        if (cur) check_energy(t, cur, mat_line);
+        if (!new_material(m, t, objtext_rest(s))) return 0;
+        mat_line = t->line;
+    }
+    if (t->oom) return objtext_fail(t, "out of memory");
+    if (m->nmats > first) check_energy(t, &m->mats[m->nmats - 1], mat_line);
+    return 1;
+}
+
+int mtl_load(const char *path, mesh *m, int quiet)
+{
+    objtext t;
+    int err = objtext_open(&t, path, quiet), ok;
+    if (err) return err;
+    ok = objtext_check(&t) && parse(&t, m);
+    objtext_close(&t);
+    return ok ? 0 : -1;
+}

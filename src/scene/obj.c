@@ -1,0 +1,389 @@
+/* obj.c — the Wavefront OBJ reader declared in obj.h.
+ * Lines come from objtext.c (comments, CR, '\' continuations, no length limit) and MTL files from
+ * mtl.c, read when their mtllib line is. Polygons are triangulated by ear clipping in their
+ * best-fit plane, keeping the winding of the file. */
+#include "scene/obj.h"
+#include "scene/mtl.h"
+#include "scene/objtext.h"
+#include <limits.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* One corner of the polygon being ear-clipped: its projection and its neighbours still left. */
+typedef struct { double x, y; int prev, next; } corner;
+
+typedef struct {
+    mesh *m;
+    objtext *obj;              /* the OBJ file being read: mtllib paths and messages refer to it */
+    size_t capP, capT;         /* allocated vertices, triangles */
+    int cur_mat;               /* material of the faces that follow */
+    char **libs;               /* paths of the mtllib files read so far */
+    int nlibs;
+    int *face;                 /* vertex indices of the face being read */
+    size_t capface;
+    corner *poly;              /* scratch of the ear clipper */
+    size_t cappoly;
+} loader;
+
+/* Returns arr with room for need items of size bytes (*cap updated), or NULL when out of memory,
+ * in which case arr is still valid and owned by the caller. */
+static void *grow(void *arr, size_t *cap, size_t need, size_t size)
+{
+    size_t n = *cap ? *cap : 16;
+    void *bigger;
+    if (need <= *cap) return arr;
+    while (n < need) n *= 2;
+    if (n > SIZE_MAX / size) return NULL;
+    bigger = realloc(arr, n * size);
+    if (bigger) *cap = n;
+    return bigger;
+}
+
+/* ---- triangles and polygons ---- */
+
+/* Appends triangle (a, b, c) in that order, unless its area is zero: those are dropped and
+ * counted, since they can't be hit and have no normal. The area is judged as users compute the
+ * normal, |(b - a) x (c - a)| in float, so that normalizing it never divides by 0 or inf. */
+static int add_triangle(loader *L, int a, int b, int c)
+{
+    mesh *m = L->m;
+    float len = v3_length(v3_cross(v3_sub(m->P[b], m->P[a]), v3_sub(m->P[c], m->P[a])));
+    size_t old = L->capT;
+    int *tri, *mat;
+    if (!(len > 0.0f) || !isfinite(len)) {
+        m->ndegenerate++;
+        return 1;
+    }
+    if (m->ntris >= INT_MAX / 3) return objtext_fail(L->obj, "too many triangles");
+    if (!(mat = grow(m->tri_mat, &L->capT, (size_t)m->ntris + 1, sizeof *mat))) goto oom;
+    m->tri_mat = mat;
+    if (L->capT != old) { /* tri follows tri_mat's capacity, 3 ints per triangle */
+        if (!(tri = realloc(m->tri, 3 * L->capT * sizeof *tri))) goto oom;
+        m->tri = tri;
+    }
+    tri = m->tri;
+    tri[3 * m->ntris] = a;
+    tri[3 * m->ntris + 1] = b;
+    tri[3 * m->ntris + 2] = c;
+    mat[m->ntris++] = L->cur_mat;
+    return 1;
+oom:
+    return objtext_fail(L->obj, "out of memory");
+}
+
+/* Twice the signed area of 2D triangle (a, b, c), positive when it turns counter-clockwise. */
+static double orient(const corner *a, const corner *b, const corner *c)
+{
+    return (b->x - a->x) * (c->y - a->y) - (b->y - a->y) * (c->x - a->x);
+}
+
+static int same_point(const corner *a, const corner *b) { return a->x == b->x && a->y == b->y; }
+
+/* Whether collinear corner c lies strictly between p and n: a straight angle. */
+static int straight(const corner *p, const corner *c, const corner *n)
+{
+    return (c->x - p->x) * (n->x - c->x) + (c->y - p->y) * (n->y - c->y) > 0;
+}
+
+/* Whether corner c (between p and n) is an ear: convex, with no other corner in its triangle.
+ * sign makes the polygon counter-clockwise. A repeated point (a polygon touching itself) does
+ * not block. A zero-area corner is cut (the triangle is dropped) if it is a repeated point or a
+ * spike; a straight one stays until it is a corner of some triangle: cutting it would leave a
+ * T-junction, where rays may slip through a crack between triangles. */
+static int is_ear(const corner *poly, int p, int c, int n, double sign)
+{
+    double area = sign * orient(&poly[p], &poly[c], &poly[n]);
+    int v;
+    if (area < 0) return 0; /* reflex */
+    if (area == 0) return !straight(&poly[p], &poly[c], &poly[n]);
+    for (v = poly[n].next; v != p; v = poly[v].next) {
+        const corner *q = &poly[v];
+        if (same_point(q, &poly[p]) || same_point(q, &poly[c]) || same_point(q, &poly[n])) continue;
+        if (sign * orient(&poly[p], &poly[c], q) >= 0 && sign * orient(&poly[c], &poly[n], q) >= 0
+            && sign * orient(&poly[n], &poly[p], q) >= 0)
+            return 0;
+    }
+    return 1;
+}
+
+/* Cuts ears off polygon L->face[0..n) until one triangle is left; each triangle keeps the
+ * polygon's order of corners, hence its winding. Each ear test costs O(n), and ears are usually
+ * found at once. A polygon without ears (it crosses itself) is finished with any convex corner,
+ * then with any corner: a full turn without a cut lowers the level, so the loop always ends. */
+static int clip_ears(loader *L, int n, double sign)
+{
+    corner *poly = L->poly;
+    int left = n, c = 0, tries = 0, level = 2; /* 2: true ears, 1: convex corners, 0: anything */
+    while (left > 3) {
+        int p = poly[c].prev, nx = poly[c].next;
+        int ok = level == 2 ? is_ear(poly, p, c, nx, sign)
+               : level == 1 ? sign * orient(&poly[p], &poly[c], &poly[nx]) >= 0 : 1;
+        if (ok) {
+            if (!add_triangle(L, L->face[p], L->face[c], L->face[nx])) return 0;
+            poly[p].next = nx;
+            poly[nx].prev = p;
+            left--;
+            tries = 0;
+        } else if (++tries > left) {
+            level--;
+            tries = 0;
+        }
+        c = nx;
+    }
+    return add_triangle(L, L->face[poly[c].prev], L->face[c], L->face[poly[c].next]);
+}
+
+/* Triangulates the face L->face[0..n). The polygon is projected on the coordinate plane most
+ * facing its Newell normal (a best-fit normal that also works for concave and warped polygons);
+ * the two kept axes are a cyclic pair, so the 2D winding has the sign of that normal component. */
+static int triangulate(loader *L, int n)
+{
+    const vec3 *P = L->m->P;
+    const int *f = L->face;
+    double nrm[3] = {0, 0, 0};
+    corner *poly;
+    int i, axis;
+    if (n == 3) return add_triangle(L, f[0], f[1], f[2]);
+    if (!(poly = grow(L->poly, &L->cappoly, (size_t)n, sizeof *poly)))
+        return objtext_fail(L->obj, "out of memory");
+    L->poly = poly;
+    for (i = 0; i < n; i++) {
+        vec3 a = P[f[i]], b = P[f[(i + 1) % n]];
+        nrm[0] += ((double)a.y - b.y) * ((double)a.z + b.z);
+        nrm[1] += ((double)a.z - b.z) * ((double)a.x + b.x);
+        nrm[2] += ((double)a.x - b.x) * ((double)a.y + b.y);
+    }
+    axis = fabs(nrm[0]) > fabs(nrm[1]) ? (fabs(nrm[0]) > fabs(nrm[2]) ? 0 : 2)
+                                      : (fabs(nrm[1]) > fabs(nrm[2]) ? 1 : 2);
+    for (i = 0; i < n; i++) {
+        poly[i].x = v3_comp(P[f[i]], (axis + 1) % 3);
+        poly[i].y = v3_comp(P[f[i]], (axis + 2) % 3);
+        poly[i].prev = (i + n - 1) % n;
+        poly[i].next = (i + 1) % n;
+    }
+    return clip_ears(L, n, nrm[axis] < 0 ? -1.0 : 1.0);
+}
+
+/* ---- OBJ statements ---- */
+
+/* Reads an optionally signed decimal integer at *s and advances *s; 0 if there is none. Values
+ * saturate far beyond any valid index, so that huge ones are reported as out of range. */
+static int read_int(const char **s, long long *out)
+{
+    const char *p = *s;
+    long long v = 0;
+    int neg = *p == '-';
+    if (*p == '-' || *p == '+') p++;
+    if (*p < '0' || *p > '9') return 0;
+    for (; *p >= '0' && *p <= '9'; p++)
+        if (v < 10000000000LL) v = 10 * v + (*p - '0');
+    *out = neg ? -v : v;
+    *s = p;
+    return 1;
+}
+
+/* Turns an OBJ index (1-based, or negative: counted back from the latest) into a 0-based one. */
+static int resolve(const objtext *t, long long i, int count, const char *what, int *out)
+{
+    long long r = i > 0 ? i - 1 : count + i;
+    if (i == 0) return objtext_fail(t, "%s index 0 (OBJ indices start at 1)", what);
+    if (r < 0 || r >= count)
+        return objtext_fail(t, "%s index %lld out of range (%d defined so far)", what, i, count);
+    *out = (int)r;
+    return 1;
+}
+
+/* Reads one face corner "v", "v/t", "v/t/n" or "v//n" and checks all its indices; *vi gets v. */
+static int read_corner(loader *L, const char *w, int *vi)
+{
+    const objtext *t = L->obj;
+    const mesh *m = L->m;
+    const char *s = w;
+    long long v, vt = 0, vn = 0;
+    int ok = read_int(&s, &v), has_vt = 0, has_vn = 0, unused;
+    if (ok && *s == '/' && *++s != '/') ok = has_vt = read_int(&s, &vt);
+    if (ok && *s == '/') {
+        s++;
+        ok = has_vn = read_int(&s, &vn);
+    }
+    if (!ok || *s != '\0') return objtext_fail(t, "bad face corner '%s' (expected v, v/t, v/t/n or v//n)", w);
+    return resolve(t, v, m->nverts, "vertex", vi)
+        && (!has_vt || resolve(t, vt, m->ntexcoords, "texture coordinate", &unused))
+        && (!has_vn || resolve(t, vn, m->nnormals, "normal", &unused));
+}
+
+static int read_face(loader *L, char *s)
+{
+    char *w;
+    int n = 0, *face;
+    while ((w = objtext_word(&s))) {
+        if (!(face = grow(L->face, &L->capface, (size_t)n + 1, sizeof *face)))
+            return objtext_fail(L->obj, "out of memory");
+        L->face = face;
+        if (!read_corner(L, w, &face[n++])) return 0;
+    }
+    if (n < 3) return objtext_fail(L->obj, "face with %d vertices (needs at least 3)", n);
+    return triangulate(L, n);
+}
+
+static int read_vertex(loader *L, char *s)
+{
+    mesh *m = L->m;
+    float v[6]; /* x y z, then w or r g b, which are checked and ignored */
+    vec3 *P;
+    if (objtext_numbers(L->obj, &s, "v", v, 3, 6) < 0) return 0;
+    if (m->nverts == INT_MAX) return objtext_fail(L->obj, "too many vertices");
+    if (!(P = grow(m->P, &L->capP, (size_t)m->nverts + 1, sizeof *P)))
+        return objtext_fail(L->obj, "out of memory");
+    m->P = P;
+    P[m->nverts++] = v3(v[0], v[1], v[2]);
+    return 1;
+}
+
+/* "usemtl name". Without any mtllib there is nothing to look the name up in (exporters write
+ * "usemtl Default" alone): the default material is used, with a warning. */
+static int use_material(loader *L, const char *name)
+{
+    objtext *t = L->obj;
+    int i = mtl_find(L->m, name);
+    if (i >= 0) { L->cur_mat = i; return 1; }
+    if (L->nlibs > 0)
+        return objtext_fail(t, "unknown material '%s' (no newmtl of that name in the mtllib files read so far)",
+                            name);
+    if (objtext_first_time(t, "usemtl"))
+        objtext_warn(t, t->line, "usemtl '%s' but no mtllib before it: using the default material", name);
+    L->cur_mat = 0;
+    return 1;
+}
+
+static int load_mtl(loader *L, const char *name);
+
+/* One OBJ statement: keyword kw, the rest of the line in s. */
+static int statement(loader *L, const char *kw, char *s)
+{
+    objtext *t = L->obj;
+    float v[3];
+    char *name;
+    int n = 0;
+    if (strcmp(kw, "v") == 0) return read_vertex(L, s);
+    if (strcmp(kw, "f") == 0) return read_face(L, s);
+    if (strcmp(kw, "vn") == 0 || strcmp(kw, "vt") == 0) {
+        if (objtext_numbers(t, &s, kw, v, kw[1] == 'n' ? 3 : 1, 3) < 0) return 0;
+        if (kw[1] == 'n') L->m->nnormals++;
+        else L->m->ntexcoords++;
+        return 1;
+    }
+    if (strcmp(kw, "usemtl") == 0) return use_material(L, objtext_rest(s));
+    if (strcmp(kw, "mtllib") == 0) {
+        for (; (name = objtext_word(&s)); n++)
+            if (!load_mtl(L, name)) return 0;
+        if (n == 0) return objtext_fail(t, "mtllib without a file name");
+        return 1;
+    }
+    /* object and group names, smoothing groups: nothing to render */
+    if (strcmp(kw, "o") == 0 || strcmp(kw, "g") == 0 || strcmp(kw, "s") == 0) return 1;
+    if (strcmp(kw, "l") == 0 || strcmp(kw, "p") == 0) {
+        if (objtext_first_time(t, "l"))
+            objtext_warn(t, t->line, "ignoring points and lines ('p', 'l'): pathlab renders faces");
+    } else if (objtext_first_time(t, kw)) {
+        objtext_warn(t, t->line, "ignoring unknown keyword '%s'", kw);
+    }
+    return 1;
+}
+
+/* ---- the whole file ---- */
+
+/* The path of file name, relative to the folder of file `from` unless it is absolute. */
+static char *sibling_path(const char *from, const char *name)
+{
+    const char *slash = strrchr(from, '/');
+    size_t dir = name[0] == '/' || !slash ? 0 : (size_t)(slash - from) + 1;
+    char *path = malloc(dir + strlen(name) + 1);
+    if (!path) return NULL;
+    memcpy(path, from, dir);
+    strcpy(path + dir, name);
+    return path;
+}
+
+/* Reads MTL file name, relative to the OBJ's folder; its materials are then usable. A file read
+ * already is skipped: some exporters repeat the mtllib line before every object. */
+static int load_mtl(loader *L, const char *name)
+{
+    char *path = sibling_path(L->obj->path, name), **libs;
+    int i, err;
+    for (i = 0; path && i < L->nlibs; i++)
+        if (strcmp(L->libs[i], path) == 0) {
+            free(path);
+            return 1;
+        }
+    if (!path || !(libs = realloc(L->libs, ((size_t)L->nlibs + 1) * sizeof *libs))) {
+        free(path);
+        return objtext_fail(L->obj, "out of memory");
+    }
+    L->libs = libs;
+    L->libs[L->nlibs++] = path;
+    err = mtl_load(path, L->m, L->obj->quiet);
+    if (err > 0) return objtext_fail(L->obj, "cannot open '%s': %s", name, strerror(err));
+    return err == 0;
+}
+
+static int add_default_material(mesh *m)
+{
+    if (!(m->mats = calloc(1, sizeof *m->mats))) return 0;
+    strcpy(m->mats[0].name, "(default)");
+    m->mats[0].Kd = v3(0.5f, 0.5f, 0.5f);
+    m->nmats = 1;
+    return 1;
+}
+
+/* Checks that something is left to render and gives the arrays back their unused room. */
+static int finish(loader *L)
+{
+    mesh *m = L->m;
+    objtext *t = L->obj;
+    void *fit;
+    t->line = 0; /* messages about the whole file */
+    if (m->ntris == 0 && m->ndegenerate > 0)
+        return objtext_fail(t, "no triangles: all %d had zero area", m->ndegenerate);
+    if (m->ntris == 0) return objtext_fail(t, "no triangles (no faces with 3 or more vertices)");
+    if (m->ndegenerate > 0) objtext_warn(t, 0, "dropped %d triangles of zero area", m->ndegenerate);
+    if ((fit = realloc(m->P, (size_t)m->nverts * sizeof *m->P))) m->P = fit;
+    if ((fit = realloc(m->tri, 3 * (size_t)m->ntris * sizeof *m->tri))) m->tri = fit;
+    if ((fit = realloc(m->tri_mat, (size_t)m->ntris * sizeof *m->tri_mat))) m->tri_mat = fit;
+    return 1;
+}
+
+static int parse(loader *L)
+{
+    objtext *t = L->obj;
+    char *s, *kw;
+    if (!add_default_material(L->m)) return objtext_fail(t, "out of memory");
+    while ((s = objtext_line(t)))
+        if ((kw = objtext_word(&s)) && !statement(L, kw, s)) return 0;
+    if (t->oom) return objtext_fail(t, "out of memory");
+    return finish(L);
+}
+
+int obj_load(const char *path, mesh *m, int quiet)
+{
+    objtext t;
+    loader L;
+    int err, ok = 0, i;
+    memset(m, 0, sizeof *m);
+    memset(&L, 0, sizeof L);
+    L.m = m;
+    L.obj = &t;
+    if ((err = objtext_open(&t, path, quiet)))
+        fprintf(stderr, "%s: cannot open: %s\n", path, strerror(err));
+    else
+        ok = objtext_check(&t) && parse(&L);
+    objtext_close(&t);
+    free(L.face);
+    free(L.poly);
+    for (i = 0; i < L.nlibs; i++) free(L.libs[i]);
+    free(L.libs);
+    if (!ok) mesh_free(m);
+    return ok ? 0 : 1;
+}

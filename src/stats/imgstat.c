@@ -1,0 +1,85 @@
+/* imgstat.c — Z-tests between renders with known per-pixel variances. */
+#include "stats/imgstat.h"
+#include <math.h>
+#include <string.h>
+
+double normal_quantile(double p)
+{
+    /* bisection on the cdf 0.5 erfc(-x / sqrt 2): slow but exact to double precision, and tests
+     * call it a handful of times */
+    double lo = -40.0, hi = 40.0;
+    int i;
+    for (i = 0; i < 200; i++) {
+        double mid = 0.5 * (lo + hi);
+        if (0.5 * erfc(-mid / sqrt(2.0)) < p) lo = mid; else hi = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+double sidak_zcrit(double alpha, long n)
+{
+    /* per-test level 1 - (1 - alpha)^(1/n), computed without cancellation */
+    double a1 = -expm1(log1p(-alpha) / (double)(n > 0 ? n : 1));
+    return normal_quantile(1.0 - 0.5 * a1);
+}
+
+static double zscore(double d, double var) { return var > 0.0 ? d / sqrt(var) : (d == 0.0 ? 0.0 : HUGE_VAL); }
+
+/* Float rounding, a few ulps of the values, is allowed on top of the noise: an estimator that is
+ * exact up to rounding (the BRDF-sampled furnace: every sample is a^k) has zero sample variance,
+ * and its last-bit differences must not count as bias. Rounding errors may all lean the same way,
+ * so over a block or the image their bounds add up linearly, not in quadrature. */
+#define ROUNDING 4e-7
+static double rounding(double a, double b) { return ROUNDING * (fabs(a) + fabs(b)); }
+
+static void block_test(zreport *r, const image *a, const image *va, const image *b, const image *vb, int B)
+{
+    int bx, by, ch, x, y, bw = a->w / B, bh = a->h / B;
+    r->nblocks = bw * bh * 3;
+    r->block_zcrit = sidak_zcrit(r->alpha, r->nblocks);
+    for (by = 0; by < bh; by++)
+        for (bx = 0; bx < bw; bx++)
+            for (ch = 0; ch < 3; ch++) {
+                double d = 0.0, v = 0.0, rsum = 0.0, z;
+                for (y = by * B; y < (by + 1) * B; y++)
+                    for (x = bx * B; x < (bx + 1) * B; x++) {
+                        size_t i = 3 * ((size_t)y * a->w + x) + ch;
+                        d += (double)a->px[i] - b->px[i];
+                        v += (double)va->px[i] + vb->px[i];
+                        rsum += rounding(a->px[i], b->px[i]);
+                    }
+                z = fabs(zscore(d, v + rsum * rsum));
+                if (z > r->block_zmax) r->block_zmax = z;
+                if (z > r->block_zcrit) r->nblocks_fail++;
+            }
+}
+
+int zreport_compute(zreport *r, const image *a, const image *va, const image *b, const image *vb,
+                    double alpha, int block)
+{
+    size_t i, n = (size_t)a->w * a->h;
+    double d[3] = {0, 0, 0}, v[3] = {0, 0, 0}, rs[3] = {0, 0, 0}, mb[3] = {0, 0, 0};
+    int ch;
+    memset(r, 0, sizeof *r);
+    if (a->w != b->w || a->h != b->h || va->w != a->w || va->h != a->h || vb->w != a->w || vb->h != a->h) return 1;
+    r->alpha = alpha;
+    r->npix = (int)(3 * n);
+    r->pixel_zcrit = sidak_zcrit(alpha, r->npix);
+    for (i = 0; i < 3 * n; i++) {
+        double di = (double)a->px[i] - b->px[i], vi = (double)va->px[i] + vb->px[i], ri = rounding(a->px[i], b->px[i]);
+        if (fabs(zscore(di, vi + ri * ri)) > r->pixel_zcrit) r->npix_fail++;
+        d[i % 3] += di;
+        v[i % 3] += vi;
+        rs[i % 3] += ri;
+        mb[i % 3] += b->px[i];
+    }
+    r->image_zcrit = sidak_zcrit(alpha, 3);
+    for (ch = 0; ch < 3; ch++) {
+        r->image_z[ch] = zscore(d[ch], v[ch] + rs[ch] * rs[ch]);
+        r->mean_diff[ch] = d[ch] / (double)n;
+        r->mean_sd[ch] = sqrt(v[ch] + rs[ch] * rs[ch]) / (double)n;
+        r->mean_b[ch] = mb[ch] / (double)n;
+    }
+    if (block > 0) block_test(r, a, va, b, vb, block);
+    return 0;
+}

@@ -1,0 +1,32 @@
+/* imgstat.h — is the difference between two renders noise or bias? Z-tests that use each pixel's
+ * variance of the mean (written by `render --variance`):
+ *   per pixel: z = (a - b) / sqrt(va + vb), |z| below the Sidak-corrected critical value;
+ *   per block: the same on the mean of B x B pixel blocks (averaging shrinks noise, not bias);
+ *   whole image: the same on the mean of all pixels, the most sensitive to a uniform bias.
+ * Pixels are independent (one random stream each), so block and image means are sums of
+ * independent terms and their variances add. */
+#ifndef PATHLAB_IMGSTAT_H
+#define PATHLAB_IMGSTAT_H
+#include "image/image.h"
+
+typedef struct {
+    double alpha;               /* family-wise significance level of each test */
+    int npix, npix_fail;        /* pixel-channels tested, and failing at the Sidak level */
+    double pixel_zcrit;
+    int nblocks, nblocks_fail;
+    double block_zcrit, block_zmax;
+    double image_z[3];          /* z of the whole-image mean difference, per channel */
+    double image_zcrit;
+    double mean_diff[3];        /* mean of a - b per channel */
+    double mean_sd[3];          /* its standard deviation (noise and rounding), per channel */
+    double mean_b[3];           /* mean of b per channel (for relative figures) */
+} zreport;
+
+/* Standard normal quantile: x with P(Z < x) = p. */
+double normal_quantile(double p);
+/* Two-sided critical |z| for n tests at family-wise level alpha (Sidak). */
+double sidak_zcrit(double alpha, long n);
+/* Runs the three tests; images must have the same size. Returns 0, or 1 if sizes differ. */
+int zreport_compute(zreport *r, const image *a, const image *va, const image *b, const image *vb,
+                    double alpha, int block);
+#endif

@@ -6,6 +6,7 @@
 #include "tracer/brdf.h"
 #include "check.h"
 #include "check/check_sampling.h"
+#include "stats/significance.h"
 #include "tracer/sampling.h"
 #include <stdlib.h>
 #include <string.h>
@@ -129,7 +130,7 @@ int main(void)
     double alpha_case;
     int n, i, threads = (int)sysconf(_SC_NPROCESSORS_ONLN);
     nall = check_sampling_cases(all, CHECK_MAX_CASES);
-    alpha_case = chi2_sidak(CHECK_ALPHA, nall);   /* the level of each case of check-sampling */
+    alpha_case = sidak_level(CHECK_ALPHA, nall);   /* the level of each case of check-sampling */
     n = breakages(b);
     for (i = 0; i < n; i++) cases[2 * i] = b[i].broken, cases[2 * i + 1] = b[i].control;
     check_sampling_run_all(cases, 2 * n, N_SAMPLES, SEED, threads, r);

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include "check.h"
 #include "cmd/grade.h"
+#include "stats/significance.h"
 #include "math/rng.h"
 
 /* The reference: a smooth picture from 0.05 to 1, exact (the truth). */

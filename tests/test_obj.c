@@ -2,6 +2,7 @@
  * with its "file:line: message", and every OBJ under ../shared/data (skipped if that is absent).
  * Run from the repository root: inputs are tests/obj/... and ../shared/data/... */
 #include "check.h"
+#include "sys/clock.h"
 #include "scene/obj.h"
 #include <math.h>
 #include <stdlib.h>
@@ -14,13 +15,6 @@
 #define MAXCORNERS 4096
 
 static char errbuf[1 << 16]; /* what the last load() printed on stderr */
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
 
 /* obj_load() with stderr captured into errbuf. */
 static int load(const char *path, mesh *m, int quiet)
@@ -190,9 +184,9 @@ static void test_polygon(const char *path, const char *label, int ntris, int pla
     char name[256];
     mesh m;
     int n = first_face(path, idx);
-    double t0 = now(), secs;
+    double t0 = clock_seconds(), secs;
     int r = load(path, &m, 1);
-    secs = now() - t0;
+    secs = clock_seconds() - t0;
     snprintf(name, sizeof name, "obj_polygon_%s_count", label);
     check(r == 0 && m.ntris == ntris && m.ndegenerate == 0, name,
           "%d corners into %d triangles: rc %d, %d triangles, %d dropped, %.3f s %s", n, ntris, r, m.ntris, m.ndegenerate, secs, shown());
@@ -475,10 +469,10 @@ static void test_edge_cases(void)
 
     /* 936 corners going round the same square 234 times: 2 triangles per round, the rest zero-area */
     {
-        double t0 = now();
+        double t0 = clock_seconds();
         r = load(EDGE("box_longline.obj"), &m, 1);
-        check(r == 0 && m.ntris == 478 && m.ndegenerate == 466 && now() - t0 < 0.5, "obj_936_sided_face",
-              "box_longline.obj: rc %d, %d triangles, %d dropped, %.3f s", r, m.ntris, m.ndegenerate, now() - t0);
+        check(r == 0 && m.ntris == 478 && m.ndegenerate == 466 && clock_seconds() - t0 < 0.5, "obj_936_sided_face",
+              "box_longline.obj: rc %d, %d triangles, %d dropped, %.3f s", r, m.ntris, m.ndegenerate, clock_seconds() - t0);
         mesh_free(&m);
     }
     r = load(EDGE("box_mat_with_spaces.obj"), &m, 1);
@@ -541,16 +535,16 @@ static void test_mcguire(void)
 static void test_meshes(void)
 {
     mesh m;
-    double t0 = now();
+    double t0 = clock_seconds();
     int r = load(DATA "/meshes/bunny.obj", &m, 1);
     check(r == 0 && m.ntris == 69451 && m.ndegenerate == 0 && m.nverts == 35947, "obj_bunny",
-          "69451 triangles: rc %d, %d triangles, %.3f s", r, m.ntris, now() - t0);
+          "69451 triangles: rc %d, %d triangles, %.3f s", r, m.ntris, clock_seconds() - t0);
     mesh_free(&m);
-    t0 = now();
+    t0 = clock_seconds();
     r = load(DATA "/meshes/dragon.obj", &m, 1);
     check(r == 0 && m.ntris + m.ndegenerate == 871414 && m.ndegenerate == 108 && m.nverts == 437645,
           "obj_dragon", "871414 faces, of which 108 zero-area: rc %d, %d triangles + %d dropped, loaded in %.3f s",
-          r, m.ntris, m.ndegenerate, now() - t0);
+          r, m.ntris, m.ndegenerate, clock_seconds() - t0);
     mesh_free(&m);
 }
 

@@ -16,6 +16,7 @@
 #include "tracer/brdf.h"
 #include "check.h"
 #include "check/check_sampling.h"
+#include "stats/significance.h"
 #include "check/chi2_sphere.h"
 #include "tracer/light.h"
 #include "math/rng.h"
@@ -268,7 +269,7 @@ static void test_many_emitters(void)
                 sum_p += claimed;
                 prev = next;
             }
-            snprintf(name, sizeof name, "300000 emitters, %s: pick probabilities = pdf x area", light_strategy_name((light_strategy)st));
+            snprintf(name, sizeof name, "300000 emitters, %s: pick probabilities = pdf x area", LIGHT_STRATEGY_NAMES[st]);
             check(worst <= 1.0 && fabs(sum_p - 1.0) < 1e-4, name,
                   "worst gap %.2g of the allowed 2^-32/p + 1e-5 (= %.2g there); sum of pdf x area %.7f", worst,
                   worst_allowed, sum_p);
@@ -288,7 +289,7 @@ int main(void)
 
     if (fast && *fast && strcmp(fast, "0")) n_samples /= 10;
     for (i = 0; i < n; i++) cases[i].brdf.wi_integral = 1;
-    alpha_case = chi2_sidak(CHECK_ALPHA, ncases);
+    alpha_case = sidak_level(CHECK_ALPHA, ncases);
     printf("# %d chi-square cases, family-wise alpha %g, per case %.3g; %ld samples each (BRDF: half)\n", ncases,
            CHECK_ALPHA, alpha_case, n_samples);
     test_chi2_pvalue();

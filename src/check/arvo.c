@@ -1,7 +1,6 @@
 /* arvo.c — Arvo's map and its inverse in double (arvo.h). */
 #include "check/arvo.h"
 
-#define PI 3.14159265358979323846
 
 static double clamp01(double x) { return x < 0.0 ? 0.0 : x > 1.0 ? 1.0 : x; }
 

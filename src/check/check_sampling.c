@@ -1,11 +1,12 @@
 /* check_sampling.c — `pathlab check-sampling [--samples N] [--seed S] [--threads T] [--quiet]`:
  * runs the cases of check_sampling_cases.c and prints one row per sampling routine (check_sampling.h). */
 #include "check/check_sampling.h"
+#include "sys/clock.h"
 #include "util/cli.h"
+#include "stats/significance.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include <unistd.h>
 
 #define DEFAULT_SAMPLES 1000000   /* per case (the BRDF cases draw half): a few seconds on two cores */
@@ -103,26 +104,19 @@ static void print_legend(int n, double alpha_case)
            alpha_case, n, CHECK_ALPHA, CHECK_ALPHA, n, CHECK_INTEGRAL_TOL);
 }
 
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
 int check_sampling_main(int argc, char **argv)
 {
     sampling_case cases[CHECK_MAX_CASES];
     sampling_result *r;
     options o;
-    double alpha_case, t0 = now();
+    double alpha_case, t0 = clock_seconds();
     int n, i, failed = 0;
     if ((i = parse_options(&o, argc, argv)) != 0) {
         if (i < 0) fputs(USAGE_CHECK, stdout);
         return i < 0 ? 0 : 2;
     }
     n = check_sampling_cases(cases, CHECK_MAX_CASES);
-    alpha_case = chi2_sidak(CHECK_ALPHA, n);
+    alpha_case = sidak_level(CHECK_ALPHA, n);
     if (!(r = malloc(sizeof *r * (size_t)n))) {
         fprintf(stderr, "pathlab: check-sampling: out of memory\n");
         return 1;
@@ -135,7 +129,7 @@ int check_sampling_main(int argc, char **argv)
     for (i = 0; i < n; i++) failed += !sampling_result_pass(&r[i], alpha_case);
     print_table(cases, r, n, alpha_case, o.quiet);
     if (!o.quiet) print_legend(n, alpha_case);
-    printf("%d passed, %d failed (%.1f s)\n", n - failed, failed, now() - t0);
+    printf("%d passed, %d failed (%.1f s)\n", n - failed, failed, clock_seconds() - t0);
     free(r);
     return failed ? 1 : 0;
 }

@@ -17,7 +17,6 @@
 #include <stdio.h>
 #include <string.h>
 
-#define PI 3.14159265358979323846
 #define PDF_TOL 1e-4              /* relative: the pdf brdf_sample returns against brdf_pdf */
 
 typedef struct {

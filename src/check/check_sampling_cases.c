@@ -6,7 +6,6 @@
 #include <stdio.h>
 #include <string.h>
 
-#define PI 3.14159265358979323846
 #define MAX_THREADS 64
 
 /* ---------- pathlab's routines, in the form of the checks ---------- */
@@ -93,7 +92,7 @@ static void add_lights(sampling_case *cases, int *n, int max)
     char name[80];
     int st, i;
     for (st = 0; st <= LIGHT_POWER; st++) {
-        snprintf(name, sizeof name, "light choice %s", light_strategy_name((light_strategy)st));
+        snprintf(name, sizeof name, "light choice %s", LIGHT_STRATEGY_NAMES[st]);
         if ((c = add(cases, n, max, CASE_LIGHT_CHOICE, name))) c->light.st = (light_strategy)st;
     }
     if ((c = add(cases, n, max, CASE_LIGHT_POINT, "light_sample_point uniform on its triangle")))
@@ -136,10 +135,7 @@ void check_sampling_run(const sampling_case *c, long n, uint64_t seed, sampling_
 /* splitmix64 of (seed, i): the seeds of different cases are unrelated */
 static uint64_t case_seed(uint64_t seed, int i)
 {
-    uint64_t z = seed + 0x9E3779B97F4A7C15ULL * (uint64_t)(i + 1);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
+    return splitmix64_mix(seed + 0x9E3779B97F4A7C15ULL * (uint64_t)(i + 1));
 }
 
 typedef struct {

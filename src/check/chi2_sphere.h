@@ -3,35 +3,16 @@
  * times up to 20 rings in t whose bounds are quantiles of a pilot sample (another stream), so that
  * the cells follow a lobe of any width yet do not depend on the tested sample. The expected count
  * of a cell is N times the integral of the pdf over it, by Gauss-Legendre quadrature in double.
- * Also: double-precision directions and frames, and the integral of a density over the sphere. */
+ * Also: the integral of a density over the sphere. */
 #ifndef PATHLAB_CHI2_SPHERE_H
 #define PATHLAB_CHI2_SPHERE_H
 #include "stats/chi2.h"
 #include "math/rng.h"
+#include "math/dvec.h"
 #include "math/vec.h"
 
 #define SPHERE_RINGS 20
 #define SPHERE_SECTORS 16
-
-typedef struct { double x, y, z; } dvec;
-typedef struct { dvec t, b, n; } dframe;
-
-static inline dvec dv(double x, double y, double z) { dvec r; r.x = x; r.y = y; r.z = z; return r; }
-static inline dvec dv_of(vec3 a) { return dv(a.x, a.y, a.z); }
-static inline vec3 fv_of(dvec a) { return v3((float)a.x, (float)a.y, (float)a.z); }
-static inline double dv_dot(dvec a, dvec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-/* s a + r b */
-static inline dvec dv_lin(dvec a, double s, dvec b, double r) { return dv(s * a.x + r * b.x, s * a.y + r * b.y, s * a.z + r * b.z); }
-static inline dvec dv_normalize(dvec a) { return dv_lin(a, 1.0 / sqrt(dv_dot(a, a)), a, 0.0); }
-static inline dvec dv_cross(dvec a, dvec b) { return dv(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x); }
-/* The mirror direction of wo about the unit normal h. */
-static inline dvec dv_reflect(dvec wo, dvec h) { return dv_lin(h, 2.0 * dv_dot(wo, h), wo, -1.0); }
-
-/* Orthonormal frame about the unit axis n (Duff et al. 2017, as frame_from_normal). */
-dframe dframe_about(dvec n);
-/* The direction at (t, phi) about F.n, and the (t, phi) of a unit direction (phi in [0, 2 pi)). */
-dvec dframe_dir(const dframe *F, double t, double phi);
-void dframe_coords(const dframe *F, dvec w, double *t, double *phi);
 
 /* A density f over directions, integrated in d omega = dt dphi about F.n; if clip is set, only where
  * A + B cos(phi - phi0) > 0 (clip gives A, B, phi0 for the ring at t). The t where the clipped arc

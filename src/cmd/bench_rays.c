@@ -4,6 +4,7 @@
  * threads), so that hit counts must agree and speeds compare like with like. Every float expression
  * below follows embree_rays.c operation for operation; do not "simplify" them. */
 #include "cmd/bench_rays.h"
+#include "sys/clock.h"
 #include "geometry/bvh.h"
 #include "scene/obj.h"
 #include <pthread.h>
@@ -11,7 +12,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #define BENCH_MAX_THREADS 64
 #define BENCH_BUILDS 3          /* the build time printed is the best of this many */
@@ -29,13 +29,6 @@ typedef struct {
 } scene;
 
 typedef struct { const scene *s; int kind, k, nthreads; long rays, hits; } job;
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 
 /* lowbias32 (Chris Wellons), the recipe's only source of randomness, and its top 24 bits in [0,1). */
 static uint32_t lowbias32(uint32_t x)
@@ -109,7 +102,7 @@ static double trace(const scene *s, int kind, int nthreads, long *rays, long *hi
 {
     pthread_t th[BENCH_MAX_THREADS];
     job jobs[BENCH_MAX_THREADS];
-    double t0 = now();
+    double t0 = clock_seconds();
     for (int k = 0; k < nthreads; k++) {
         job j = {s, kind, k, nthreads, 0, 0};
         jobs[k] = j;
@@ -121,7 +114,7 @@ static double trace(const scene *s, int kind, int nthreads, long *rays, long *hi
         pthread_join(th[k], NULL);
         *rays += jobs[k].rays; *hits += jobs[k].hits;
     }
-    return now() - t0;
+    return clock_seconds() - t0;
 }
 
 /* The recipe's camera: eye c + D (0.35, 0.25, 0.9) looking at the centre c, 40 degrees vertical
@@ -152,9 +145,9 @@ static bvh *timed_build(const mesh *m, int threads, double *ms)
     *ms = INFINITY;
     for (int rep = 0; rep < BENCH_BUILDS; rep++) {
         bvh_free(b);
-        double t0 = now();
+        double t0 = clock_seconds();
         b = bvh_build(m->P, m->tri, m->ntris, threads);
-        double t = (now() - t0) * 1e3;
+        double t = (clock_seconds() - t0) * 1e3;
         if (!b) return NULL;
         if (t < *ms) *ms = t;
     }
@@ -192,9 +185,9 @@ int bench_rays_main(int argc, char **argv)
     if (!path || res < 1 || res > 16384 || threads < 1 || threads > BENCH_MAX_THREADS) return usage();
 
     mesh m;
-    double t0 = now(), build_ms;
+    double t0 = clock_seconds(), build_ms;
     if (obj_load(path, &m, 1) != 0) return 1;
-    double load_ms = (now() - t0) * 1e3;
+    double load_ms = (clock_seconds() - t0) * 1e3;
     scene s = {0};
     s.m = &m; s.res = res;
     setup_camera(&s, &m);

@@ -47,59 +47,14 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "math/vec.h"
 #include "stats/imgstat.h"
+#include "stats/significance.h"
 
 /* Rounding allowed per value, relative (see imgstat.c): added linearly over a mean. */
 #define GRADE_ROUNDING 4e-7
 #define GRADE_MIN_BLOCK 8
 #define GRADE_POOL 1           /* the noise of a block is pooled over (2 GRADE_POOL + 1)^2 blocks */
-
-double student_t_tail(double t, int df)
-{
-    /* Abramowitz & Stegun 26.7.3-4: A(t|df) = P(|T| < t) is a finite series in c = cos(theta),
-     * theta = atan(t / sqrt(df)):
-     *   df odd:  A = 2/pi (theta + sin(theta) (c + 2/3 c^3 + 2.4/(3.5) c^5 + ... up to c^(df-2)))
-     *   df even: A = sin(theta) (1 + 1/2 c^2 + 1.3/(2.4) c^4 + ... up to c^(df-2))
-     * Beyond 10^5 degrees of freedom, the normal distribution. */
-    double theta, c, term, sum = 0.0, A;
-    int k;
-    t = fabs(t);
-    if (isinf(t)) return 0.0;
-    if (df > 100000) return erfc(t / sqrt(2.0));
-    theta = atan(t / sqrt((double)df));
-    c = cos(theta);
-    if (df % 2 == 1) {
-        term = c;
-        for (k = 1; k <= (df - 1) / 2; k++) {      /* (df - 1) / 2 terms; none when df = 1 */
-            sum += term;
-            term *= c * c * (2.0 * k) / (2.0 * k + 1.0);
-        }
-        A = 2.0 / 3.14159265358979323846 * (theta + sin(theta) * sum);
-    } else {
-        term = 1.0;
-        for (k = 1; k <= df / 2; k++) {            /* df / 2 terms */
-            sum += term;
-            term *= c * c * (2.0 * k - 1.0) / (2.0 * k);
-        }
-        A = sin(theta) * sum;
-    }
-    return A < 1.0 ? 1.0 - A : 0.0;
-}
-
-/* |t| whose two-sided tail is level, by bisection on the tail. */
-static double t_critical(double level, int df)
-{
-    double lo = 0.0, hi = 1e6;
-    int i;
-    for (i = 0; i < 200; i++) {
-        double mid = 0.5 * (lo + hi);
-        if (student_t_tail(mid, df) > level) lo = mid; else hi = mid;
-    }
-    return 0.5 * (lo + hi);
-}
-
-/* Sidak: the per-test level that gives family-wise level alpha over k independent tests. */
-static double sidak_level(double alpha, long k) { return -expm1(log1p(-alpha) / (double)(k > 0 ? k : 1)); }
 
 /* mean / standard error, with rounding added to the error; 0/0 is 0 (identical values) */
 static double t_stat(double mean, double se2)
@@ -294,7 +249,7 @@ int grade_heatmap(image *out, const grade_report *r, const image *ref)
         for (y = k->y0; y < k->y1; y++)
             for (x = k->x0; x < k->x1; x++) {
                 size_t i = 3 * ((size_t)y * r->w + x);
-                float Y = 0.2126f * ref->px[i] + 0.7152f * ref->px[i + 1] + 0.0722f * ref->px[i + 2];
+                float Y = luminance(v3(ref->px[i], ref->px[i + 1], ref->px[i + 2]));
                 float grey = 0.5f * fminf(fmaxf(Y, 0.0f), 1.0f);   /* dimmed so that colours stand out */
                 for (ch = 0; ch < 3; ch++)
                     out->px[i + ch] = k->sign == 0 ? grey : 0.8f * (k->sign > 0 ? red : blue)[ch] + 0.2f * grey;

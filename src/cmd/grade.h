@@ -36,8 +36,6 @@ typedef struct {
     double pixel_zcrit;
 } grade_report;
 
-/* Two-sided tail of Student's t: P(|T| > t) with df degrees of freedom (df >= 1). */
-double student_t_tail(double t, int df);
 /* Runs the tests: ref_var (may be NULL) is the reference's variance of the pixel mean. Returns 0,
  * or 1 when the sizes differ. Free the report with grade_free. */
 int grade_compute(grade_report *r, const image *img, const image *ref, const image *ref_var, const grade_opts *o);

@@ -29,6 +29,15 @@ static inline void pcg32_init(pcg32 *r, uint64_t seed, uint64_t sequence)
     pcg32_next(r);
 }
 
+/* SplitMix64's finaliser (Steele, Lea, Flood 2014): a bijection of 64-bit words that scatters
+ * neighbouring inputs, so that seeds made of (seed, pixel) or (seed, case) give unrelated streams. */
+static inline uint64_t splitmix64_mix(uint64_t z)
+{
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return z ^ (z >> 31);
+}
+
 /* Uniform double in [0, 1) with 32 random bits: for discrete choices among millions of items,
  * where 24 bits would quantise each item's probability. */
 static inline double pcg32_double(pcg32 *r) { return (double)pcg32_next(r) * (1.0 / 4294967296.0); }

@@ -4,6 +4,7 @@
 #define PATHLAB_VEC_H
 #include <math.h>
 
+#define PI 3.14159265358979323846          /* in double, for the checks and statistics */
 #define PI_F 3.14159265358979323846f
 #define INV_PI_F 0.31830988618379067154f
 
@@ -27,6 +28,8 @@ static inline vec3 v3_max(vec3 a, vec3 b) { return v3(fmaxf(a.x, b.x), fmaxf(a.y
 static inline float v3_comp(vec3 a, int axis) { return axis == 0 ? a.x : axis == 1 ? a.y : a.z; }
 static inline float v3_max_comp(vec3 a) { return fmaxf(a.x, fmaxf(a.y, a.z)); }
 static inline float v3_mean(vec3 a) { return (a.x + a.y + a.z) * (1.0f / 3.0f); }
+/* Rec. 709 luminance of a linear RGB colour: how bright it looks, for choosing lights by power. */
+static inline float luminance(vec3 c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
 static inline int v3_is_zero(vec3 a) { return a.x == 0.0f && a.y == 0.0f && a.z == 0.0f; }
 
 /* Orthonormal frame (t, b, n) around a unit normal n, so that a direction sampled in local

@@ -1,11 +1,11 @@
 /* chi2.c — the chi-square distribution and the pooled statistic of chi2.h. */
 #include "stats/chi2.h"
 #include <math.h>
+#include "math/vec.h"
 
 #define GAMMA_EPS 1e-15
 #define GAMMA_MAX_ITER 100000
 #define POOL_BELOW 5.0   /* the classical rule: each cell of the statistic expects at least 5 */
-#define PI 3.14159265358979323846
 
 /* ln Gamma(x), x > 0, by Lanczos' approximation (g = 7, 9 terms; relative error ~1e-15). Not libm's
  * lgamma: it writes the global signgam, a data race when cases run on threads. */
@@ -66,7 +66,6 @@ double chi2_gamma_q(double a, double x)
 
 double chi2_pvalue(double chi2, int dof) { return dof >= 1 ? chi2_gamma_q(0.5 * dof, 0.5 * chi2) : 0.0; }
 
-double chi2_sidak(double alpha, int ncases) { return 1.0 - pow(1.0 - alpha, 1.0 / ncases); }
 
 static double pearson_term(double o, double e) { return (o - e) * (o - e) / e; }
 

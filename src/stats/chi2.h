@@ -16,9 +16,6 @@ typedef struct {
 double chi2_gamma_q(double a, double x);
 /* P-value of the statistic chi2 with dof degrees of freedom: Q(dof/2, chi2/2); 0 for dof < 1. */
 double chi2_pvalue(double chi2, int dof);
-/* Level of each of ncases tests so that all pass together with probability 1 - alpha:
- * 1 - (1 - alpha)^(1/ncases) (Sidak). */
-double chi2_sidak(double alpha, int ncases);
 /* The test on n cells. Cells expected under 5 are pooled into one; if the pool itself stays under 5,
  * it joins the largest cell. Observed samples where nothing is expected make chi2 infinite (p = 0). */
 chi2_result chi2_test(const double *observed, const double *expected, int n);

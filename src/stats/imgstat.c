@@ -2,26 +2,7 @@
 #include "stats/imgstat.h"
 #include <math.h>
 #include <string.h>
-
-double normal_quantile(double p)
-{
-    /* bisection on the cdf 0.5 erfc(-x / sqrt 2): slow but exact to double precision, and tests
-     * call it a handful of times */
-    double lo = -40.0, hi = 40.0;
-    int i;
-    for (i = 0; i < 200; i++) {
-        double mid = 0.5 * (lo + hi);
-        if (0.5 * erfc(-mid / sqrt(2.0)) < p) lo = mid; else hi = mid;
-    }
-    return 0.5 * (lo + hi);
-}
-
-double sidak_zcrit(double alpha, long n)
-{
-    /* per-test level 1 - (1 - alpha)^(1/n), computed without cancellation */
-    double a1 = -expm1(log1p(-alpha) / (double)(n > 0 ? n : 1));
-    return normal_quantile(1.0 - 0.5 * a1);
-}
+#include "stats/significance.h"
 
 static double zscore(double d, double var) { return var > 0.0 ? d / sqrt(var) : (d == 0.0 ? 0.0 : HUGE_VAL); }
 

@@ -22,10 +22,6 @@ typedef struct {
     double mean_b[3];           /* mean of b per channel (for relative figures) */
 } zreport;
 
-/* Standard normal quantile: x with P(Z < x) = p. */
-double normal_quantile(double p);
-/* Two-sided critical |z| for n tests at family-wise level alpha (Sidak). */
-double sidak_zcrit(double alpha, long n);
 /* Runs the three tests; images must have the same size. Returns 0, or 1 if sizes differ. */
 int zreport_compute(zreport *r, const image *a, const image *va, const image *b, const image *vb,
                     double alpha, int block);

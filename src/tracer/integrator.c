@@ -7,6 +7,9 @@
 #include "tracer/brdf.h"
 #include "tracer/sampling.h"
 
+const char *const DIR_STRATEGY_NAMES[] = {"uniform", "cosine", "brdf", 0};
+const char *const DIRECT_STRATEGY_NAMES[] = {"light", "brdf", "mis-balance", "mis-power", 0};
+
 /* A shading point: position, normal facing the incoming ray, local frame, material. */
 typedef struct {
     vec3 p, n, wo_local;
@@ -173,16 +176,4 @@ void integrate(const scene *s, const integrator_opts *o, const ray *camera, pcg3
             beta = v3_scale(beta, 1.0f / q);
         }
     }
-}
-
-const char *dir_strategy_name(dir_strategy d)
-{
-    static const char *names[] = {"uniform", "cosine", "brdf"};
-    return names[d];
-}
-
-const char *direct_strategy_name(direct_strategy d)
-{
-    static const char *names[] = {"light", "brdf", "mis-balance", "mis-power"};
-    return names[d];
 }

@@ -12,6 +12,9 @@
 
 typedef enum { DIR_UNIFORM, DIR_COSINE, DIR_BRDF } dir_strategy;                /* --dir */
 typedef enum { DIRECT_LIGHT, DIRECT_BRDF, DIRECT_MIS_BALANCE, DIRECT_MIS_POWER } direct_strategy; /* --direct */
+/* Their names on the command line (--dir, --direct), in enum order, NULL-terminated. */
+extern const char *const DIR_STRATEGY_NAMES[];
+extern const char *const DIRECT_STRATEGY_NAMES[];
 
 #define BOUNCES_INF 1000000   /* --bounces A:inf */
 
@@ -31,7 +34,4 @@ typedef struct {
 
 /* Adds the radiance along r (a camera ray) to L[0], and with opts->split each L_k to L[1 + k - bmin]. */
 void integrate(const scene *s, const integrator_opts *o, const ray *r, pcg32 *rng, vec3 *L, trace_stats *st);
-
-const char *dir_strategy_name(dir_strategy d);
-const char *direct_strategy_name(direct_strategy d);
 #endif

@@ -2,8 +2,9 @@
 #include "tracer/light.h"
 #include "tracer/sampling.h"
 #include <stdlib.h>
+#include "math/dvec.h"
 
-static float luminance(vec3 c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+const char *const LIGHT_STRATEGY_NAMES[] = {"area", "triangle", "power", "solid-angle", 0};
 
 /* Weight of emitter i in the discrete choice of each strategy (before normalisation). */
 static float choice_weight(const emitter *e, light_strategy st)
@@ -94,30 +95,24 @@ float light_choice_prob(const light_set *ls, light_strategy st, int i)
 /* Spherical trigonometry runs in double: in float, cos(arc AC') rounds to 1 for the thin
  * sub-triangles of a small spherical triangle, which bent the density by several percent below
  * Omega ~ 1e-2 sr (caught by `pathlab check-sampling`, case "Omega = 4e-4 sr"). */
-typedef struct { double x, y, z; } dvec3;
-static dvec3 d3(double x, double y, double z) { dvec3 r; r.x = x; r.y = y; r.z = z; return r; }
-static double d3_dot(dvec3 a, dvec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static dvec3 d3_lin(dvec3 a, double s, dvec3 b, double r) { return d3(s * a.x + r * b.x, s * a.y + r * b.y, s * a.z + r * b.z); }
-static dvec3 d3_normalize(dvec3 a) { return d3_lin(a, 1.0 / sqrt(d3_dot(a, a)), a, 0.0); }
-static dvec3 d3_cross(dvec3 a, dvec3 b) { return d3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x); }
 /* v minus its component along the unit vector u, normalised */
-static dvec3 orthogonal_part(dvec3 v, dvec3 u) { return d3_normalize(d3_lin(v, 1.0, u, -d3_dot(v, u))); }
+static dvec orthogonal_part(dvec v, dvec u) { return dv_normalize(dv_lin(v, 1.0, u, -dv_dot(v, u))); }
 
 /* The spherical triangle an emitter subtends from p: unit directions A, B, C to its corners, its
  * solid angle Omega (Van Oosterom and Strackee 1983: tan(Omega/2) = |A.(B x C)| / (1 + A.B + B.C +
  * C.A)) and its angle alpha at A, between the great arcs AB and AC. */
-typedef struct { dvec3 A, B, C; double omega, alpha; } spherical_triangle;
+typedef struct { dvec A, B, C; double omega, alpha; } spherical_triangle;
 
 static spherical_triangle spherical_triangle_from(const emitter *e, vec3 p)
 {
     spherical_triangle t;
-    dvec3 a = d3((double)e->a.x - p.x, (double)e->a.y - p.y, (double)e->a.z - p.z);
-    t.A = d3_normalize(a);
-    t.B = d3_normalize(d3(a.x + e->e1.x, a.y + e->e1.y, a.z + e->e1.z));
-    t.C = d3_normalize(d3(a.x + e->e2.x, a.y + e->e2.y, a.z + e->e2.z));
-    t.omega = 2.0 * atan2(fabs(d3_dot(t.A, d3_cross(t.B, t.C))),
-                          1.0 + d3_dot(t.A, t.B) + d3_dot(t.B, t.C) + d3_dot(t.C, t.A));
-    t.alpha = acos(fmin(1.0, fmax(-1.0, d3_dot(orthogonal_part(t.B, t.A), orthogonal_part(t.C, t.A)))));
+    dvec a = dv((double)e->a.x - p.x, (double)e->a.y - p.y, (double)e->a.z - p.z);
+    t.A = dv_normalize(a);
+    t.B = dv_normalize(dv(a.x + e->e1.x, a.y + e->e1.y, a.z + e->e1.z));
+    t.C = dv_normalize(dv(a.x + e->e2.x, a.y + e->e2.y, a.z + e->e2.z));
+    t.omega = 2.0 * atan2(fabs(dv_dot(t.A, dv_cross(t.B, t.C))),
+                          1.0 + dv_dot(t.A, t.B) + dv_dot(t.B, t.C) + dv_dot(t.C, t.A));
+    t.alpha = acos(fmin(1.0, fmax(-1.0, dv_dot(orthogonal_part(t.B, t.A), orthogonal_part(t.C, t.A)))));
     return t;
 }
 
@@ -133,13 +128,13 @@ static vec3 sample_spherical_triangle(const spherical_triangle *t, float u1, flo
 {
     double sub = u1 * t->omega, s = sin(sub - t->alpha), c = cos(sub - t->alpha);
     double cos_alpha = cos(t->alpha), sin_alpha = sin(t->alpha);
-    double u = c - cos_alpha, v = s + sin_alpha * d3_dot(t->A, t->B), z;
+    double u = c - cos_alpha, v = s + sin_alpha * dv_dot(t->A, t->B), z;
     double q = ((v * c - u * s) * cos_alpha - v) / ((v * s + u * c) * sin_alpha);   /* cos of arc AC' */
-    dvec3 C1, w;
+    dvec C1, w;
     q = fmin(1.0, fmax(-1.0, q));
-    C1 = d3_lin(t->A, q, orthogonal_part(t->C, t->A), sqrt(1.0 - q * q));
-    z = 1.0 - u2 * (1.0 - d3_dot(C1, t->B));                                         /* cos of arc B P */
-    w = d3_lin(t->B, z, orthogonal_part(C1, t->B), sqrt(fmax(0.0, 1.0 - z * z)));
+    C1 = dv_lin(t->A, q, orthogonal_part(t->C, t->A), sqrt(1.0 - q * q));
+    z = 1.0 - u2 * (1.0 - dv_dot(C1, t->B));                                         /* cos of arc B P */
+    w = dv_lin(t->B, z, orthogonal_part(C1, t->B), sqrt(fmax(0.0, 1.0 - z * z)));
     return v3((float)w.x, (float)w.y, (float)w.z);
 }
 
@@ -181,10 +176,4 @@ void light_sample_point(const light_set *ls, light_strategy st, vec3 p, double u
     sample_uniform_triangle(u1, u2, &b1, &b2);
     out->p = v3_add(e->a, v3_add(v3_scale(e->e1, b1), v3_scale(e->e2, b2)));
     out->pdf_area = light_pdf_area(ls, st, i, p, out->p);
-}
-
-const char *light_strategy_name(light_strategy st)
-{
-    static const char *names[] = {"area", "triangle", "power", "solid-angle"};
-    return names[st];
 }

@@ -16,6 +16,8 @@
 #define LIGHT_SOLID_ANGLE_MAX 6.0
 
 typedef enum { LIGHT_AREA, LIGHT_TRIANGLE, LIGHT_POWER, LIGHT_SOLID_ANGLE, LIGHT_NSTRATEGIES } light_strategy;
+/* Their names on the command line (--light), in enum order, NULL-terminated. */
+extern const char *const LIGHT_STRATEGY_NAMES[];
 
 typedef struct { vec3 a, e1, e2, n, Le; float area; int tri; } emitter;   /* corners a, a+e1, a+e2 */
 
@@ -49,5 +51,4 @@ static inline float pdf_area_to_solid_angle(float pdf_area, float dist2, float c
 {
     return cos_s > 0.0f ? pdf_area * dist2 / cos_s : 0.0f;
 }
-const char *light_strategy_name(light_strategy st);
 #endif

@@ -1,10 +1,10 @@
 /* render.c — threads, tiles, per-pixel streams, progress. */
 #include "tracer/render.h"
+#include "sys/clock.h"
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include <unistd.h>
 
 #define TILE 16
@@ -19,21 +19,6 @@ typedef struct {
     double t0;
     pthread_mutex_t lock;
 } job;
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-/* SplitMix64 finaliser: decorrelates neighbouring (seed, pixel) pairs before they seed PCG32. */
-static uint64_t mix64(uint64_t z)
-{
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-}
 
 static int finite3(vec3 c) { return isfinite(c.x) && isfinite(c.y) && isfinite(c.z); }
 
@@ -61,7 +46,7 @@ static void render_pixel(job *j, int px, int py, vec3 *L, double *acc, trace_sta
     const render_opts *o = j->o;
     int n = j->out->nlayers, i, k, idx = py * j->c->width + px;
     pcg32 rng;
-    pcg32_init(&rng, mix64(o->seed ^ mix64((uint64_t)idx)), (uint64_t)idx);
+    pcg32_init(&rng, splitmix64_mix(o->seed ^ splitmix64_mix((uint64_t)idx)), (uint64_t)idx);   /* (seed, pixel) -> stream */
     memset(acc, 0, sizeof(double) * 6 * (size_t)n);   /* sum, sum of squares per layer */
     for (i = 0; i < o->spp; i++) {
         float jx = o->pixel_center ? 0.5f : pcg32_float(&rng);
@@ -77,7 +62,7 @@ static void render_pixel(job *j, int px, int py, vec3 *L, double *acc, trace_sta
 
 static void draw_progress(job *j)
 {
-    double t = now() - j->t0, frac = (double)j->done_tiles / j->ntiles;
+    double t = clock_seconds() - j->t0, frac = (double)j->done_tiles / j->ntiles;
     int bar = (int)(40 * frac), i;
     fprintf(stderr, "\r[");
     for (i = 0; i < 40; i++) fputc(i < bar ? '#' : ' ', stderr);
@@ -149,7 +134,7 @@ int render(const scene *s, const camera *c, const render_opts *o, render_result 
     j.tiles_x = (c->width + TILE - 1) / TILE;
     j.ntiles = j.tiles_x * ((c->height + TILE - 1) / TILE);
     j.progress = !o->quiet && isatty(2);
-    j.t0 = now();
+    j.t0 = clock_seconds();
     pthread_mutex_init(&j.lock, NULL);
     if (s->lights.n > 0)   /* without emitters every pixel is black: no work at all */
         for (i = 0; i < nthreads; i++)
@@ -157,7 +142,7 @@ int render(const scene *s, const camera *c, const render_opts *o, render_result 
     if (s->lights.n > 0 && nthreads == 0) worker(&j);
     for (i = 0; i < nthreads && s->lights.n > 0; i++) pthread_join(th[i], NULL);
     pthread_mutex_destroy(&j.lock);
-    out->seconds = now() - j.t0;
+    out->seconds = clock_seconds() - j.t0;
     return 0;
 }
 

@@ -1,17 +1,10 @@
 /* scene.c — from an OBJ file to a scene ready to trace. */
 #include "tracer/scene.h"
+#include "sys/clock.h"
 #include "scene/obj.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 
 static int triangle_geometry(scene *s)
 {
@@ -34,17 +27,17 @@ int scene_load(scene *s, const char *path, int threads, int quiet)
 {
     double t0;
     memset(s, 0, sizeof *s);   /* so that scene_free is safe wherever loading stops */
-    t0 = now();
+    t0 = clock_seconds();
     if (obj_load(path, &s->m, quiet)) return 1;
-    s->load_seconds = now() - t0;
+    s->load_seconds = clock_seconds() - t0;
     if (triangle_geometry(s) || light_build(&s->lights, &s->m, s->Ng, s->area)) {
         fprintf(stderr, "%s: out of memory\n", path);
         scene_free(s);
         return 1;
     }
-    t0 = now();
+    t0 = clock_seconds();
     s->accel = bvh_build(s->m.P, s->m.tri, s->m.ntris, threads);
-    s->bvh_seconds = now() - t0;
+    s->bvh_seconds = clock_seconds() - t0;
     if (!s->accel) {
         fprintf(stderr, "%s: out of memory building the BVH\n", path);
         scene_free(s);

@@ -100,9 +100,6 @@ const char *cli_value(int argc, char **argv, int *i)
 }
 
 /* The flags of pathlab render. */
-static const char *const LIGHT_NAMES[] = {"area", "triangle", "power", "solid-angle", NULL};
-static const char *const DIR_NAMES[] = {"uniform", "cosine", "brdf", NULL};
-static const char *const DIRECT_NAMES[] = {"light", "brdf", "mis-balance", "mis-power", NULL};
 
 static int parse_bounces(const char *flag, const char *s, integrator_opts *io)
 {
@@ -152,9 +149,9 @@ int render_parse_flag(render_args *a, int argc, char **argv, int *i)
     if (!strcmp(f, "--bounces")) return parse_bounces(f, v, io);
     if (!strcmp(f, "--bounce")) return cli_int(f, v, 0, 1000, &io->bmin) || (io->bmax = io->bmin, 0);
     if (!strcmp(f, "--rr")) return !strcmp(v, "off") ? (io->rr_depth = -1, 0) : cli_int(f, v, 0, 1000, &io->rr_depth);
-    if (!strcmp(f, "--light")) return cli_choice(f, v, LIGHT_NAMES, &choice) || (io->light = (light_strategy)choice, 0);
-    if (!strcmp(f, "--dir")) return cli_choice(f, v, DIR_NAMES, &choice) || (io->dir = (dir_strategy)choice, 0);
-    if (!strcmp(f, "--direct")) return cli_choice(f, v, DIRECT_NAMES, &choice) || (io->direct = (direct_strategy)choice, 0);
+    if (!strcmp(f, "--light")) return cli_choice(f, v, LIGHT_STRATEGY_NAMES, &choice) || (io->light = (light_strategy)choice, 0);
+    if (!strcmp(f, "--dir")) return cli_choice(f, v, DIR_STRATEGY_NAMES, &choice) || (io->dir = (dir_strategy)choice, 0);
+    if (!strcmp(f, "--direct")) return cli_choice(f, v, DIRECT_STRATEGY_NAMES, &choice) || (io->direct = (direct_strategy)choice, 0);
     fprintf(stderr, "pathlab: unknown flag '%s' (see pathlab help)\n", f);
     return 1;
 }

@@ -99,6 +99,74 @@ const char *cli_value(int argc, char **argv, int *i)
     return argv[++*i];
 }
 
+int cli_double(const char *flag, const char *s, double lo, double hi, double *out)
+{
+    char *end;
+    double v = strtod(s, &end);
+    if (end == s || *end || !isfinite(v) || v < lo || v > hi) {
+        char what[96];
+        sprintf(what, "a number from %g to %g", lo, hi);
+        return bad(flag, what, s);
+    }
+    *out = v;
+    return 0;
+}
+
+/* The flag of the tables named f, or NULL. */
+static const cli_flag *find_flag(const cli_flag *const *tables, const char *f)
+{
+    int t, k;
+    for (t = 0; tables[t]; t++)
+        for (k = 0; tables[t][k].name; k++)
+            if (!strcmp(tables[t][k].name, f)) return &tables[t][k];
+    return NULL;
+}
+
+/* Parses value v of flag f into its destination. */
+static int parse_value(const cli_flag *f, const char *v, void *ctx)
+{
+    int i;
+    switch (f->kind) {
+    case CLI_STRING: *(const char **)f->dest = v; return 0;
+    case CLI_INT: return cli_int(f->name, v, (int)f->lo, (int)f->hi, (int *)f->dest);
+    case CLI_U64: return cli_u64(f->name, v, (uint64_t *)f->dest);
+    case CLI_FLOAT: return cli_float(f->name, v, (float *)f->dest);
+    case CLI_DOUBLE: return cli_double(f->name, v, f->lo, f->hi, (double *)f->dest);
+    case CLI_VEC3: return cli_vec3(f->name, v, (vec3 *)f->dest);
+    case CLI_SIZE: return cli_size(f->name, v, (int *)f->dest, (int *)f->dest + 1);
+    case CLI_CHOICE: return cli_choice(f->name, v, f->choices, &i) || (*(int *)f->dest = i, 0);
+    case CLI_CUSTOM: return f->custom(ctx, f->name, v);
+    default: return 1;
+    }
+}
+
+int cli_parse(const char *cmd, int argc, char **argv, const cli_flag *const *tables, void *ctx,
+              const char **words, int max_words, int *nwords)
+{
+    int i;
+    *nwords = 0;
+    for (i = 1; i < argc; i++) {
+        const char *a = argv[i], *v;
+        const cli_flag *f;
+        if (a[0] != '-' || !a[1]) {
+            if (*nwords == max_words) {
+                fprintf(stderr, "pathlab %s: unexpected '%s' (see pathlab help)\n", cmd, a);
+                return 1;
+            }
+            words[(*nwords)++] = a;
+            continue;
+        }
+        if (!(f = find_flag(tables, a))) {
+            fprintf(stderr, "pathlab %s: unknown flag '%s' (see pathlab help)\n", cmd, a);
+            return 1;
+        }
+        if (f->given) *f->given = 1;
+        if (f->kind == CLI_SWITCH) { *(int *)f->dest = 1; continue; }
+        if (!(v = cli_value(argc, argv, &i)) || parse_value(f, v, ctx)) return 1;
+    }
+    return 0;
+}
+
 /* The flags of pathlab render. */
 
 static int parse_bounces(const char *flag, const char *s, integrator_opts *io)

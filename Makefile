@@ -3,13 +3,20 @@
 CC ?= cc
 WARN = -std=c99 -Wall -Wextra -pedantic
 DEFS = -D_POSIX_C_SOURCE=200809L
+# Three builds, each in its own folder: the default (portable: runs on any x86-64 or other machine
+# the compiler targets, asserts on), SAN=1 (sanitizers) and NATIVE=1 (-march=native, asserts off:
+# only for `make bench`, whose binary must not be copied to another machine).
 ifeq ($(SAN),1)
   BUILD = build-san
   OPT = -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all
   PROG = $(BUILD)/pathlab
+else ifeq ($(NATIVE),1)
+  BUILD = build-native
+  OPT = -O3 -march=native -g -DNDEBUG
+  PROG = $(BUILD)/pathlab
 else
   BUILD = build
-  OPT = -O3 -march=native -g
+  OPT = -O3 -g
   PROG = pathlab
 endif
 CFLAGS = $(WARN) $(DEFS) $(OPT) -Isrc
@@ -63,16 +70,26 @@ stress: $(PROG) $(TOOLS)
 refs: $(PROG)
 	ref/make_refs.sh
 
-# The benchmarks (about 7.5 minutes on 2 cores; see docs/performance.md): ray speed against Embree 3 on
-# the Stanford meshes (needs ../shared and Debian's libembree-dev), the time to reach the same L1
-# error per --direct mode (bench/direct_modes.sh), and RMSE against render time for every estimator
-# on every scene (bench/sweep.sh: bench/results.csv, docs/bench.svg).
+# The benchmarks (about 7.5 minutes on 2 cores; see docs/performance.md), on the NATIVE=1 build
+# (build-native/pathlab: -march=native, no asserts): ray speed against Embree 3 on the Stanford
+# meshes (needs ../shared and Debian's libembree-dev), the time to reach the same L1 error per
+# --direct mode (bench/direct_modes.sh), and RMSE against render time for every estimator on every
+# scene (bench/sweep.sh: bench/results.csv, docs/bench.svg). `make bench-portable` times the default
+# build against the native one on the same rays.
 BENCH_MESHES ?= ../shared/data/meshes/bunny.obj ../shared/data/meshes/dragon.obj
-bench: $(PROG) $(BUILD)/tests/pfmtool $(BUILD)/bench-plot
+bench:
+	$(MAKE) NATIVE=1 bench-native
+
+bench-native: $(PROG) $(BUILD)/tests/pfmtool $(BUILD)/bench-plot
 	@for m in $(BENCH_MESHES); do for t in 1 2; do \
-	  echo "== $$m, $$t thread(s)"; ../shared/tools/embree-rays/compare.sh $$m $$t 3; done; done
+	  echo "== $$m, $$t thread(s)"; (cd $(BUILD) && $(abspath ../shared/tools/embree-rays/compare.sh) $(abspath $$m) $$t 3); done; done
 	BUILD=$(BUILD) PATHLAB=./$(PROG) bench/direct_modes.sh
 	BUILD=$(BUILD) PATHLAB=./$(PROG) bench/sweep.sh
+
+bench-portable:
+	$(MAKE) pathlab
+	$(MAKE) NATIVE=1 build-native/pathlab
+	bench/portable.sh ./pathlab build-native/pathlab $(BENCH_MESHES)
 
 # The benchmark's error, slopes, ranking and SVG (bench/plot.c), linked like the tests.
 $(BUILD)/bench-plot: bench/plot.c $(LIB_OBJ)
@@ -84,6 +101,6 @@ mutants:
 	tests/mutants/run.sh
 
 clean:
-	rm -rf build build-san pathlab
+	rm -rf build build-san build-native pathlab
 
-.PHONY: all run test test-deps stress refs bench clean mutants
+.PHONY: all run test test-deps stress refs bench bench-native bench-portable clean mutants

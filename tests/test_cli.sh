@@ -18,6 +18,23 @@ for bad in "--spp abc" "--spp 0" "--spp 3.5" "--bounces 3:1" "--bounces x" "--li
     expect_status "bad flag '$bad': status 2" 2 $PATHLAB render scenes/cornell.obj $bad -o "$out" --quiet
     expect_no_file "bad flag '$bad': no output" "$out"
 done
+# messages name the command, the flag and the value
+expect_status "bad value: status 2" 2 $PATHLAB render scenes/cornell.obj --spp abc -o "$out"
+expect_err "bad value: command, flag and value named" "^pathlab render: --spp expects .*got 'abc'"
+expect_status "unknown flag: status 2" 2 $PATHLAB render scenes/cornell.obj --frobnicate -o "$out"
+expect_err "unknown flag named" "^pathlab render: unknown flag '--frobnicate'"
+expect_status "flag without its value: status 2" 2 $PATHLAB render scenes/cornell.obj -o
+expect_err "flag without its value named" "^pathlab render: -o needs a value"
+expect_status "two scenes: status 2" 2 $PATHLAB render scenes/cornell.obj scenes/cornell.obj -o "$out"
+expect_err "two scenes: the second named" "^pathlab render: unexpected 'scenes/cornell.obj'"
+expect_no_file "two scenes: no output" "$out"
+expect_status "--variance as PNG refused" 2 $PATHLAB render scenes/cornell.obj -o "$out" --variance "$TMP/v.png"
+expect_err "--variance as PNG explained" "--variance .*v.png.*pfm"
+expect_status "negative numbers as values (--eye, --up): status 0" 0 \
+    $PATHLAB render scenes/cornell.obj --eye 0,1,-3.5 --up 0,-1,0 --size 4x4 --spp 1 --quiet -o "$out"
+expect_status "flags before the scene, output in capitals (.PFM): status 0" 0 \
+    $PATHLAB render --size 4x4 --spp 1 --quiet -o "$TMP/OUT.PFM" scenes/cornell.obj
+rm -f "$out"
 expect_status "no -o" 2 $PATHLAB render scenes/cornell.obj
 expect_status "unknown output extension" 2 $PATHLAB render scenes/cornell.obj -o "$TMP/x.jpg"
 expect_err "unknown output extension explained" "use .pfm, .ppm or .png"

@@ -19,4 +19,17 @@ expect_err "diff: sizes named" "8x4.*4x4"
 expect_status "diff: missing file, status 2" 2 $PATHLAB diff "$TMP/a.pfm" "$TMP/none.pfm"
 expect_err "diff: missing file named" "none.pfm"
 expect_status "diff: one image only, status 2" 2 $PATHLAB diff "$TMP/a.pfm"
+expect_status "diff: three images, status 2" 2 $PATHLAB diff "$TMP/a.pfm" "$TMP/b.pfm" "$TMP/small.pfm"
+expect_err "diff: the extra image named" "^pathlab diff: unexpected '.*small.pfm'"
+# flags before the file names: the same heatmap
+$PATHLAB diff --heatmap "$TMP/h2.ppm" --scale 0 "$TMP/a.pfm" "$TMP/b.pfm" > /dev/null
+if cmp -s "$TMP/h.ppm" "$TMP/h2.ppm"; then pass "diff: flags first, the same heatmap"; else fail "diff: flags first changed the heatmap"; fi
+expect_status "diff: heatmap of an unknown format, status 2" 2 $PATHLAB diff "$TMP/a.pfm" "$TMP/b.pfm" --heatmap "$TMP/h.jpg"
+expect_err "diff: heatmap format explained" "^pathlab diff: --heatmap .*h.jpg: unknown image format"
+expect_no_file "diff: no heatmap of an unknown format" "$TMP/h.jpg"
+if [ ! -s "$TMP/out" ]; then pass "diff: bad arguments, no metrics printed"; else fail "diff: printed metrics before refusing the heatmap"; fi
+expect_status "diff: bad --scale, status 2" 2 $PATHLAB diff "$TMP/a.pfm" "$TMP/b.pfm" --scale big
+expect_err "diff: bad --scale named" "^pathlab diff: --scale expects a number, got 'big'"
+expect_status "diff: unknown flag, status 2" 2 $PATHLAB diff "$TMP/a.pfm" "$TMP/b.pfm" --colour
+expect_err "diff: unknown flag named" "unknown flag '--colour'"
 exit 0

@@ -118,5 +118,10 @@ expect_status "no --ref: status 2" 2 $PATHLAB grade "$TMP/c.pfm"
 expect_status "--var without --spp and --ref-spp: status 2" 2 $PATHLAB grade "$TMP/c.pfm" --ref "$TMP/c.pfm" --var "$TMP/c.pfm"
 expect_err "--var without --spp: explained" "--var needs --spp"
 expect_status "--alpha 2: status 2" 2 $PATHLAB grade "$TMP/c.pfm" --ref "$TMP/c.pfm" --alpha 2
+expect_err "--alpha 2: flag and value named" "^pathlab grade: --alpha expects .*got '2'"
+expect_status "two images: status 2" 2 $PATHLAB grade "$TMP/c.pfm" "$TMP/small.pfm" --ref "$TMP/c.pfm"
+expect_status "--heatmap of an unknown format: status 2" 2 $PATHLAB grade "$TMP/c.pfm" --ref "$TMP/c.pfm" --heatmap "$TMP/h.jpg"
+expect_err "--heatmap of an unknown format explained" "^pathlab grade: --heatmap .*h.jpg: unknown image format"
+expect_status "--ref before the image: status 0" 0 $PATHLAB grade --ref "$TMP/c.pfm" "$TMP/c.pfm"
 echo "grade tests took $(( $(date +%s) - start )) s (size $SIZE, reference $REF_SPP spp)"
 exit 0

@@ -472,6 +472,18 @@ static void test_oiiotool(void)
     img_free(&a);
 }
 
+/* The one extension test of pathlab: img_extension and img_format_of. */
+static void test_extension(void)
+{
+    check(!strcmp(img_extension("dir/out.pfm"), ".pfm") && !strcmp(img_extension("a.b/out"), "")
+          && !strcmp(img_extension("out"), "") && !strcmp(img_extension("x.tar.png"), ".png") && !strcmp(img_extension("."), "."),
+          "img_extension: after the last dot of the file name, dot included", NULL);
+    check(img_format_of("a.pfm") == IMG_PFM && img_format_of("d/A.PFM") == IMG_PFM && img_format_of("b.Ppm") == IMG_PPM
+          && img_format_of("c.png") == IMG_PNG && img_format_of("c.jpg") == IMG_UNKNOWN && img_format_of("png") == IMG_UNKNOWN
+          && img_format_of("a.pfm/b") == IMG_UNKNOWN && img_format_of("a.pfmx") == IMG_UNKNOWN,
+          "img_format_of: .pfm, .ppm, .png in any case; nothing else", NULL);
+}
+
 int main(void)
 {
     strcpy(dir, "/tmp/test_image.XXXXXX");
@@ -486,6 +498,7 @@ int main(void)
     test_srgb_ppm();
     test_atomic();
     test_oiiotool();
+    test_extension();
     remove_dir();
     return check_summary();
 }

@@ -29,7 +29,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include "util/cli.h"
+#include "cmd/render_args.h"
 #include "cmd/diff.h"
 #include "image/font.h"
 #include "tracer/render.h"

@@ -56,30 +56,44 @@ int diff_heatmap(image *out, const image *a, const image *ref, double scale)
     return 0;
 }
 
+#define DIFF_USAGE "usage: pathlab diff A.pfm REF.pfm [--heatmap OUT.ppm|OUT.png] [--scale S]\n"
+
+/* The metrics of diff.h, one per line. */
+static void print_stats(const diff_stats *s)
+{
+    printf("RMSE    %.6g\nrelMSE  %.6g\nMAE     %.6g\nmax     %.6g\nPSNR    %.2f dB\nmean    %+.6g +- %.2g (a - ref, standard error)\n",
+           s->rmse, s->relmse, s->mae, s->max, s->psnr, s->mean, s->mean_se);
+}
+
 int diff_main(int argc, char **argv)
 {
-    const char *path[2] = {NULL, NULL}, *heat = NULL;
+    const char *path[2], *heat = NULL;
+    float scale = 0.0f;
+    const cli_flag flags[] = {{"--heatmap", CLI_STRING, &heat, 0, 0, NULL, NULL, NULL},
+                              {"--scale", CLI_FLOAT, &scale, 0, 0, NULL, NULL, NULL},
+                              {NULL, CLI_SWITCH, NULL, 0, 0, NULL, NULL, NULL}};
+    const cli_flag *tables[] = {flags, NULL};
     image im[2], hm;
     diff_stats s;
-    int i, n = 0, rc = 0;
-    float scale = 0.0f;
-    for (i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--heatmap")) { if (!(heat = cli_value(argc, argv, &i))) return 2; }
-        else if (!strcmp(argv[i], "--scale")) { const char *v = cli_value(argc, argv, &i); if (!v || cli_float("--scale", v, &scale)) return 2; }
-        else if (n < 2 && argv[i][0] != '-') path[n++] = argv[i];
-        else { fprintf(stderr, "pathlab: diff: unexpected '%s'\nusage: pathlab diff A.pfm REF.pfm [--heatmap OUT.ppm|OUT.png] [--scale S]\n", argv[i]); return 2; }
+    int n, rc = 0;
+    if (cli_parse("diff", argc, argv, tables, NULL, path, 2, &n)) return 2;
+    if (n != 2) { fprintf(stderr, "pathlab diff: needs an image and a reference\n" DIFF_USAGE); return 2; }
+    if (heat && img_format_of(heat) == IMG_UNKNOWN) {
+        fprintf(stderr, "pathlab diff: --heatmap %s: unknown image format (use .pfm, .ppm or .png)\n", heat);
+        return 2;
     }
-    if (n != 2) { fprintf(stderr, "usage: pathlab diff A.pfm REF.pfm [--heatmap OUT.ppm|OUT.png] [--scale S]\n"); return 2; }
     if (img_read_pfm(&im[0], path[0])) return 2;
     if (img_read_pfm(&im[1], path[1])) { img_free(&im[0]); return 2; }
     if (diff_compute(&s, &im[0], &im[1])) {
-        fprintf(stderr, "pathlab: diff: %s is %dx%d but %s is %dx%d\n", path[0], im[0].w, im[0].h, path[1], im[1].w, im[1].h);
+        fprintf(stderr, "pathlab diff: %s is %dx%d but %s is %dx%d\n", path[0], im[0].w, im[0].h, path[1], im[1].w, im[1].h);
         rc = 2;
     } else {
-        printf("RMSE    %.6g\nrelMSE  %.6g\nMAE     %.6g\nmax     %.6g\nPSNR    %.2f dB\nmean    %+.6g +- %.2g (a - ref, standard error)\n",
-               s.rmse, s.relmse, s.mae, s.max, s.psnr, s.mean, s.mean_se);
-        if (heat && (diff_heatmap(&hm, &im[0], &im[1], scale) || img_write(&hm, heat, 0.0f))) rc = 1;
-        if (heat && !rc) img_free(&hm);
+        print_stats(&s);
+        if (heat && diff_heatmap(&hm, &im[0], &im[1], scale)) rc = 1;
+        else if (heat) {
+            if (img_write(&hm, heat, 0.0f)) rc = 1;
+            img_free(&hm);
+        }
     }
     img_free(&im[0]);
     img_free(&im[1]);

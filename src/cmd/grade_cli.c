@@ -16,30 +16,42 @@ typedef struct {
     grade_opts o;
 } grade_args;
 
+/* --alpha A: a float strictly between 0 and 0.5 */
+static int parse_alpha(void *ctx, const char *flag, const char *v)
+{
+    float *alpha = ctx;
+    const cli_flag f = {flag, CLI_FLOAT, alpha, 0, 0, NULL, NULL, NULL};
+    if (cli_parse_value("grade", &f, v, NULL)) return 1;
+    if (*alpha > 0.0f && *alpha < 0.5f) return 0;
+    return cli_fail("grade", flag, "a level in (0, 0.5)", v);
+}
+
 static int parse_args(grade_args *a, int argc, char **argv)
 {
-    int i;
     float alpha = 0.01f;
+    const cli_flag flags[] = {
+        {"--ref", CLI_STRING, &a->ref, 0, 0, NULL, NULL, NULL},
+        {"--var", CLI_STRING, &a->var, 0, 0, NULL, NULL, NULL},
+        {"--heatmap", CLI_STRING, &a->heatmap, 0, 0, NULL, NULL, NULL},
+        {"--spp", CLI_INT, &a->o.spp, 1, 1 << 30, NULL, NULL, NULL},
+        {"--ref-spp", CLI_INT, &a->o.ref_spp, 1, 1 << 30, NULL, NULL, NULL},
+        {"--block", CLI_INT, &a->o.block, 2, 1 << 20, NULL, NULL, NULL},
+        {"--alpha", CLI_CUSTOM, NULL, 0, 0, NULL, parse_alpha, NULL},
+        {NULL, CLI_SWITCH, NULL, 0, 0, NULL, NULL, NULL}};
+    const cli_flag *tables[] = {flags, NULL};
+    const char *words[1];
+    int n;
     memset(a, 0, sizeof *a);
-    for (i = 1; i < argc; i++) {
-        const char *f = argv[i], *v;
-        if (f[0] != '-' && !a->image) { a->image = f; continue; }
-        if (f[0] != '-') { fprintf(stderr, "pathlab: grade: one image only, got '%s' and '%s'\n" GRADE_USAGE, a->image, f); return 1; }
-        if (!(v = cli_value(argc, argv, &i))) return 1;
-        if (!strcmp(f, "--ref")) a->ref = v;
-        else if (!strcmp(f, "--var")) a->var = v;
-        else if (!strcmp(f, "--heatmap")) a->heatmap = v;
-        else if (!strcmp(f, "--spp")) { if (cli_int(f, v, 1, 1 << 30, &a->o.spp)) return 1; }
-        else if (!strcmp(f, "--ref-spp")) { if (cli_int(f, v, 1, 1 << 30, &a->o.ref_spp)) return 1; }
-        else if (!strcmp(f, "--block")) { if (cli_int(f, v, 2, 1 << 20, &a->o.block)) return 1; }
-        else if (!strcmp(f, "--alpha")) { if (cli_float(f, v, &alpha)) return 1; }
-        else { fprintf(stderr, "pathlab: grade: unknown flag '%s'\n" GRADE_USAGE, f); return 1; }
-    }
+    if (cli_parse("grade", argc, argv, tables, &alpha, words, 1, &n)) return 1;
+    a->image = n ? words[0] : NULL;
     a->o.alpha = alpha;
-    if (!a->image || !a->ref) { fprintf(stderr, "pathlab: grade needs an image and a reference\n" GRADE_USAGE); return 1; }
-    if (!(alpha > 0.0f && alpha < 0.5f)) { fprintf(stderr, "pathlab: --alpha expects a level in (0, 0.5), got %g\n", alpha); return 1; }
+    if (!a->image || !a->ref) { fprintf(stderr, "pathlab grade: needs an image and a reference\n" GRADE_USAGE); return 1; }
+    if (a->heatmap && img_format_of(a->heatmap) == IMG_UNKNOWN) {
+        fprintf(stderr, "pathlab grade: --heatmap %s: unknown image format (use .pfm, .ppm or .png)\n", a->heatmap);
+        return 1;
+    }
     if (a->var && !(a->o.spp && a->o.ref_spp)) {
-        fprintf(stderr, "pathlab: grade: --var needs --spp N (the image's samples per pixel) and --ref-spp M (the reference's)\n");
+        fprintf(stderr, "pathlab grade: --var needs --spp N (the image's samples per pixel) and --ref-spp M (the reference's)\n");
         return 1;
     }
     return 0;
@@ -166,14 +178,14 @@ static int read_inputs(const grade_args *a, image *img, image *ref, image *var)
     if (img_read_pfm(ref, a->ref)) { img_free(img); return 2; }
     if (a->var && img_read_pfm(var, a->var)) { img_free(img); img_free(ref); return 2; }
     if (img->w != ref->w || img->h != ref->h || (a->var && (var->w != ref->w || var->h != ref->h))) {
-        fprintf(stderr, "pathlab: grade: sizes differ: %s is %dx%d, %s is %dx%d", a->image, img->w, img->h, a->ref, ref->w, ref->h);
+        fprintf(stderr, "pathlab grade: sizes differ: %s is %dx%d, %s is %dx%d", a->image, img->w, img->h, a->ref, ref->w, ref->h);
         if (a->var) fprintf(stderr, ", %s is %dx%d", a->var, var->w, var->h);
         fprintf(stderr, "\n");
         goto bad;
     }
     for (i = 0; i < 3 * (size_t)ref->w * ref->h; i++)
         if (!isfinite(ref->px[i]) || (a->var && !(var->px[i] >= 0.0f && isfinite(var->px[i])))) {
-            fprintf(stderr, "pathlab: grade: %s has a NaN, infinite or negative value at pixel x %zu, y %zu (y = 0 is the top row)\n",
+            fprintf(stderr, "pathlab grade: %s has a NaN, infinite or negative value at pixel x %zu, y %zu (y = 0 is the top row)\n",
                     isfinite(ref->px[i]) ? a->var : a->ref, i / 3 % (size_t)ref->w, i / 3 / (size_t)ref->w);
             goto bad;
         }
@@ -194,7 +206,7 @@ int grade_main(int argc, char **argv)
     if (parse_args(&a, argc, argv)) return 2;
     if (read_inputs(&a, &img, &ref, &var)) return 2;
     if (grade_compute(&r, &img, &ref, a.var ? &var : NULL, &a.o)) {
-        fprintf(stderr, "pathlab: grade: out of memory\n");
+        fprintf(stderr, "pathlab grade: out of memory\n");
         rc = 2;
     } else {
         print_tests(&r, &a);

@@ -14,6 +14,7 @@
  * after fflush and fclose succeeded: a crash or a full disk never leaves a half-written image, and
  * an existing image stays untouched when the write fails. */
 #include "image/image.h"
+#include <ctype.h>
 #include <errno.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -376,27 +377,37 @@ int img_write_png(const image *im, const char *path, float exposure)
 
 /* ---- by extension ---- */
 
-/* 1 when the file name (after the last '/') ends in ext, ignoring ASCII case. */
-static int has_extension(const char *path, const char *ext)
+const char *img_extension(const char *path)
 {
-    const char *name = strrchr(path, '/'), *dot;
-    size_t i;
-    name = name ? name + 1 : path;
-    dot = strrchr(name, '.');
-    if (!dot || strlen(dot) != strlen(ext)) return 0;
-    for (i = 0; ext[i]; i++) {
-        char c = dot[i];
-        if (c >= 'A' && c <= 'Z') c = (char)(c - 'A' + 'a');
-        if (c != ext[i]) return 0;
-    }
-    return 1;
+    const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
+    return dot && (!slash || dot > slash) ? dot : "";
+}
+
+/* 1 when a and b are the same ASCII text, ignoring case. */
+static int same_ignoring_case(const char *a, const char *b)
+{
+    for (; *a && *b; a++, b++)
+        if (tolower((unsigned char)*a) != tolower((unsigned char)*b)) return 0;
+    return *a == *b;
+}
+
+img_format img_format_of(const char *path)
+{
+    const char *e = img_extension(path);
+    if (same_ignoring_case(e, ".pfm")) return IMG_PFM;
+    if (same_ignoring_case(e, ".ppm")) return IMG_PPM;
+    if (same_ignoring_case(e, ".png")) return IMG_PNG;
+    return IMG_UNKNOWN;
 }
 
 int img_write(const image *im, const char *path, float exposure)
 {
-    if (has_extension(path, ".pfm")) return img_write_pfm(im, path);
-    if (has_extension(path, ".ppm")) return img_write_ppm(im, path, exposure);
-    if (has_extension(path, ".png")) return img_write_png(im, path, exposure);
+    switch (img_format_of(path)) {
+    case IMG_PFM: return img_write_pfm(im, path);
+    case IMG_PPM: return img_write_ppm(im, path, exposure);
+    case IMG_PNG: return img_write_png(im, path, exposure);
+    case IMG_UNKNOWN: break;
+    }
     fprintf(stderr, "%s: unknown image format (use .pfm, .ppm or .png)\n", path);
     return 1;
 }

@@ -11,7 +11,12 @@ typedef struct { int w, h; float *px; } image;   /* px: 3 floats per pixel, row 
 
 int img_alloc(image *im, int w, int h);          /* zero-filled; 0 on success */
 void img_free(image *im);
-/* Writes by extension (.pfm, .ppm or .png, any case); prints "path: reason" on stderr and returns nonzero on error. */
+/* The file formats, told apart by the file name's extension in any case: IMG_UNKNOWN for another
+ * extension or none. img_extension: ".pfm" of "dir/x.pfm" (dot included), "" without one. */
+typedef enum { IMG_UNKNOWN, IMG_PFM, IMG_PPM, IMG_PNG } img_format;
+img_format img_format_of(const char *path);
+const char *img_extension(const char *path);
+/* Writes by extension (img_format_of); prints "path: reason" on stderr and returns nonzero on error. */
 int img_write(const image *im, const char *path, float exposure);
 int img_write_pfm(const image *im, const char *path);
 int img_write_ppm(const image *im, const char *path, float exposure);

@@ -1,24 +1,13 @@
-/* cli.h — strict parsing of flag values: every error names the flag and the value, for a student. */
+/* cli.h — a command's arguments: its flags as a table read by cli_parse, and strict parsers of
+ * flag values. Every error names the command, the flag and the value, for a student:
+ *   pathlab render: --spp expects a whole number from 1 to 1073741824, got 'abc'
+ * Every command reads its arguments with cli_parse. */
 #ifndef PATHLAB_CLI_H
 #define PATHLAB_CLI_H
 #include <stdint.h>
-#include "tracer/render.h"
 #include "math/vec.h"
 
-/* Each returns 0 on success, or prints "pathlab: FLAG expects ..., got 'VALUE'" and returns 1. */
-int cli_int(const char *flag, const char *s, int lo, int hi, int *out);
-int cli_u64(const char *flag, const char *s, uint64_t *out);
-int cli_float(const char *flag, const char *s, float *out);
-int cli_vec3(const char *flag, const char *s, vec3 *out);
-int cli_size(const char *flag, const char *s, int *w, int *h);
-/* One of the names in a NULL-terminated list; *out is its index. */
-int cli_choice(const char *flag, const char *s, const char *const *names, int *out);
-int cli_double(const char *flag, const char *s, double lo, double hi, double *out);
-/* The value after argv[*i], advancing *i; prints an error and returns NULL if missing. */
-const char *cli_value(int argc, char **argv, int *i);
-
-/* A command's flags as a table, parsed by cli_parse: every command reads its arguments this way.
- * kind says what the value is and what `dest` points to:
+/* A flag of a table. kind says what the value is and what `dest` points to:
  *   CLI_SWITCH  no value; int *dest = 1          CLI_STRING  const char **dest = the word
  *   CLI_INT     int *dest in [lo, hi]            CLI_U64     uint64_t *dest
  *   CLI_FLOAT   float *dest (finite)             CLI_DOUBLE  double *dest in [lo, hi]
@@ -37,29 +26,31 @@ typedef struct {
     int *given;
 } cli_flag;
 
-/* The arguments argv[1..argc-1] of command `cmd` ("render", "diff"...): flags of the table (a flag
- * may appear in several tables: the first match wins), and up to max_words other words (file names),
- * stored in words[] and counted in *nwords. A word is anything not starting with '-', or "-" alone.
- * Returns 0, or 1 after printing what is wrong (unknown flag, missing or bad value, extra word). */
+/* The arguments argv[1..argc-1] of command `cmd` ("render", "diff"...): flags of the tables (a flag
+ * may appear in several tables: the first match wins), and up to max_words words (file names),
+ * stored in words[] and counted in *nwords. Flags and words come in any order; a flag's value is
+ * the next argument whatever it starts with (--eye -1,0,0). Returns 0, or 1 after printing what is
+ * wrong (unknown flag, missing or bad value, one word too many). */
 int cli_parse(const char *cmd, int argc, char **argv, const cli_flag *const *tables, void *ctx,
               const char **words, int max_words, int *nwords);
+/* The flag argv[*i] of the tables and its value, leaving *i on the last argument used; 0 or 1 as cli_parse. */
+int cli_parse_flag(const char *cmd, int argc, char **argv, int *i, const cli_flag *const *tables, void *ctx);
+/* The value of flag f, stored as f says (CLI_CUSTOM gets ctx); 0, or 1 after printing why. */
+int cli_parse_value(const char *cmd, const cli_flag *f, const char *value, void *ctx);
+/* 1 if arg is a word, not a flag: it does not start with '-', or it is "-" alone. */
+int cli_is_word(const char *arg);
+/* Prints "pathlab CMD: FLAG expects WHAT, got 'VALUE'" ("pathlab: ..." if cmd is NULL); returns 1. */
+int cli_fail(const char *cmd, const char *flag, const char *what, const char *value);
 
-/* The flags of `pathlab render`, shared with `pathlab compare` (one set per estimator). */
-typedef struct {
-    const char *scene, *out, *variance;
-    float exposure;
-    view vw, flags;                  /* flags: values given on the command line */
-    int eye, target, up, fov, size;  /* which camera flags were given */
-    render_opts ro;
-} render_args;
-
-/* The defaults of pathlab render (16 spp, seed 1, every core, area, brdf, mis-power, 0:inf, rr 3). */
-void render_args_init(render_args *a);
-/* One flag at argv[*i] (advancing *i past its value); a word without '-' is the scene.
- * 0 if understood and valid, else 1 after printing why. */
-int render_parse_flag(render_args *a, int argc, char **argv, int *i);
-/* The view: SCENE.view if it exists, then the camera flags on top, then framing for what is left. */
-int render_make_camera(render_args *a, const scene *s, camera *cam);
-/* ".pfm" of "dir/x.pfm", "" without an extension. */
-const char *path_extension(const char *path);
+/* One value outside a table: each returns 0, or 1 after printing "pathlab: FLAG expects ..., got 'VALUE'". */
+int cli_int(const char *flag, const char *s, int lo, int hi, int *out);
+int cli_u64(const char *flag, const char *s, uint64_t *out);
+int cli_float(const char *flag, const char *s, float *out);
+int cli_double(const char *flag, const char *s, double lo, double hi, double *out);
+int cli_vec3(const char *flag, const char *s, vec3 *out);
+int cli_size(const char *flag, const char *s, int *w, int *h);
+/* One of the names in a NULL-terminated list; *out is its index. */
+int cli_choice(const char *flag, const char *s, const char *const *names, int *out);
+/* The value after argv[*i], advancing *i; prints an error and returns NULL if missing. */
+const char *cli_value(int argc, char **argv, int *i);
 #endif

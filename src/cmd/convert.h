@@ -1,0 +1,8 @@
+/* convert.h — the command `pathlab convert IN.pfm OUT.png|OUT.ppm|OUT.pfm [--exposure STOPS]`:
+ * a PFM (e.g. a --split layer) made viewable, and its size and each channel's mean, min and max. */
+#ifndef PATHLAB_CONVERT_H
+#define PATHLAB_CONVERT_H
+
+/* Exit status 0, 1 when the write failed, 2 for bad arguments or an unreadable input. */
+int convert_main(int argc, char **argv);
+#endif

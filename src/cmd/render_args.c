@@ -1,0 +1,174 @@
+/* render_args.c — the flags of pathlab render as a cli_flag table. Most are plain kinds; the
+ * custom ones store into an enum or a pair of integrator fields. */
+#include "cmd/render_args.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+/* Parses v as a plain kind of value (cli_parse_value), for a custom flag; 0, or 1 after printing why. */
+static int parse_as(const render_args *a, const char *flag, const char *v, cli_kind kind, void *dest, double lo,
+                    double hi, const char *const *choices)
+{
+    const cli_flag f = {flag, kind, dest, lo, hi, choices, NULL, NULL};
+    return cli_parse_value(a->cmd, &f, v, NULL);
+}
+
+/* --bounces A:B, whole numbers with 0 <= A <= B <= 1000, or B = inf */
+static int parse_bounces(void *ctx, const char *flag, const char *v)
+{
+    render_args *a = ctx;
+    const char *b;
+    char *end;
+    long lo = strtol(v, &end, 10), hi = BOUNCES_INF;
+    int ok = end != v && *end == ':' && lo >= 0 && lo <= 1000;
+    if (ok && strcmp(end + 1, "inf")) {
+        b = end + 1;
+        hi = strtol(b, &end, 10);
+        ok = end != b && !*end && lo <= hi && hi <= 1000;
+    }
+    if (!ok) return cli_fail(a->cmd, flag, "A:B with 0 <= A <= B <= 1000, B a whole number or inf (e.g. 0:1, 2:inf)", v);
+    a->ro.io.bmin = (int)lo;
+    a->ro.io.bmax = (int)hi;
+    return 0;
+}
+
+/* --bounce K, the same as --bounces K:K */
+static int parse_bounce(void *ctx, const char *flag, const char *v)
+{
+    render_args *a = ctx;
+    if (parse_as(a, flag, v, CLI_INT, &a->ro.io.bmin, 0, 1000, NULL)) return 1;
+    a->ro.io.bmax = a->ro.io.bmin;
+    return 0;
+}
+
+/* --rr D|off: Russian roulette after D bounces, or never (-1) */
+static int parse_rr(void *ctx, const char *flag, const char *v)
+{
+    render_args *a = ctx;
+    char *end;
+    long d = strtol(v, &end, 10);
+    if (!strcmp(v, "off")) { a->ro.io.rr_depth = -1; return 0; }
+    if (end == v || *end || d < 0 || d > 1000) return cli_fail(a->cmd, flag, "a whole number from 0 to 1000, or off", v);
+    a->ro.io.rr_depth = (int)d;
+    return 0;
+}
+
+static int parse_size(void *ctx, const char *flag, const char *v)
+{
+    render_args *a = ctx;
+    int wh[2];
+    if (parse_as(a, flag, v, CLI_SIZE, wh, 0, 0, NULL)) return 1;
+    a->flags.width = wh[0];
+    a->flags.height = wh[1];
+    return 0;
+}
+
+/* --light, --dir, --direct: a name of the strategy's list, stored as its enum */
+static int parse_light(void *ctx, const char *flag, const char *v)
+{
+    render_args *a = ctx;
+    int k;
+    if (parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, LIGHT_STRATEGY_NAMES)) return 1;
+    a->ro.io.light = (light_strategy)k;
+    return 0;
+}
+
+static int parse_dir(void *ctx, const char *flag, const char *v)
+{
+    render_args *a = ctx;
+    int k;
+    if (parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, DIR_STRATEGY_NAMES)) return 1;
+    a->ro.io.dir = (dir_strategy)k;
+    return 0;
+}
+
+static int parse_direct(void *ctx, const char *flag, const char *v)
+{
+    render_args *a = ctx;
+    int k;
+    if (parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, DIRECT_STRATEGY_NAMES)) return 1;
+    a->ro.io.direct = (direct_strategy)k;
+    return 0;
+}
+
+void render_flag_table(render_args *a, cli_flag t[RENDER_NFLAGS])
+{
+    const cli_flag flags[RENDER_NFLAGS] = {
+        {"-o", CLI_STRING, &a->out, 0, 0, NULL, NULL, NULL},
+        {"--variance", CLI_STRING, &a->variance, 0, 0, NULL, NULL, NULL},
+        {"--spp", CLI_INT, &a->ro.spp, 1, 1 << 30, NULL, NULL, NULL},
+        {"--seed", CLI_U64, &a->ro.seed, 0, 0, NULL, NULL, NULL},
+        {"--threads", CLI_INT, &a->ro.threads, 1, 256, NULL, NULL, NULL},
+        {"--quiet", CLI_SWITCH, &a->ro.quiet, 0, 0, NULL, NULL, NULL},
+        {"--exposure", CLI_FLOAT, &a->exposure, 0, 0, NULL, NULL, NULL},
+        {"--eye", CLI_VEC3, &a->flags.eye, 0, 0, NULL, NULL, &a->eye},
+        {"--target", CLI_VEC3, &a->flags.target, 0, 0, NULL, NULL, &a->target},
+        {"--up", CLI_VEC3, &a->flags.up, 0, 0, NULL, NULL, &a->up},
+        {"--fov", CLI_FLOAT, &a->flags.fov, 0, 0, NULL, NULL, &a->fov},
+        {"--size", CLI_CUSTOM, NULL, 0, 0, NULL, parse_size, &a->size},
+        {"--pixel-center", CLI_SWITCH, &a->ro.pixel_center, 0, 0, NULL, NULL, NULL},
+        {"--bounces", CLI_CUSTOM, NULL, 0, 0, NULL, parse_bounces, NULL},
+        {"--bounce", CLI_CUSTOM, NULL, 0, 0, NULL, parse_bounce, NULL},
+        {"--split", CLI_SWITCH, &a->ro.io.split, 0, 0, NULL, NULL, NULL},
+        {"--light", CLI_CUSTOM, NULL, 0, 0, NULL, parse_light, NULL},
+        {"--dir", CLI_CUSTOM, NULL, 0, 0, NULL, parse_dir, NULL},
+        {"--direct", CLI_CUSTOM, NULL, 0, 0, NULL, parse_direct, NULL},
+        {"--rr", CLI_CUSTOM, NULL, 0, 0, NULL, parse_rr, NULL},
+        {NULL, CLI_SWITCH, NULL, 0, 0, NULL, NULL, NULL}};
+    memcpy(t, flags, sizeof flags);
+}
+
+int render_parse_flag(render_args *a, int argc, char **argv, int *i)
+{
+    cli_flag t[RENDER_NFLAGS];
+    const cli_flag *tables[2];
+    if (cli_is_word(argv[*i])) {
+        if (a->scene) {
+            fprintf(stderr, "pathlab %s: one scene only, got '%s' and '%s'\n", a->cmd, a->scene, argv[*i]);
+            return 1;
+        }
+        a->scene = argv[*i];
+        return 0;
+    }
+    render_flag_table(a, t);
+    tables[0] = t;
+    tables[1] = NULL;
+    return cli_parse_flag(a->cmd, argc, argv, i, tables, a);
+}
+
+void render_args_init(render_args *a)
+{
+    memset(a, 0, sizeof *a);
+    a->cmd = "render";
+    a->ro.spp = 16;
+    a->ro.seed = 1;
+    a->ro.threads = (int)sysconf(_SC_NPROCESSORS_ONLN);
+    a->ro.io.light = LIGHT_AREA;
+    a->ro.io.dir = DIR_BRDF;
+    a->ro.io.direct = DIRECT_MIS_POWER;
+    a->ro.io.bmin = 0;
+    a->ro.io.bmax = BOUNCES_INF;
+    a->ro.io.rr_depth = 3;
+}
+
+int render_make_camera(render_args *a, const scene *s, camera *cam)
+{
+    char path[4096];
+    size_t n = strlen(a->scene) - strlen(img_extension(a->scene));
+    vec3 lo, hi;
+    view_defaults(&a->vw);
+    if (n + 6 < sizeof path) {
+        memcpy(path, a->scene, n);
+        strcpy(path + n, ".view");
+        if (view_read(&a->vw, path) > 0) return 1;
+    }
+    if (a->eye) { a->vw.eye = a->flags.eye; a->vw.has_eye = 1; }
+    if (a->target) { a->vw.target = a->flags.target; a->vw.has_target = 1; }
+    if (a->up) a->vw.up = a->flags.up;
+    if (a->fov) a->vw.fov = a->flags.fov;
+    if (a->size) { a->vw.width = a->flags.width; a->vw.height = a->flags.height; }
+    mesh_bounds(&s->m, &lo, &hi);
+    view_frame_bounds(&a->vw, lo, hi);
+    return camera_init(cam, &a->vw);
+}

@@ -1,0 +1,28 @@
+/* render_args.h — the flags of `pathlab render`, shared with `pathlab compare` (one set per
+ * estimator): their defaults, their cli_flag table, one flag at a time, and the camera they describe. */
+#ifndef PATHLAB_RENDER_ARGS_H
+#define PATHLAB_RENDER_ARGS_H
+#include "util/cli.h"
+#include "tracer/render.h"
+
+typedef struct {
+    const char *cmd;                 /* the command, in messages: "render" (set by render_args_init) */
+    const char *scene, *out, *variance;
+    float exposure;
+    view vw, flags;                  /* flags: values given on the command line */
+    int eye, target, up, fov, size;  /* which camera flags were given */
+    render_opts ro;
+} render_args;
+
+#define RENDER_NFLAGS 21   /* the flags of render_flag_table, and its closing NULL entry */
+
+/* The defaults of pathlab render (16 spp, seed 1, every core, area, brdf, mis-power, 0:inf, rr 3). */
+void render_args_init(render_args *a);
+/* Fills t with render's flags, each writing into *a; parse them with cli_parse(..., ctx = a, ...). */
+void render_flag_table(render_args *a, cli_flag t[RENDER_NFLAGS]);
+/* One argument argv[*i]: a flag of the table (advancing *i past its value), or a word, which is the
+ * scene. 0 if understood and valid, else 1 after printing why. */
+int render_parse_flag(render_args *a, int argc, char **argv, int *i);
+/* The view: SCENE.view if it exists, then the camera flags on top, then framing for what is left. */
+int render_make_camera(render_args *a, const scene *s, camera *cam);
+#endif

@@ -4,7 +4,7 @@
 #include <math.h>
 #include <string.h>
 #include "cmd/bench_rays.h"
-#include "check/check_sampling.h"
+#include "check/command.h"
 #include "util/cli.h"
 #include "cmd/compare.h"
 #include "cmd/diff.h"

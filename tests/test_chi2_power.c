@@ -1,12 +1,14 @@
 /* test_chi2_power.c — the checks of check-sampling have power: fed deliberately wrong samples, their
- * chi-square verdict must be FAIL. Each broken routine is one of pathlab's cases (src/check_sampling*.c)
+ * chi-square verdict must be FAIL. Each broken routine is one of pathlab's cases (src/check/cases.c)
  * with a sampler or a pdf swapped for a wrong one, run through the same cells, quadrature and pooling,
  * at the same per-case level as `pathlab check-sampling` (Sidak over its cases). Each comes with its
  * control, the unbroken case with the same sample count, which must pass: the FAIL is the breakage's. */
-#include "tracer/brdf.h"
 #include "check.h"
-#include "check/check_sampling.h"
+#include "check/cases.h"
+#include "check/run.h"
+#include "check/verdict.h"
 #include "stats/significance.h"
+#include "tracer/brdf.h"
 #include "tracer/sampling.h"
 #include <stdlib.h>
 #include <string.h>

@@ -1,6 +1,6 @@
 /* test_sampling.c — the warps of sampling.h, the BRDF of brdf.h and the light sampling of light.h,
- * tested against their pdfs. The cases are those of `pathlab check-sampling` (src/check_sampling*.c:
- * each pdf beside its sampler, the cells, the quadrature), here with 1000000 samples each (the BRDF's
+ * tested against their pdfs. The cases are those of `pathlab check-sampling` (src/check/cases.c: each
+ * pdf beside its sampler, the cells, the quadrature), here with 1000000 samples each (the BRDF's
  * 500000; PATHLAB_FAST=1, for sanitizer runs, a tenth) and each check on a line of its own:
  *   1. each pdf integrates to what it should (numerical quadrature, to 1e-3; the BRDF's both through
  *      the half vector and, a second quadrature, in the wi domain);
@@ -12,21 +12,23 @@
  * their support, brdf_eval against the slides' formula, light_build, 300000 emitters, and the
  * reference Arvo map (arvo.h) that bins the solid-angle samples: round trip, and uniformity
  * (directions drawn by rejection). */
-#include "check/arvo.h"
-#include "tracer/brdf.h"
 #include "check.h"
-#include "check/check_sampling.h"
-#include "stats/significance.h"
+#include "check/arvo.h"
+#include "check/cases.h"
 #include "check/chi2_sphere.h"
-#include "tracer/light.h"
+#include "check/light_scene.h"
+#include "check/run.h"
+#include "check/verdict.h"
 #include "math/rng.h"
+#include "stats/significance.h"
+#include "tracer/brdf.h"
+#include "tracer/light.h"
 #include "tracer/sampling.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
-#define PI 3.14159265358979323846
 #define SEED 1
 
 static double alpha_case;   /* Sidak: 1 - (1 - CHECK_ALPHA)^(1 / number of chi-square cases) */
@@ -122,30 +124,34 @@ static void test_brdf_eval(void)
 
 /* ---------- the reference Arvo map ---------- */
 
-/* Round trip (u1, u2) -> w -> (u1, u2), Girard's area against Van Oosterom and Strackee's, and
- * directions uniform over the triangle (drawn by rejection from a cone) binned by arvo_coords:
- * they must be uniform in (u1, u2). */
-static void test_arvo(void)
+/* Spherical triangles seen from points: the corners, then the point. */
+static const double ARVO_TRIS[3][3][3] = {{{0, 0, 0}, {1, 0, 0}, {0.3, 0.8, 0}}, {{-2, -1, -1}, {3, -1, -1.2}, {0.1, 4, -0.8}},
+                                          {{0, 0, 5}, {0.01, 0, 5}, {0, 0.03, 5.001}}};
+static const double ARVO_P[3][3] = {{1.0, 0.4, 0.376}, {0.2, 0.1, 0.3}, {0.2, 0.1, 0.3}};
+
+/* The unit corners of spherical triangle t. */
+static void arvo_corners(int t, dvec c[3])
 {
-    static const double tris[3][3][3] = {{{0, 0, 0}, {1, 0, 0}, {0.3, 0.8, 0}}, {{-2, -1, -1}, {3, -1, -1.2}, {0.1, 4, -0.8}},
-                                         {{0, 0, 5}, {0.01, 0, 5}, {0, 0.03, 5.001}}};
-    static const double p[3][3] = {{1.0, 0.4, 0.376}, {0.2, 0.1, 0.3}, {0.2, 0.1, 0.3}};
-    enum { G = 8, N = 200000 };
-    double worst = 0.0, area_gap = 0.0, obs[G * G], expct[G * G];
-    chi2_result r;
-    int t, i, k;
-    pcg32 rng;
-    pcg32_init(&rng, 77u, 5u);
+    int k;
+    for (k = 0; k < 3; k++)
+        c[k] = dv_normalize(dv(ARVO_TRIS[t][k][0] - ARVO_P[t][0], ARVO_TRIS[t][k][1] - ARVO_P[t][1], ARVO_TRIS[t][k][2] - ARVO_P[t][2]));
+}
+
+/* Round trip (u1, u2) -> w -> (u1, u2), and Girard's area against Van Oosterom and Strackee's. */
+static void test_arvo_round_trip(pcg32 *rng)
+{
+    double worst = 0.0, area_gap = 0.0;
+    int t, i;
     for (t = 0; t < 3; t++) {
         dvec c[3];
         arvo_triangle T;
         double vo;
-        for (k = 0; k < 3; k++) c[k] = dv_normalize(dv(tris[t][k][0] - p[t][0], tris[t][k][1] - p[t][1], tris[t][k][2] - p[t][2]));
+        arvo_corners(t, c);
         T = arvo_triangle_from(c[0], c[1], c[2]);
         vo = 2.0 * atan2(fabs(dv_dot(c[0], dv_cross(c[1], c[2]))), 1.0 + dv_dot(c[0], c[1]) + dv_dot(c[1], c[2]) + dv_dot(c[2], c[0]));
         area_gap = fmax(area_gap, fabs(T.omega - vo));   /* Girard: about 1e-16 / (side^2) */
         for (i = 0; i < 10000; i++) {
-            double u1 = pcg32_double(&rng), u2 = pcg32_double(&rng), v1, v2;
+            double u1 = pcg32_double(rng), u2 = pcg32_double(rng), v1, v2;
             arvo_coords(&T, arvo_direction(&T, u1, u2), &v1, &v2);
             worst = fmax(worst, fmax(fabs(v1 - u1), fabs(v2 - u2) * (u1 > 1e-6)));
         }
@@ -153,38 +159,59 @@ static void test_arvo(void)
     check(worst < 1e-7 && area_gap < 1e-10, "arvo_coords inverts arvo_direction",
           "3 triangles (Omega from 5e-6 to 3 sr), 30000 points: max |u - u'| %.2g; Girard vs Van Oosterom %.2g sr",
           worst, area_gap);
-    {   /* uniform directions over the Omega = 0.5 sr triangle, by rejection */
-        dvec c[3], axis;
-        dframe F;
-        arvo_triangle T;
-        double cmin = 1.0;
-        for (k = 0; k < 3; k++) c[k] = dv_normalize(dv(tris[0][k][0] - p[0][0], tris[0][k][1] - p[0][1], tris[0][k][2] - p[0][2]));
-        T = arvo_triangle_from(c[0], c[1], c[2]);
-        axis = dv_normalize(dv_lin(dv_lin(c[0], 1.0, c[1], 1.0), 1.0, c[2], 1.0));
-        for (k = 0; k < 3; k++) cmin = fmin(cmin, dv_dot(axis, c[k]));
-        F = dframe_about(axis);
-        memset(obs, 0, sizeof obs);
-        for (k = 0; k < G * G; k++) expct[k] = (double)N / (G * G);
-        for (i = 0; i < N; i++) {
-            double u1, u2;
-            dvec w;
-            for (;;) {   /* inside: on the side of each edge's plane where the third corner is */
-                w = dframe_dir(&F, (1.0 - cmin) * pcg32_double(&rng), 2.0 * PI * pcg32_double(&rng));
-                for (k = 0; k < 3; k++) {
-                    dvec e = dv_cross(c[k], c[(k + 1) % 3]);
-                    if (dv_dot(w, e) * dv_dot(c[(k + 2) % 3], e) <= 0.0) break;
-                }
-                if (k == 3) break;
-            }
-            arvo_coords(&T, w, &u1, &u2);
-            obs[(int)fmin(u1 * G, G - 1) * G + (int)fmin(u2 * G, G - 1)] += 1.0;
+}
+
+/* A direction uniform over the spherical triangle c, by rejection from the cone of F.n down to cos
+ * cmin: inside is on the side of each edge's plane where the third corner is. */
+static dvec uniform_in_triangle(const dvec c[3], const dframe *F, double cmin, pcg32 *rng)
+{
+    dvec w;
+    int k;
+    for (;;) {
+        w = dframe_dir(F, (1.0 - cmin) * pcg32_double(rng), 2.0 * PI * pcg32_double(rng));
+        for (k = 0; k < 3; k++) {
+            dvec e = dv_cross(c[k], c[(k + 1) % 3]);
+            if (dv_dot(w, e) * dv_dot(c[(k + 2) % 3], e) <= 0.0) break;
         }
-        r = chi2_test(obs, expct, G * G);
-        n_chi2_done++;
-        check(r.p >= alpha_case, "chi2 arvo_coords of uniform directions (rejection sampling)",
-              "chi2 %.1f, dof %d, p = %.3g, alpha per case %.2g; %d x %d cells, N = %d", r.chi2, r.dof, r.p,
-              alpha_case, G, G, N);
+        if (k == 3) return w;
     }
+}
+
+/* Directions uniform over the Omega = 0.5 sr triangle, binned by arvo_coords: uniform in (u1, u2). */
+static void test_arvo_uniform(pcg32 *rng)
+{
+    enum { G = 8, N = 200000 };
+    double obs[G * G], expct[G * G], cmin = 1.0, u1, u2;
+    dvec c[3], axis;
+    dframe F;
+    arvo_triangle T;
+    chi2_result r;
+    int i, k;
+    arvo_corners(0, c);
+    T = arvo_triangle_from(c[0], c[1], c[2]);
+    axis = dv_normalize(dv_lin(dv_lin(c[0], 1.0, c[1], 1.0), 1.0, c[2], 1.0));
+    for (k = 0; k < 3; k++) cmin = fmin(cmin, dv_dot(axis, c[k]));
+    F = dframe_about(axis);
+    memset(obs, 0, sizeof obs);
+    for (k = 0; k < G * G; k++) expct[k] = (double)N / (G * G);
+    for (i = 0; i < N; i++) {
+        arvo_coords(&T, uniform_in_triangle(c, &F, cmin, rng), &u1, &u2);
+        obs[(int)fmin(u1 * G, G - 1) * G + (int)fmin(u2 * G, G - 1)] += 1.0;
+    }
+    r = chi2_test(obs, expct, G * G);
+    n_chi2_done++;
+    check(r.p >= alpha_case, "chi2 arvo_coords of uniform directions (rejection sampling)",
+          "chi2 %.1f, dof %d, p = %.3g, alpha per case %.2g; %d x %d cells, N = %d", r.chi2, r.dof, r.p, alpha_case,
+          G, G, N);
+}
+
+/* The reference Arvo map that bins the solid-angle samples (one stream for both tests). */
+static void test_arvo(void)
+{
+    pcg32 rng;
+    pcg32_init(&rng, 77u, 5u);
+    test_arvo_round_trip(&rng);
+    test_arvo_uniform(&rng);
 }
 
 /* ---------- the cases of check-sampling ---------- */

@@ -1,7 +1,6 @@
 /* arvo.c — Arvo's map and its inverse in double (arvo.h). */
 #include "check/arvo.h"
 
-
 static double clamp01(double x) { return x < 0.0 ? 0.0 : x > 1.0 ? 1.0 : x; }
 
 /* Angle at A between the great arcs AB and AC: the angle between the normals A x B and A x C, with
@@ -12,7 +11,8 @@ static double corner_angle(dvec A, dvec B, dvec C)
     return atan2(fabs(dv_dot(A, dv_cross(B, C))), dv_dot(B, C) - dv_dot(A, B) * dv_dot(A, C));
 }
 
-double arvo_area(dvec A, dvec B, dvec C)
+/* Area of the spherical triangle of unit corners A, B, C by Girard's theorem. */
+static double arvo_area(dvec A, dvec B, dvec C)
 {
     return corner_angle(A, B, C) + corner_angle(B, C, A) + corner_angle(C, A, B) - PI;
 }

@@ -5,7 +5,7 @@
  * d omega = Omega du1 du2, so a direction sampler uniform over ABC gives (u1, u2) uniform. */
 #ifndef PATHLAB_ARVO_H
 #define PATHLAB_ARVO_H
-#include "check/chi2_sphere.h"
+#include "math/dvec.h"
 
 typedef struct {
     dvec A, B, C;          /* unit corners */
@@ -15,8 +15,6 @@ typedef struct {
 
 /* The spherical triangle of unit corners A, B, C. */
 arvo_triangle arvo_triangle_from(dvec A, dvec B, dvec C);
-/* Area of the spherical triangle of unit corners A, B, C by Girard's theorem. */
-double arvo_area(dvec A, dvec B, dvec C);
 /* The direction of coordinates (u1, u2). */
 dvec arvo_direction(const arvo_triangle *t, double u1, double u2);
 /* The coordinates of a unit direction w in the triangle (clamped to [0, 1]). */

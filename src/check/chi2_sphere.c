@@ -71,9 +71,10 @@ static double piece_integral(const sphere_domain *d, double t0, double t1, doubl
     return sum;
 }
 
-/* [t0, t1] is cut into pieces no wider than their distance to the axis (geometrically toward t = 0,
+/* Integral over the cell [t0, t1] x [p0, p1], in panels (tpanels per piece of t, ppanels in phi).
+ * [t0, t1] is cut into pieces no wider than their distance to the axis (geometrically toward t = 0,
  * down to 1e-12 t1), which resolves lobes of any width about the axis. */
-double sphere_cell_integral(const sphere_domain *d, double t0, double t1, double p0, double p1, int tpanels, int ppanels)
+static double sphere_cell_integral(const sphere_domain *d, double t0, double t1, double p0, double p1, int tpanels, int ppanels)
 {
     double sum = 0.0, lo, hi;
     if (t0 > 0.0) {

@@ -26,8 +26,6 @@ typedef struct {
     int nkinks;
 } sphere_domain;
 
-/* Integral over the cell [t0, t1] x [p0, p1], in panels (tpanels per piece of t, ppanels in phi). */
-double sphere_cell_integral(const sphere_domain *d, double t0, double t1, double p0, double p1, int tpanels, int ppanels);
 /* Integral over t in [0, tmax] (tmax = 2: the whole sphere). */
 double sphere_integral(const sphere_domain *d, double tmax, int ppanels);
 

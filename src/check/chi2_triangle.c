@@ -14,7 +14,8 @@ int tri_cell(double b1, double b2, int n)
     return (x - a) + (y - b) < 1.0 || a + b == n - 1 ? a * n + b : (n - 1 - a) * n + (n - 1 - b);
 }
 
-void tri_cell_corners(int k, int n, double b1[3], double b2[3])
+/* The corners (b1[i], b2[i]) of sub-triangle k. */
+static void tri_cell_corners(int k, int n, double b1[3], double b2[3])
 {
     int i = k / n, j = k % n;
     if (i + j <= n - 1) {   /* near sub-triangle of square (i, j) */

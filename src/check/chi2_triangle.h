@@ -7,8 +7,6 @@
 /* Index in [0, n^2) of the sub-triangle holding the barycentrics (b1, b2) of the 2nd and 3rd corners
  * (a point slightly outside goes to the nearest cell). */
 int tri_cell(double b1, double b2, int n);
-/* The corners (b1[i], b2[i]) of sub-triangle k. */
-void tri_cell_corners(int k, int n, double b1[3], double b2[3]);
 /* Integral of f(b1, b2) db1 db2 over sub-triangle k (the whole triangle has area 1/2 in (b1, b2)):
  * Gauss-Legendre on the square collapsed onto the triangle, exact for polynomials of degree 14. */
 double tri_cell_integral(double (*f)(const void *ctx, double b1, double b2), const void *ctx, int k, int n);

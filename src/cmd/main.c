@@ -1,8 +1,8 @@
 /* main.c — pathlab's command line: the help text, and each command handed to its own file
- * (render_cmd.c, convert.c, diff.c, grade_cli.c, compare.c, bench_rays.c, check/check_sampling.c). */
+ * (render_cmd.c, convert.c, diff.c, grade_cli.c, compare.c, bench_rays.c, check/command.c). */
 #include <stdio.h>
 #include <string.h>
-#include "check/check_sampling.h"
+#include "check/command.h"
 #include "cmd/bench_rays.h"
 #include "cmd/compare.h"
 #include "cmd/convert.h"

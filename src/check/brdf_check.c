@@ -1,4 +1,4 @@
-/* check_sampling_brdf.c — brdf_sample against brdf_pdf (check_sampling.h), for one material and wo.
+/* brdf_check.c — brdf_sample against brdf_pdf (brdf_check.h), for one material and wo.
  * What "integrates to 1" means for the Blinn lobe: wi = reflect(wo, h) with h of density
  * (Ns+1)/(2 pi) cos^Ns(theta_h) on h.z > 0 has a density over the whole sphere of integral 1, but
  * blinn_pdf is that density only where h faces wo (wo.h > 0), and 0 for the reflections about half
@@ -11,7 +11,7 @@
  * one-to-one map of the upper hemisphere of wi onto a part of the upper hemisphere of h, where the
  * lobe is round even at grazing wo (in wi it is a sliver 1/cos(theta_o) times narrower than long);
  * the expected density there is brdf_pdf(wi) |dwi/dh| = brdf_pdf(wi) 4 (wo.h). */
-#include "check/check_sampling.h"
+#include "check/brdf_check.h"
 #include "check/chi2_sphere.h"
 #include "stats/quadrature.h"
 #include <stdio.h>
@@ -192,7 +192,7 @@ void check_brdf(const brdf_routine *b, long n, uint64_t seed, sampling_result *r
 
     /* 2 and 3: sample, check the pdfs on the way, chi-square in the half-vector domain */
     r->has_formula = 1, r->formula_tol = 1e-4 + 8.0 * b->mat.Ns * 5.96e-8;   /* float rounding of cos theta_h, times Ns */
-    s = chi2_directions(&dh, draw_brdf, &c, 1.0, c.ps * (1.0 - p_up), n, check_stream(seed, 0), check_stream(seed, 1));
+    s = chi2_directions(&dh, draw_brdf, &c, 1.0, c.ps * (1.0 - p_up), n, case_stream(seed, 0), case_stream(seed, 1));
     r->n = n, r->chi2 = s.chi2, r->discarded = s.discarded;
     snprintf(r->cells, sizeof r->cells, "%d x %d cells of the half vector + below the surface", s.rings, SPHERE_SECTORS);
 }

@@ -1,9 +1,13 @@
-/* check_sampling.c — `pathlab check-sampling [--samples N] [--seed S] [--threads T] [--quiet]`:
- * runs the cases of check_sampling_cases.c and prints one row per sampling routine (check_sampling.h). */
-#include "check/check_sampling.h"
-#include "sys/clock.h"
-#include "util/cli.h"
+/* command.c — `pathlab check-sampling [--samples N] [--seed S] [--threads T] [--quiet]`: runs the
+ * cases of cases.h and prints one row per sampling routine (command.h). */
+#include "check/command.h"
+#include "check/cases.h"
+#include "check/run.h"
+#include "check/verdict.h"
 #include "stats/significance.h"
+#include "sys/clock.h"
+#include "sys/parallel.h"
+#include "util/cli.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,37 +18,35 @@
 
 typedef struct { long samples; uint64_t seed; int threads, quiet; } options;
 
-static const char *USAGE_CHECK =
-    "usage: pathlab check-sampling [--samples N] [--seed S] [--threads T] [--quiet]\n"
+static const char *USAGE_LINE = "usage: pathlab check-sampling [--samples N] [--seed S] [--threads T] [--quiet]\n";
+static const char *USAGE_FLAGS =
     "  --samples N   samples per case (default 1000000; the BRDF cases draw N/2)\n"
     "  --seed S      random seed (default 1)\n"
     "  --threads T   worker threads (default: every core); the results do not depend on it\n"
     "  --quiet       print only the failing rows and the summary line\n";
 
-/* 0 when the flags are valid, 1 on an error, -1 for --help */
+/* 0 when the flags are valid, 1 on an error (after printing why and the usage line), -1 for --help */
 static int parse_options(options *o, int argc, char **argv)
 {
-    int i, v;
-    o->samples = DEFAULT_SAMPLES, o->seed = 1, o->quiet = 0;
+    int samples = DEFAULT_SAMPLES, help = 0, nwords;
+    const cli_flag flags[] = {
+        {"--samples", CLI_INT, &samples, 1000, 1 << 30, NULL, NULL, NULL},
+        {"--seed", CLI_U64, &o->seed, 0, 0, NULL, NULL, NULL},
+        {"--threads", CLI_INT, &o->threads, 1, PARALLEL_MAX_THREADS, NULL, NULL, NULL},
+        {"--quiet", CLI_SWITCH, &o->quiet, 0, 0, NULL, NULL, NULL},
+        {"--help", CLI_SWITCH, &help, 0, 0, NULL, NULL, NULL},
+        {"-h", CLI_SWITCH, &help, 0, 0, NULL, NULL, NULL},
+        {NULL, CLI_SWITCH, NULL, 0, 0, NULL, NULL, NULL}};
+    const cli_flag *const tables[] = {flags, NULL};
+    o->seed = 1, o->quiet = 0;
     o->threads = (int)sysconf(_SC_NPROCESSORS_ONLN);
     if (o->threads < 1) o->threads = 1;
-    for (i = 1; i < argc; i++) {
-        const char *f = argv[i], *val;
-        if (!strcmp(f, "--help") || !strcmp(f, "-h")) return -1;
-        if (!strcmp(f, "--quiet")) { o->quiet = 1; continue; }
-        if (strcmp(f, "--samples") && strcmp(f, "--seed") && strcmp(f, "--threads")) {
-            fprintf(stderr, "pathlab: check-sampling: unknown flag '%s'\n%s", f, USAGE_CHECK);
-            return 1;
-        }
-        if (!(val = cli_value(argc, argv, &i))) return 1;
-        if (!strcmp(f, "--seed")) {
-            if (cli_u64(f, val, &o->seed)) return 1;
-        } else if (!strcmp(f, "--samples")) {
-            if (cli_int(f, val, 1000, 1 << 30, &v)) return 1;
-            o->samples = v;
-        } else if (cli_int(f, val, 1, 256, &o->threads)) return 1;
+    if (cli_parse("check-sampling", argc, argv, tables, NULL, NULL, 0, &nwords)) {
+        fputs(USAGE_LINE, stderr);
+        return 1;
     }
-    return 0;
+    o->samples = samples;
+    return help ? -1 : 0;
 }
 
 static const char *group_title(sampling_case_kind k)
@@ -111,9 +113,10 @@ int check_sampling_main(int argc, char **argv)
     options o;
     double alpha_case, t0 = clock_seconds();
     int n, i, failed = 0;
-    if ((i = parse_options(&o, argc, argv)) != 0) {
-        if (i < 0) fputs(USAGE_CHECK, stdout);
-        return i < 0 ? 0 : 2;
+    if ((i = parse_options(&o, argc, argv)) > 0) return 2;
+    if (i < 0) {
+        printf("%s%s", USAGE_LINE, USAGE_FLAGS);
+        return 0;
     }
     n = check_sampling_cases(cases, CHECK_MAX_CASES);
     alpha_case = sidak_level(CHECK_ALPHA, n);

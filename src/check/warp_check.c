@@ -1,6 +1,6 @@
-/* check_sampling_warps.c — the warps of sampling.c against their pdfs: directions about +z
- * (uniform, cosine, cos^m: the Blinn half vector) and points on a triangle (check_sampling.h). */
-#include "check/check_sampling.h"
+/* warp_check.c — the warps of sampling.c against their pdfs: directions about +z (uniform, cosine,
+ * cos^m: the Blinn half vector) and points on a triangle (warp_check.h). */
+#include "check/warp_check.h"
 #include "check/chi2_sphere.h"
 #include "check/chi2_triangle.h"
 #include <stdio.h>
@@ -57,8 +57,8 @@ void check_warp(const warp_routine *W, long n, uint64_t seed, sampling_result *r
     /* the integral over the whole sphere: the pdf must vanish below the horizon */
     r->nintegrals = 1;
     r->integral[0] = sphere_integral(&d, 2.0, 4), r->integral_want[0] = 1.0, r->integral_what[0] = "over the sphere";
-    spot_check_warp(&w, check_stream(seed, 2), r);
-    s = chi2_directions(&d, draw_warp, &w, 1.0, 0.0, n, check_stream(seed, 0), check_stream(seed, 1));
+    spot_check_warp(&w, case_stream(seed, 2), r);
+    s = chi2_directions(&d, draw_warp, &w, 1.0, 0.0, n, case_stream(seed, 0), case_stream(seed, 1));
     r->n = n, r->chi2 = s.chi2, r->discarded = s.discarded;
     snprintf(r->cells, sizeof r->cells, "%d x %d cells in (1 - cos theta, phi)", s.rings, SPHERE_SECTORS);
 }
@@ -70,7 +70,7 @@ void check_triangle(const triangle_routine *T, long n, uint64_t seed, sampling_r
 {
     enum { cells = TRIANGLE_GRID * TRIANGLE_GRID };
     double obs[cells], expct[cells];
-    pcg32 rng = check_stream(seed, 0);
+    pcg32 rng = case_stream(seed, 0);
     long i;
     int k;
     memset(obs, 0, sizeof obs);

@@ -1,5 +1,5 @@
-/* check_sampling_lights.c — light_sample_point against light_pdf_area (check_sampling.h): the
- * choice of an emitter, and the point s on it. Cells: one per emitter for the choice. For the point,
+/* light_check.c — light_sample_point against light_pdf_area (light_check.h): the choice of an
+ * emitter, and the point s on it. Cells: one per emitter for the choice. For the point,
  * cells that follow the documented strategy, so that each expects about as many samples:
  *  - a point uniform in area: the sub-triangles of the emitter; a cell expects N times the integral
  *    of pdf_A over it;
@@ -12,7 +12,7 @@
  *    Omega (Van Oosterom and Strackee, in float) against Girard's theorem in double.
  * Either layout is right for any sampler, as long as the counts expected are: the layout only
  * decides where the test looks closest. */
-#include "check/check_sampling.h"
+#include "check/light_check.h"
 #include "check/arvo.h"
 #include "check/chi2_triangle.h"
 #include "stats/quadrature.h"
@@ -22,40 +22,9 @@
 
 #define PDF_TOL 1e-6              /* relative: the pdf light_sample_point returns vs light_pdf_area */
 
-/* Scene FIVE: five emitters of different areas, colours and sides (the fourth faces -z), a wall. */
-static const float FIVE_P[18][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0},       {2, 0, 0},    {4, 0, 0},       {2, 1, 0},
-                                    {0, 2, 0}, {0.3f, 2, 0}, {0, 2.2f, 0}, {0, 0, 1},    {0, 1, 1},       {3, 0, 1},
-                                    {5, 5, 5}, {7, 5, 5},    {5, 7, 5},    {0, 0, 3},    {0, 0.01f, 3},   {0.02f, 0, 3}};
-static const float FIVE_KE[6][3] = {{1, 1, 1}, {5, 0, 0}, {0, 0, 20}, {0.2f, 0.5f, 0.1f}, {0, 0, 0}, {100, 100, 100}};
-static const float ONE_P[3][3] = {{0, 0, 0}, {1, 0, 0}, {0.3f, 0.8f, 0}};
-
-int light_scene_build(light_scene *s, int which)
-{
-    int i, ntris = which == LIGHT_SCENE_FIVE ? 6 : 1;
-    memset(s, 0, sizeof *s);
-    for (i = 0; i < 3 * ntris; i++) {
-        const float *p = which == LIGHT_SCENE_FIVE ? FIVE_P[i] : ONE_P[i];
-        s->P[i] = v3(p[0], p[1], p[2]);
-        s->tri[i] = i;
-    }
-    for (i = 0; i < ntris; i++) {
-        vec3 c = v3_cross(v3_sub(s->P[3 * i + 1], s->P[3 * i]), v3_sub(s->P[3 * i + 2], s->P[3 * i]));
-        const float *Ke = which == LIGHT_SCENE_FIVE ? FIVE_KE[i] : FIVE_KE[0];
-        s->area[i] = 0.5f * v3_length(c);
-        s->Ng[i] = v3_normalize(c);
-        s->mats[i].Kd = v3(0.5f, 0.5f, 0.5f);
-        s->mats[i].Ke = v3(Ke[0], Ke[1], Ke[2]);
-        s->tri_mat[i] = i;
-    }
-    s->m.P = s->P, s->m.nverts = 3 * ntris, s->m.tri = s->tri, s->m.tri_mat = s->tri_mat, s->m.ntris = ntris;
-    s->m.mats = s->mats, s->m.nmats = ntris;
-    return light_build(&s->ls, &s->m, s->Ng, s->area);
-}
-
-void light_scene_free(light_scene *s) { light_free(&s->ls); }
-
 /* ---------- the course's pdf, in double ---------- */
 
+/* Rec. 709 in double: the reference for light.c, which uses math/vec.h's luminance() in float */
 static double luminance_709(vec3 c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
 
 static double choice_weight(const light_scene *s, light_strategy st, int i)
@@ -219,7 +188,7 @@ void check_light_choice(const light_routine *l, long n, uint64_t seed, sampling_
 {
     double obs[LIGHT_SCENE_MAX], expct[LIGHT_SCENE_MAX];
     emitter_ctx e[LIGHT_SCENE_MAX];
-    pcg32 rng = check_stream(seed, 0);
+    pcg32 rng = case_stream(seed, 0);
     light_scene s;
     long j;
     int i;
@@ -240,7 +209,7 @@ void check_light_point(const light_routine *l, long n, uint64_t seed, sampling_r
     int g2 = l->grid * l->grid, i, k, narvo = 0;
     double *obs = calloc((size_t)(LIGHT_SCENE_MAX * g2), sizeof(double)), *expct = calloc((size_t)(LIGHT_SCENE_MAX * g2), sizeof(double));
     emitter_ctx e[LIGHT_SCENE_MAX];
-    pcg32 rng = check_stream(seed, 0);
+    pcg32 rng = case_stream(seed, 0);
     light_scene s;
     long j;
     if (!obs || !expct || begin(&s, l, e, r)) {

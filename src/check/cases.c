@@ -1,12 +1,8 @@
-/* check_sampling_cases.c — the cases of check-sampling with pathlab's routines, running them on
- * threads, and their verdicts (check_sampling.h). */
-#include "check/check_sampling.h"
+/* cases.c — the cases of check-sampling with pathlab's routines (cases.h). */
+#include "check/cases.h"
 #include "tracer/sampling.h"
-#include <pthread.h>
 #include <stdio.h>
 #include <string.h>
-
-#define MAX_THREADS 64
 
 /* ---------- pathlab's routines, in the form of the checks ---------- */
 
@@ -114,86 +110,4 @@ int check_sampling_cases(sampling_case *cases, int max)
     if (add(cases, &n, max, CASE_TRIANGLE, "sample_uniform_triangle")) cases[n - 1].triangle.sample = sample_uniform_triangle;
     add_lights(cases, &n, max);
     return n;
-}
-
-/* ---------- running them ---------- */
-
-void check_sampling_run(const sampling_case *c, long n, uint64_t seed, sampling_result *r)
-{
-    long m = (long)(c->share * (double)n);
-    memset(r, 0, sizeof *r);
-    snprintf(r->routine, sizeof r->routine, "%s", c->name);
-    switch (c->kind) {
-    case CASE_WARP: check_warp(&c->warp, m, seed, r); break;
-    case CASE_TRIANGLE: check_triangle(&c->triangle, m, seed, r); break;
-    case CASE_BRDF: check_brdf(&c->brdf, m, seed, r); break;
-    case CASE_LIGHT_CHOICE: check_light_choice(&c->light, m, seed, r); break;
-    case CASE_LIGHT_POINT: check_light_point(&c->light, m, seed, r); break;
-    }
-}
-
-/* splitmix64 of (seed, i): the seeds of different cases are unrelated */
-static uint64_t case_seed(uint64_t seed, int i)
-{
-    return splitmix64_mix(seed + 0x9E3779B97F4A7C15ULL * (uint64_t)(i + 1));
-}
-
-typedef struct {
-    const sampling_case *c;
-    sampling_result *r;
-    int ncases, next;
-    long n;
-    uint64_t seed;
-    pthread_mutex_t lock;
-} work;
-
-static void *worker(void *arg)
-{
-    work *w = arg;
-    for (;;) {
-        int i;
-        pthread_mutex_lock(&w->lock);
-        i = w->next++;
-        pthread_mutex_unlock(&w->lock);
-        if (i >= w->ncases) return NULL;
-        check_sampling_run(&w->c[i], w->n, case_seed(w->seed, i), &w->r[i]);
-    }
-}
-
-void check_sampling_run_all(const sampling_case *c, int ncases, long n, uint64_t seed, int threads, sampling_result *r)
-{
-    pthread_t tid[MAX_THREADS];
-    work w;
-    int t, started = 0;
-    w.c = c, w.r = r, w.ncases = ncases, w.next = 0, w.n = n, w.seed = seed;
-    pthread_mutex_init(&w.lock, NULL);
-    if (threads > MAX_THREADS) threads = MAX_THREADS;
-    for (t = 1; t < threads; t++)   /* this thread is one of the workers */
-        if (pthread_create(&tid[started], NULL, worker, &w) == 0) started++;
-    worker(&w);
-    for (t = 0; t < started; t++) pthread_join(tid[t], NULL);
-    pthread_mutex_destroy(&w.lock);
-}
-
-/* ---------- the verdicts ---------- */
-
-int sampling_chi2_pass(const sampling_result *r, double alpha_case) { return r->chi2.p >= alpha_case; }
-
-int sampling_integral_pass(const sampling_result *r, int k)
-{
-    return fabs(r->integral[k] - r->integral_want[k]) < CHECK_INTEGRAL_TOL;
-}
-
-int sampling_pdf_pass(const sampling_result *r)
-{
-    return r->pdf_mismatch == 0 && (!r->has_formula || r->formula_gap <= r->formula_tol);
-}
-
-int sampling_samples_pass(const sampling_result *r) { return r->outside == 0 && (!r->has_geom || r->geom_gap <= r->geom_tol); }
-
-int sampling_result_pass(const sampling_result *r, double alpha_case)
-{
-    int k, ok = sampling_chi2_pass(r, alpha_case) && sampling_pdf_pass(r) && sampling_samples_pass(r);
-    for (k = 0; k < r->nintegrals; k++) ok &= sampling_integral_pass(r, k);
-    return ok;
 }

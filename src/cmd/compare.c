@@ -1,15 +1,12 @@
 /* compare.c — pathlab compare: several estimators of one scene side by side, with their errors.
+ * run() is the procedure, one named step per line. The estimators' language is in estimators.c,
+ * the table in compare_report.c, the layout of the mosaic in image/mosaic.c.
  *
  * Choices (summed up in COMPARE_HELP, compare.h):
- * - An estimator is a list of render flags. Shorthand words expand to flags: light, brdf,
- *   mis-balance, mis-power -> --direct X; uniform, cosine, dir-brdf -> --dir X (dir-brdf because
- *   "brdf" already means --direct brdf); area, triangle, power, solid-angle -> --light X. Words join
- *   with '+' or spaces and mix with flags: "light+solid-angle", "mis-power --rr off". "LABEL=FLAGS"
- *   names it; otherwise its text is its label. Estimators are separated by commas, except a comma
- *   followed by a number, which stays inside a value (--eye 0,1,5).
- * - Flags outside --estimators apply to all; each estimator's flags are parsed after them, so they
- *   win. --spp, -o, --variance and --split are refused inside an estimator: the comparison fixes
- *   the samples (or the time) and the files.
+ * - An estimator is a list of render flags and names (estimators.h). Flags outside --estimators
+ *   apply to all; each estimator's flags are parsed after them, so they win. --spp, -o, --variance
+ *   and --split are refused inside an estimator: the comparison fixes the samples (or the time) and
+ *   the files.
  * - Equal time (--time SEC): each estimator is first rendered at 1, 2, 4 ... spp until one
  *   calibration render takes a fifth of SEC, which measures its seconds per sample; it is then
  *   rendered at round(SEC / that) spp. Fixed costs (threads, tiles) and a cold cache make the
@@ -25,207 +22,120 @@
 #include "cmd/compare.h"
 #include <errno.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include "cmd/render_args.h"
+#include "cmd/compare_report.h"
 #include "cmd/diff.h"
-#include "image/font.h"
+#include "cmd/estimators.h"
+#include "cmd/render_args.h"
+#include "image/mosaic.h"
 #include "tracer/render.h"
+#include "util/cli.h"
 
 #define MAX_EST 16
 #define CALIB_FRACTION 0.2    /* of --time: the length of the last calibration render */
-#define MAX_TOK 64
-#define RESERVED_SLUGS "reference", "mosaic", "table"
-
-typedef struct {
-    char label[600], slug[64], flags[600];   /* label: as long as the text it comes from */
-    char *tok[MAX_TOK];        /* the expanded flags, owned */
-    int ntok;
-    render_args a;
-    camera cam;
-    int spp;
-    double secs, sec_per_spp, mse, eff;
-    image img, heat;
-    diff_stats ds;
-} estimator;
-
-typedef struct {
-    render_args base;
-    const char *list, *dir, *ref, *ref_var;
-    int spp, spp_given, ref_spp, nest;
-    float time, scale;
-    estimator est[MAX_EST];
-} compare_args;
-
-typedef struct { const char *word, *flag, *value; } shorthand;
-static const shorthand SHORTHANDS[] = {
-    {"light", "--direct", "light"}, {"brdf", "--direct", "brdf"},
-    {"mis-balance", "--direct", "mis-balance"}, {"mis-power", "--direct", "mis-power"},
-    {"uniform", "--dir", "uniform"}, {"cosine", "--dir", "cosine"}, {"dir-brdf", "--dir", "brdf"},
-    {"area", "--light", "area"}, {"triangle", "--light", "triangle"}, {"power", "--light", "power"},
-    {"solid-angle", "--light", "solid-angle"}, {NULL, NULL, NULL}};
 
 /* The best estimator of the course, for the reference. */
-static const char *const BEST[] = {"--direct", "mis-power", "--light", "solid-angle", "--dir", "brdf"};
+static const char REFERENCE_FLAGS[] = "--direct mis-power --light solid-angle --dir brdf";
+/* Render flags that compare refuses: it names its files itself. */
+static const char *const RENDER_ONLY[] = {"--split", "--variance", NULL};
+/* compare's own files, DIR/NAME.*, which no estimator may write over. */
+static const char *const RESERVED[] = {"reference", "mosaic", "table", NULL};
 
-static char *dupstr(const char *s, size_t n)
-{
-    char *d = malloc(n + 1);
-    if (d) { memcpy(d, s, n); d[n] = '\0'; }
-    return d;
-}
+/* One estimator's results: its render, its error heatmap and its line of the table. */
+typedef struct {
+    image img, heat;
+    compare_row row;         /* spp, time, errors, efficiency */
+} estimator;
 
-static void trim(char *s)
-{
-    size_t n = strlen(s), i = 0;
-    while (n > 0 && (s[n - 1] == ' ' || s[n - 1] == '\t')) s[--n] = '\0';
-    while (s[i] == ' ' || s[i] == '\t') i++;
-    memmove(s, s + i, n - i + 1);
-}
+/* The reference: given (--ref, --ref-var) or rendered with REFERENCE_FLAGS. */
+typedef struct {
+    image img, var;          /* var.px is NULL when its variance is unknown */
+    double mean_var;         /* the mean of var: the reference's own noise in every MSE (0 if unknown) */
+    int spp;                 /* the samples, seed and time of a rendered reference */
+    uint64_t seed;
+    double secs;
+    char label[160];         /* over its panel in the mosaic */
+} reference;
 
-static int add_tok(estimator *e, const char *s, size_t n)
-{
-    if (e->ntok >= MAX_TOK) { fprintf(stderr, "pathlab: compare: estimator '%s': more than %d flags\n", e->label, MAX_TOK); return 1; }
-    if (!(e->tok[e->ntok] = dupstr(s, n))) { fprintf(stderr, "pathlab: compare: out of memory\n"); return 1; }
-    e->ntok++;
-    return 0;
-}
+/* The flags, then what run() finds step by step. */
+typedef struct {
+    render_args base;                      /* the render flags outside --estimators: shared */
+    const char *list, *dir, *ref, *ref_var;
+    int spp, spp_given, ref_spp;
+    float time, scale;                     /* --time (0: equal spp), --scale (0: none given) */
+    int nest;
+    estimator_spec spec[MAX_EST];          /* each estimator's label, file name and render flags */
+    estimator est[MAX_EST];                /* and its results */
+    camera cam;                            /* one view for all */
+    double heat_scale;                     /* the heatmaps' white: --scale, or 3 x the largest RMSE */
+    char notes[4096];                      /* under the table: how the numbers were made */
+    int mosaic_w, mosaic_h;
+} comparison;
 
-/* One shorthand word (n characters at w) -> its flag and value. */
-static int add_word(estimator *e, const char *w, size_t n)
-{
-    int k;
-    for (k = 0; SHORTHANDS[k].word; k++)
-        if (strlen(SHORTHANDS[k].word) == n && !strncmp(SHORTHANDS[k].word, w, n))
-            return add_tok(e, SHORTHANDS[k].flag, strlen(SHORTHANDS[k].flag)) || add_tok(e, SHORTHANDS[k].value, strlen(SHORTHANDS[k].value));
-    fprintf(stderr, "pathlab: compare: estimator '%s': unknown name '%.*s'\n"
-            "  names: light brdf mis-balance mis-power (--direct), uniform cosine dir-brdf (--dir),\n"
-            "  area triangle power solid-angle (--light); or render flags, e.g. \"--direct light --light solid-angle\"\n",
-            e->label, (int)n, w);
-    return 1;
-}
+/* ---- the command line ---- */
 
-static int takes_value(const char *flag)
+/* --time SEC: seconds in (0, 86400]. */
+static int parse_time(void *ctx, const char *flag, const char *v)
 {
-    return strcmp(flag, "--quiet") && strcmp(flag, "--pixel-center") && strcmp(flag, "--split");
-}
-
-/* Splits the text of one estimator into its expanded flags (e->tok), its label and its slug. */
-static int parse_estimator(estimator *e, const char *item, size_t len)
-{
-    char text[600], *eq, *p;
-    int after_flag = 0;
-    size_t n, k;
-    if (len >= sizeof text) { fprintf(stderr, "pathlab: compare: estimator '%.40s...' is too long\n", item); return 1; }
-    memcpy(text, item, len);
-    text[len] = '\0';
-    trim(text);
-    eq = strchr(text, '=');
-    if (eq) {
-        *eq = '\0';
-        snprintf(e->label, sizeof e->label, "%s", text);
-        trim(e->label);
-        memmove(text, eq + 1, strlen(eq + 1) + 1);
-        trim(text);
-        if (!e->label[0]) { fprintf(stderr, "pathlab: compare: empty label before '=' in '%.*s'\n", (int)len, item); return 1; }
-    } else {
-        snprintf(e->label, sizeof e->label, "%s", text);
-    }
-    if (!text[0]) { fprintf(stderr, "pathlab: compare: an empty estimator in --estimators (two commas, or nothing after '=')\n"); return 1; }
-    for (p = text; *p;) {
-        while (*p == ' ' || *p == '\t') p++;
-        if (!*p) break;
-        n = strcspn(p, " \t");
-        if (*p == '-' || after_flag) {                /* a flag or a flag's value, as it is */
-            if (add_tok(e, p, n)) return 1;
-            after_flag = *p == '-' && !after_flag && takes_value(e->tok[e->ntok - 1]);
-        } else {                                      /* shorthand words joined with '+' */
-            for (k = 0; k < n;) {
-                size_t m = strcspn(p + k, "+ \t");
-                if (m > n - k) m = n - k;
-                if (add_word(e, p + k, m)) return 1;
-                k += m + 1;
-            }
-        }
-        p += n;
-    }
-    /* the slug: lower-case letters and digits, other runs become one '-' */
-    for (n = 0, p = e->label; *p && n + 1 < sizeof e->slug; p++) {
-        int c = (unsigned char)*p;
-        if ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9')) e->slug[n++] = (char)c;
-        else if (c >= 'A' && c <= 'Z') e->slug[n++] = (char)(c - 'A' + 'a');
-        else if (n > 0 && e->slug[n - 1] != '-') e->slug[n++] = '-';
-    }
-    while (n > 0 && e->slug[n - 1] == '-') n--;
-    e->slug[n] = '\0';
-    if (!n) { fprintf(stderr, "pathlab: compare: label '%s' has no letter or digit to name its files\n", e->label); return 1; }
-    e->flags[0] = '\0';
-    for (k = 0; k < (size_t)e->ntok; k++) {
-        size_t used = strlen(e->flags);
-        snprintf(e->flags + used, sizeof e->flags - used, "%s%s", k ? " " : "", e->tok[k]);
-    }
-    return 0;
-}
-
-/* A comma ends an estimator unless a number follows it (--eye 0,1,5 or --up 0,-1,0). */
-static int splits_here(const char *s)
-{
-    return s[0] == ',' && !(s[1] >= '0' && s[1] <= '9') && s[1] != '.'
-           && !(s[1] == '-' && ((s[2] >= '0' && s[2] <= '9') || s[2] == '.'));
-}
-
-/* The estimator's render_args: the shared flags, then its own. */
-static int estimator_args(estimator *e, const render_args *base)
-{
-    int i;
-    e->a = *base;
-    e->a.scene = e->a.out = e->a.variance = NULL;
-    e->a.ro.spp = 0;
-    for (i = 0; i < e->ntok; i++)
-        if (render_parse_flag(&e->a, e->ntok, e->tok, &i)) {
-            fprintf(stderr, "pathlab: compare: in estimator '%s'\n", e->label);
-            return 1;
-        }
-    if (e->a.scene || e->a.out || e->a.variance || e->a.ro.io.split || e->a.ro.spp) {
-        fprintf(stderr, "pathlab: compare: estimator '%s': %s\n", e->label,
-                e->a.scene ? "a word that is neither a flag, a flag's value nor a name" :
-                e->a.ro.spp ? "--spp is set for all estimators (--spp or --time of compare), not for one" :
-                "-o, --variance and --split are not for an estimator");
+    comparison *c = ctx;
+    if (cli_float(flag, v, &c->time)) return 1;
+    if (!(c->time > 0.0f && c->time <= 86400.0f)) {
+        fprintf(stderr, "pathlab: --time expects seconds in (0, 86400], got '%s'\n", v);
         return 1;
     }
-    e->a.scene = base->scene;
-    e->a.ro.quiet = 1;
     return 0;
 }
 
-static int parse_args(compare_args *c, int argc, char **argv)
+/* Sorts argv[1..] in two, in their order: the flags of table `own` with their values into mine,
+ * every other word (the scene, the render flags and their values) into rest. */
+static int split_args(int argc, char **argv, const cli_flag *own, char **mine, int *nmine, char **rest, int *nrest)
 {
-    int i, j;
-    const char *s;
-    render_args_init(&c->base);
-    c->spp = 16;
+    int i, k;
     for (i = 1; i < argc; i++) {
-        const char *f = argv[i], *v;
-        int ours = !strcmp(f, "--estimators") || !strcmp(f, "-o") || !strcmp(f, "--ref") || !strcmp(f, "--ref-var")
-                   || !strcmp(f, "--ref-spp") || !strcmp(f, "--time") || !strcmp(f, "--spp") || !strcmp(f, "--scale");
-        if (!strcmp(f, "--split") || !strcmp(f, "--variance")) {
-            fprintf(stderr, "pathlab: compare: %s is a flag of render only\n", f);
-            return 1;
-        }
-        if (!ours) { if (render_parse_flag(&c->base, argc, argv, &i)) return 1; continue; }
-        if (!(v = cli_value(argc, argv, &i))) return 1;
-        if (!strcmp(f, "--estimators")) c->list = v;
-        else if (!strcmp(f, "-o")) c->dir = v;
-        else if (!strcmp(f, "--ref")) c->ref = v;
-        else if (!strcmp(f, "--ref-var")) c->ref_var = v;
-        else if (!strcmp(f, "--ref-spp")) { if (cli_int(f, v, 1, 1 << 30, &c->ref_spp)) return 1; }
-        else if (!strcmp(f, "--spp")) { if (cli_int(f, v, 1, 1 << 30, &c->spp)) return 1; c->spp_given = 1; }
-        else if (!strcmp(f, "--scale")) { if (cli_float(f, v, &c->scale)) return 1; }
-        else if (cli_float(f, v, &c->time)) return 1;
-        else if (!(c->time > 0.0f && c->time <= 86400.0f)) { fprintf(stderr, "pathlab: --time expects seconds in (0, 86400], got '%s'\n", v); return 1; }
+        for (k = 0; RENDER_ONLY[k]; k++)
+            if (!strcmp(argv[i], RENDER_ONLY[k])) {
+                fprintf(stderr, "pathlab: compare: %s is a flag of render only\n", argv[i]);
+                return 1;
+            }
+        for (k = 0; own[k].name && strcmp(own[k].name, argv[i]); k++) continue;
+        if (!own[k].name) { rest[(*nrest)++] = argv[i]; continue; }
+        mine[(*nmine)++] = argv[i];
+        if (own[k].kind != CLI_SWITCH && i + 1 < argc) mine[(*nmine)++] = argv[++i];
     }
+    return 0;
+}
+
+/* compare's own flags (cli_parse), then the scene and the render flags shared by the estimators. */
+static int parse_flags(comparison *c, int argc, char **argv)
+{
+    cli_flag own[] = {
+        {"--estimators", CLI_STRING, &c->list, 0, 0, NULL, NULL, NULL},
+        {"-o", CLI_STRING, &c->dir, 0, 0, NULL, NULL, NULL},
+        {"--ref", CLI_STRING, &c->ref, 0, 0, NULL, NULL, NULL},
+        {"--ref-var", CLI_STRING, &c->ref_var, 0, 0, NULL, NULL, NULL},
+        {"--ref-spp", CLI_INT, &c->ref_spp, 1, 1 << 30, NULL, NULL, NULL},
+        {"--spp", CLI_INT, &c->spp, 1, 1 << 30, NULL, NULL, &c->spp_given},
+        {"--time", CLI_CUSTOM, NULL, 0, 0, NULL, parse_time, NULL},
+        {"--scale", CLI_FLOAT, &c->scale, 0, 0, NULL, NULL, NULL},
+        {NULL, CLI_SWITCH, NULL, 0, 0, NULL, NULL, NULL}};
+    const cli_flag *tables[] = {own, NULL};
+    char **mine = malloc(2 * (size_t)argc * sizeof *mine), **rest = mine + argc;
+    int nmine = 1, nrest = 1, nwords, i, err;
+    if (!mine) { fprintf(stderr, "pathlab: compare: out of memory\n"); return 1; }
+    mine[0] = rest[0] = argv[0];
+    err = split_args(argc, argv, own, mine, &nmine, rest, &nrest)
+          || cli_parse("compare", nmine, mine, tables, c, NULL, 0, &nwords);
+    for (i = 1; !err && i < nrest; i++) err = render_parse_flag(&c->base, nrest, rest, &i);
+    free(mine);
+    return err;
+}
+
+static int check_flags(const comparison *c)
+{
     if (!c->base.scene || !c->list || !c->dir) {
         fprintf(stderr, "pathlab: compare needs a scene, --estimators and -o DIR\nusage:\n" COMPARE_USAGE COMPARE_HELP);
         return 1;
@@ -233,35 +143,101 @@ static int parse_args(compare_args *c, int argc, char **argv)
     if (c->spp_given && c->time > 0.0f) { fprintf(stderr, "pathlab: compare: --spp (equal samples) or --time (equal time), not both\n"); return 1; }
     if (c->ref_var && !c->ref) { fprintf(stderr, "pathlab: compare: --ref-var goes with --ref\n"); return 1; }
     if (c->ref && c->ref_spp) { fprintf(stderr, "pathlab: compare: --ref-spp is for a rendered reference, not with --ref\n"); return 1; }
-    if (c->base.ro.threads < 1) c->base.ro.threads = 1;
-    for (s = c->list; *s;) {
-        size_t n = 0;
-        while (s[n] && !splits_here(s + n)) n++;
-        if (c->nest == MAX_EST) { fprintf(stderr, "pathlab: compare: at most %d estimators\n", MAX_EST); return 1; }
-        if (parse_estimator(&c->est[c->nest++], s, n) || estimator_args(&c->est[c->nest - 1], &c->base)) return 1;
-        s += n + (s[n] == ',');
-        if (s[-1] == ',' && !*s) { fprintf(stderr, "pathlab: compare: --estimators ends with a comma\n"); return 1; }
-    }
+    return 0;
+}
+
+/* Each estimator writes DIR/SLUG.*: not one of compare's own files, nor another estimator's. */
+static int check_file_names(const comparison *c)
+{
+    int i, j;
     for (i = 0; i < c->nest; i++) {
-        static const char *const reserved[] = {RESERVED_SLUGS};
-        for (j = 0; j < (int)(sizeof reserved / sizeof *reserved); j++)
-            if (!strcmp(c->est[i].slug, reserved[j])) {
+        const estimator_spec *e = &c->spec[i];
+        for (j = 0; RESERVED[j]; j++)
+            if (!strcmp(e->slug, RESERVED[j])) {
                 fprintf(stderr, "pathlab: compare: label '%s' would write over DIR/%s.*: name it, e.g. \"my %s=%s\"\n",
-                        c->est[i].label, reserved[j], c->est[i].label, c->est[i].flags);
+                        e->label, RESERVED[j], e->label, e->flags);
                 return 1;
             }
         for (j = 0; j < i; j++)
-            if (!strcmp(c->est[i].slug, c->est[j].slug)) {
+            if (!strcmp(e->slug, c->spec[j].slug)) {
                 fprintf(stderr, "pathlab: compare: estimators '%s' and '%s' would both write DIR/%s.pfm: label one (LABEL=FLAGS)\n",
-                        c->est[j].label, c->est[i].label, c->est[i].slug);
+                        c->spec[j].label, e->label, e->slug);
                 return 1;
             }
     }
     return 0;
 }
 
-/* ---- rendering ---- */
+static int parse_args(comparison *c, int argc, char **argv)
+{
+    render_args_init(&c->base);
+    c->spp = 16;
+    if (parse_flags(c, argc, argv) || check_flags(c)) return 1;
+    if (c->base.ro.threads < 1) c->base.ro.threads = 1;
+    return estimators_parse(c->list, &c->base, c->spec, MAX_EST, &c->nest) || check_file_names(c);
+}
 
+/* ---- the steps of run() ---- */
+
+static int load_scene(const comparison *c, scene *s)
+{
+    if (scene_load(s, c->base.scene, c->base.ro.threads, 1)) return 1;
+    if (s->lights.n == 0) fprintf(stderr, "pathlab: warning: %s has no emitters: every image is black\n", c->base.scene);
+    return 0;
+}
+
+static int same_vec(vec3 a, vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
+/* One camera for all, since one reference serves all: each estimator's view must be the first's. */
+static int make_camera(comparison *c, const scene *s)
+{
+    camera cam;
+    int i;
+    for (i = 0; i < c->nest; i++) {
+        const char *label = c->spec[i].label, *first = c->spec[0].label;
+        if (render_make_camera(&c->spec[i].a, s, i ? &cam : &c->cam)) return 1;
+        if (i && (cam.width != c->cam.width || cam.height != c->cam.height)) {
+            fprintf(stderr, "pathlab: compare: estimator '%s' renders %dx%d but '%s' %dx%d: one size for all\n",
+                    label, cam.width, cam.height, first, c->cam.width, c->cam.height);
+            return 1;
+        }
+        if (i && !(same_vec(cam.eye, c->cam.eye) && same_vec(cam.w, c->cam.w) && same_vec(cam.u, c->cam.u) && same_vec(cam.v, c->cam.v))) {
+            fprintf(stderr, "pathlab: compare: estimator '%s' sees the scene from another camera than '%s': one view for all\n", label, first);
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* --ref, and --ref-var if given: images of the renders' size. */
+static int read_reference(const comparison *c, reference *ref)
+{
+    int w = c->cam.width, h = c->cam.height;
+    if (img_read_pfm(&ref->img, c->ref)) return 1;
+    if (ref->img.w != w || ref->img.h != h) {
+        fprintf(stderr, "pathlab: compare: the reference %s is %dx%d but the renders are %dx%d (use --size %dx%d, or another reference)\n",
+                c->ref, ref->img.w, ref->img.h, w, h, ref->img.w, ref->img.h);
+        return 1;
+    }
+    if (c->ref_var && img_read_pfm(&ref->var, c->ref_var)) return 1;
+    if (c->ref_var && (ref->var.w != w || ref->var.h != h)) {
+        fprintf(stderr, "pathlab: compare: --ref-var %s is %dx%d but the reference is %dx%d\n", c->ref_var, ref->var.w, ref->var.h, w, h);
+        return 1;
+    }
+    snprintf(ref->label, sizeof ref->label, "reference");
+    return 0;
+}
+
+static int make_dir(const char *dir)
+{
+    if (mkdir(dir, 0777) && errno != EEXIST) {
+        fprintf(stderr, "pathlab: compare: cannot create %s: %s\n", dir, strerror(errno));
+        return 1;
+    }
+    return 0;
+}
+
+/* Renders the total image; its variance too if var is not NULL. */
 static int render_image(const scene *s, const camera *cam, const render_opts *ro, image *mean, image *var, double *secs)
 {
     render_result r;
@@ -274,19 +250,73 @@ static int render_image(const scene *s, const camera *cam, const render_opts *ro
     return 0;
 }
 
-/* Seconds per sample of e: renders at 1, 2, 4 ... spp until a render lasts target seconds. */
-static int calibrate(const scene *s, estimator *e, double target)
+/* Seconds per sample with options ro: renders at 1, 2, 4 ... spp until a render lasts target seconds. */
+static int calibrate(const scene *s, const camera *cam, render_opts ro, double target, double *sec_per_spp)
 {
-    render_opts ro = e->a.ro;
     image im;
     double t = 0.0;
     for (ro.spp = 1;; ro.spp *= 2) {
-        if (render_image(s, &e->cam, &ro, &im, NULL, &t)) return 1;
+        if (render_image(s, cam, &ro, &im, NULL, &t)) return 1;
         img_free(&im);
         if (t >= target || ro.spp >= (1 << 20)) break;
     }
-    e->sec_per_spp = t / ro.spp;
+    *sec_per_spp = t / ro.spp;
     return 0;
+}
+
+/* The samples of each estimator: --spp, or as many as its calibrated speed fits in --time. */
+static int choose_spp(comparison *c, const scene *s)
+{
+    double sec_per_spp;
+    int i;
+    for (i = 0; i < c->nest; i++) {
+        estimator *e = &c->est[i];
+        if (c->time > 0.0f) {
+            if (calibrate(s, &c->cam, c->spec[i].a.ro, CALIB_FRACTION * c->time, &sec_per_spp)) return 1;
+            e->row.spp = (int)fmin(1 << 30, fmax(1.0, floor(c->time / sec_per_spp + 0.5)));
+            if (!c->base.ro.quiet)
+                fprintf(stderr, "compare: %s: %.3g ms per spp -> %d spp for %g s\n", c->spec[i].label, 1e3 * sec_per_spp, e->row.spp, c->time);
+        } else {
+            e->row.spp = c->spp;
+        }
+    }
+    return 0;
+}
+
+/* DIR/PRE SLUG EXT, e.g. DIR/heat-light.png, into path[PATH_CAP]. */
+#define PATH_CAP 4200
+static int out_path(char *path, const comparison *c, const char *pre, const char *slug, const char *ext)
+{
+    if (snprintf(path, PATH_CAP, "%s/%s%s%s", c->dir, pre, slug, ext) >= PATH_CAP) {
+        fprintf(stderr, "pathlab: compare: path too long in %s\n", c->dir);
+        return 1;
+    }
+    return 0;
+}
+
+static int save_image(const comparison *c, const char *pre, const char *slug, const char *ext, const image *im, float exposure)
+{
+    char path[PATH_CAP];
+    return out_path(path, c, pre, slug, ext) || img_write(im, path, exposure);
+}
+
+/* The best estimator, 16 x the largest spp (or --ref-spp), its own seed; written as DIR/reference.*. */
+static int render_reference(const comparison *c, const scene *s, reference *ref)
+{
+    estimator_spec best;
+    int i, n, max_spp = 0;
+    if (estimators_parse(REFERENCE_FLAGS, &c->base, &best, 1, &n)) return 1;
+    for (i = 0; i < c->nest; i++)
+        if (c->est[i].row.spp > max_spp) max_spp = c->est[i].row.spp;
+    ref->spp = best.a.ro.spp = c->ref_spp ? c->ref_spp : (int)fmin(1 << 30, 16.0 * max_spp);
+    ref->seed = best.a.ro.seed = c->base.ro.seed ^ 0x9e3779b97f4a7c15ULL;
+    best.a.ro.quiet = c->base.ro.quiet;
+    snprintf(ref->label, sizeof ref->label, "reference %d spp", ref->spp);
+    if (!c->base.ro.quiet) fprintf(stderr, "compare: rendering the reference: %d spp of %s\n", ref->spp, REFERENCE_FLAGS);
+    return render_image(s, &c->cam, &best.a.ro, &ref->img, &ref->var, &ref->secs)
+           || save_image(c, "", "reference", ".pfm", &ref->img, 0.0f)
+           || save_image(c, "", "reference-var", ".pfm", &ref->var, 0.0f)
+           || save_image(c, "", "reference", ".png", &ref->img, c->base.exposure);
 }
 
 static double mean_of(const image *im)
@@ -297,110 +327,84 @@ static double mean_of(const image *im)
     return sum / n;
 }
 
-/* ---- the mosaic ---- */
-
-#define GAP 4                 /* pixels between panels and around them */
-#define MAX_LINES 3           /* of a label */
-
-static const float BG[3] = {0.012f, 0.012f, 0.014f};     /* dark grey once sRGB-encoded (~0.11) */
-static const float INK[3] = {1.0f, 1.0f, 1.0f};
-
-/* Breaks text into at most MAX_LINES lines of at most cols characters, at spaces when it can;
- * the last line ends with ".." if the text did not fit. Returns the number of lines. */
-static int wrap(const char *text, int cols, char lines[MAX_LINES][128])
+/* The errors of img against the reference, and the efficiency 1 / (MSE x time). */
+static void measure(compare_row *r, const image *img, const reference *ref)
 {
-    int n = 0, len;
-    if (cols < 3) cols = 3;
-    if (cols > 127) cols = 127;
-    while (*text == ' ') text++;
-    while (*text && n < MAX_LINES) {
-        len = (int)strlen(text);
-        if (len > cols) {
-            int k = cols;
-            while (k > 0 && text[k] != ' ') k--;
-            len = k > cols / 3 ? k : cols;   /* break at the last space, or cut a long word */
-        }
-        memcpy(lines[n], text, (size_t)len);
-        lines[n][len] = '\0';
-        text += len;
-        while (*text == ' ') text++;
-        n++;
-    }
-    if (*text && n > 0) {   /* did not fit: mark the cut */
-        size_t m = strlen(lines[n - 1]);
-        if (m + 2 > (size_t)cols) m = (size_t)cols - 2;
-        strcpy(lines[n - 1] + m, "..");
-    }
-    return n;
+    diff_stats ds;
+    diff_compute(&ds, img, &ref->img);
+    r->rmse = ds.rmse;
+    r->relmse = ds.relmse;
+    r->mae = ds.mae;
+    r->mse = ds.rmse * ds.rmse - ref->mean_var;
+    if (!(r->mse > 0.0)) r->mse = 1e-30;   /* below the reference's noise: efficiency is then meaningless */
+    r->eff = 1.0 / (r->mse * fmax(r->secs, 1e-9));
 }
 
-typedef struct { int k, ts, pw, ph, cols, band[2], rows, ncol, w, h; } layout;
-
-static int label_lines(const layout *L, const char *text)
+/* Each estimator at its spp, written as DIR/SLUG.pfm and .png, and measured. */
+static int render_estimators(comparison *c, const scene *s, const reference *ref)
 {
-    char lines[MAX_LINES][128];
-    return wrap(text, L->cols, lines);
-}
-
-static void draw_label(image *m, const layout *L, int x, int y, const char *text)
-{
-    char lines[MAX_LINES][128];
-    int i, n = wrap(text, L->cols, lines);
-    for (i = 0; i < n; i++) font_draw(m, x, y + 2 + i * FONT_LINE * L->ts, lines[i], L->ts, INK);
-}
-
-/* Copies im into m at (x, y), each pixel a k x k square, multiplied by gain. */
-static void blit(image *m, const image *im, int x, int y, int k, float gain)
-{
-    int i, j, c;
-    for (j = 0; j < im->h * k; j++)
-        for (i = 0; i < im->w * k; i++)
-            for (c = 0; c < 3; c++)
-                m->px[3 * ((long)(y + j) * m->w + x + i) + c] = gain * im->px[3 * ((long)(j / k) * im->w + i / k) + c];
-}
-
-/* Row 0: the reference and each estimator's image; row 1 (with heatmaps): a legend of the error
- * scale, then each heatmap. A label band over every panel. */
-static int make_mosaic(image *m, const compare_args *c, const image *ref, const char *ref_label,
-                       const image *legend, double scale, float exposure)
-{
-    layout L;
-    char text[160];
-    int i, r, x, y;
-    memset(&L, 0, sizeof L);
-    for (L.k = 1; ref->w * L.k < 128 && L.k < 4; L.k++) continue;   /* small renders: 2x to 4x */
-    L.pw = ref->w * L.k;
-    L.ph = ref->h * L.k;
-    L.ts = L.pw >= 400 ? 2 : 1;
-    L.cols = (L.pw + L.ts) / (FONT_ADVANCE * L.ts);
-    L.ncol = c->nest + 1;
-    L.rows = 2;
-    for (r = 0; r < 2; r++) {
-        int most = r ? 1 : label_lines(&L, ref_label);
-        for (i = 0; i < c->nest && !r; i++)
-            if (label_lines(&L, c->est[i].label) > most) most = label_lines(&L, c->est[i].label);
-        L.band[r] = 2 + most * FONT_LINE * L.ts;
-    }
-    L.w = GAP + L.ncol * (L.pw + GAP);
-    L.h = GAP + L.band[0] + L.ph + GAP + L.band[1] + L.ph + GAP;
-    if (img_alloc(m, L.w, L.h)) { fprintf(stderr, "pathlab: compare: out of memory for the mosaic\n"); return 1; }
-    for (i = 0; i < L.w * L.h; i++) memcpy(m->px + 3L * i, BG, sizeof BG);
-    for (r = 0; r < L.rows; r++) {
-        y = GAP + (r ? L.band[0] + L.ph + GAP : 0);
-        for (i = 0; i < L.ncol; i++) {
-            x = GAP + i * (L.pw + GAP);
-            if (r == 0) {
-                draw_label(m, &L, x, y, i ? c->est[i - 1].label : ref_label);
-                blit(m, i ? &c->est[i - 1].img : ref, x, y + L.band[0], L.k, exp2f(exposure));
-            } else {
-                if (i) snprintf(text, sizeof text, "RMSE %.3g", c->est[i - 1].ds.rmse);
-                else snprintf(text, sizeof text, "error 0 to %.3g", scale);
-                draw_label(m, &L, x, y, text);
-                blit(m, i ? &c->est[i - 1].heat : legend, x, y + L.band[1], L.k, 1.0f);
-            }
-        }
+    int i;
+    for (i = 0; i < c->nest; i++) {
+        estimator *e = &c->est[i];
+        const estimator_spec *sp = &c->spec[i];
+        render_opts ro = sp->a.ro;
+        ro.spp = e->row.spp;
+        if (render_image(s, &c->cam, &ro, &e->img, NULL, &e->row.secs)) return 1;
+        measure(&e->row, &e->img, ref);
+        if (!c->base.ro.quiet) fprintf(stderr, "compare: %s: %d spp in %.3f s, RMSE %.4g\n", sp->label, e->row.spp, e->row.secs, e->row.rmse);
+        if (save_image(c, "", sp->slug, ".pfm", &e->img, 0.0f) || save_image(c, "", sp->slug, ".png", &e->img, c->base.exposure)) return 1;
     }
     return 0;
+}
+
+/* |image - reference| on one scale for all, written as DIR/heat-SLUG.png. */
+static int write_heatmaps(comparison *c, const reference *ref)
+{
+    double worst = 0.0;
+    int i;
+    for (i = 0; i < c->nest; i++)
+        if (c->est[i].row.rmse > worst) worst = c->est[i].row.rmse;
+    c->heat_scale = c->scale > 0.0f ? c->scale : worst > 0.0 ? 3.0 * worst : 1.0;
+    for (i = 0; i < c->nest; i++) {
+        estimator *e = &c->est[i];
+        if (diff_heatmap(&e->heat, &e->img, &ref->img, c->heat_scale)) return 1;
+        if (save_image(c, "heat-", c->spec[i].slug, ".png", &e->heat, 0.0f)) return 1;
+    }
+    return 0;
+}
+
+/* Appends a line to the notes. */
+static void note(comparison *c, const char *fmt, ...)
+{
+    size_t used = strlen(c->notes);
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(c->notes + used, sizeof c->notes - used, fmt, ap);
+    va_end(ap);
+}
+
+/* The notes under the table: the reference, MSE, equal samples or time, the heatmaps' scale. */
+static void write_notes(comparison *c, const reference *ref)
+{
+    int has_var = ref->var.px != NULL;
+    if (c->ref)
+        note(c, "- reference: %s (given)%s%s.\n", c->ref, has_var ? ", its variance " : "", has_var ? c->ref_var : "");
+    else
+        note(c, "- reference: rendered with `%s` at %d spp (%s), seed %llu, in %.2f s; written as reference.pfm "
+                "(its variance: reference-var.pfm).\n", REFERENCE_FLAGS, ref->spp, c->ref_spp ? "--ref-spp" : "16 x the largest spp",
+             (unsigned long long)ref->seed, ref->secs);
+    if (has_var)
+        note(c, "- MSE = RMSE^2 - %.4g, the mean variance of the reference's pixels: its own noise, which adds to every squared "
+                "error; efficiency = 1/(MSE * time). RMSE, relMSE and MAE are raw (as pathlab diff prints them).\n", ref->mean_var);
+    else
+        note(c, "- MSE = RMSE^2: the reference's variance is unknown (--ref-var), so its noise counts as error.\n");
+    if (c->time > 0.0f)
+        note(c, "- equal time: %g s each; spp = SEC / (seconds per spp measured on calibration renders of 1, 2, 4... spp "
+                "lasting %.3g s); time = the final render's wall-clock time, %d threads.\n", c->time, CALIB_FRACTION * c->time,
+             c->base.ro.threads);
+    else
+        note(c, "- equal samples: %d spp each; time = wall-clock time of the render, %d threads.\n", c->spp, c->base.ro.threads);
+    note(c, "- heatmaps (heat-LABEL.png): |image - reference| averaged over RGB, black 0 to white %.4g.\n", c->heat_scale);
 }
 
 /* The heatmap's colour ramp, 0 at the left to the scale at the right: diff_heatmap of a gradient. */
@@ -421,238 +425,97 @@ static int make_legend(image *legend, int w, int h)
     return err;
 }
 
-/* ---- the table ---- */
-
-static void print_table(FILE *f, const compare_args *c, int md)
+static mosaic_panel panel(const image *im, const char *label, float gain)
 {
-    int i, wl = 9, wf = 5;
-    double best = 0.0;
+    mosaic_panel p;
+    p.im = im;
+    p.label = label;
+    p.gain = gain;
+    return p;
+}
+
+/* Row 0: the reference and each estimator's image; row 1: the heatmaps' colour scale, then each
+ * heatmap. Written as DIR/mosaic.ppm and .png. */
+static int write_mosaic(comparison *c, const reference *ref)
+{
+    mosaic_panel p[2 * (MAX_EST + 1)];
+    char rmse[MAX_EST][32], scale[64];
+    image legend = {0, 0, NULL}, m = {0, 0, NULL};
+    int i, n = c->nest + 1, err;
+    float gain = exp2f(c->base.exposure);
+    snprintf(scale, sizeof scale, "error 0 to %.3g", c->heat_scale);
+    p[0] = panel(&ref->img, ref->label, gain);
+    p[n] = panel(&legend, scale, 1.0f);
     for (i = 0; i < c->nest; i++) {
-        if (c->est[i].eff > best) best = c->est[i].eff;
-        if ((int)strlen(c->est[i].label) > wl) wl = (int)strlen(c->est[i].label);
-        if ((int)strlen(c->est[i].flags) > wf) wf = (int)strlen(c->est[i].flags);
+        snprintf(rmse[i], sizeof rmse[i], "RMSE %.3g", c->est[i].row.rmse);
+        p[1 + i] = panel(&c->est[i].img, c->spec[i].label, gain);
+        p[n + 1 + i] = panel(&c->est[i].heat, rmse[i], 1.0f);
     }
-    if (md) fprintf(f, "| estimator | flags | spp | time (s) | RMSE | relMSE | MAE | MSE | efficiency 1/(MSE*time) | ratio to best |\n"
-                       "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-    else fprintf(f, "%-*s  %-*s %7s %8s %10s %10s %10s %10s %11s %6s\n", wl, "estimator", wf, "flags", "spp", "time(s)",
-                 "RMSE", "relMSE", "MAE", "MSE", "efficiency", "ratio");
+    err = make_legend(&legend, c->cam.width, c->cam.height);
+    if (!err && (err = mosaic_make(&m, p, 2, n))) fprintf(stderr, "pathlab: compare: out of memory for the mosaic\n");
+    err = err || save_image(c, "", "mosaic", ".ppm", &m, 0.0f) || save_image(c, "", "mosaic", ".png", &m, 0.0f);
+    c->mosaic_w = m.w;
+    c->mosaic_h = m.h;
+    img_free(&legend);
+    img_free(&m);
+    return err;
+}
+
+/* DIR/table.md (with the notes) and DIR/table.csv, then the table and the notes on stdout. */
+static int write_tables(const comparison *c)
+{
+    compare_row rows[MAX_EST];
+    char md[PATH_CAP], csv[PATH_CAP];
+    int i;
     for (i = 0; i < c->nest; i++) {
-        const estimator *e = &c->est[i];
-        double ratio = best > 0.0 ? e->eff / best : 0.0;
-        if (md) fprintf(f, "| %s | `%s` | %d | %.3f | %.4g | %.4g | %.4g | %.4g | %.4g | %.3f |\n",
-                        e->label, e->flags, e->spp, e->secs, e->ds.rmse, e->ds.relmse, e->ds.mae, e->mse, e->eff, ratio);
-        else fprintf(f, "%-*s  %-*s %7d %8.3f %10.4g %10.4g %10.4g %10.4g %11.4g %6.3f\n",
-                     wl, e->label, wf, e->flags, e->spp, e->secs, e->ds.rmse, e->ds.relmse, e->ds.mae, e->mse, e->eff, ratio);
+        rows[i] = c->est[i].row;
+        rows[i].label = c->spec[i].label;
+        rows[i].flags = c->spec[i].flags;
     }
-}
-
-static void csv_field(FILE *f, const char *s)
-{
-    fputc('"', f);
-    for (; *s; s++) { if (*s == '"') fputc('"', f); fputc(*s, f); }
-    fputc('"', f);
-}
-
-/* Writes path via a temporary file renamed at the end, like the images. */
-static int write_text(const char *path, const compare_args *c, const char *notes, int csv)
-{
-    char tmp[4200];
-    FILE *f;
-    int i, err;
-    double best = 0.0;
-    snprintf(tmp, sizeof tmp, "%s.tmp", path);
-    if (!(f = fopen(tmp, "w"))) { fprintf(stderr, "%s: %s\n", tmp, strerror(errno)); return 1; }
-    if (csv) {
-        for (i = 0; i < c->nest; i++) if (c->est[i].eff > best) best = c->est[i].eff;
-        fprintf(f, "estimator,flags,spp,time_s,rmse,relmse,mae,mse,efficiency,ratio_to_best\n");
-        for (i = 0; i < c->nest; i++) {
-            const estimator *e = &c->est[i];
-            csv_field(f, e->label);
-            fputc(',', f);
-            csv_field(f, e->flags);
-            fprintf(f, ",%d,%.6f,%.9g,%.9g,%.9g,%.9g,%.9g,%.6f\n", e->spp, e->secs, e->ds.rmse, e->ds.relmse,
-                    e->ds.mae, e->mse, e->eff, best > 0.0 ? e->eff / best : 0.0);
-        }
-    } else {
-        print_table(f, c, 1);
-        fprintf(f, "\nNotes:\n\n%s", notes);
-    }
-    err = ferror(f);
-    err |= fclose(f) != 0;
-    if (err || rename(tmp, path)) { fprintf(stderr, "%s: could not write\n", path); remove(tmp); return 1; }
-    return 0;
-}
-
-static int out_path(char *dst, size_t cap, const char *dir, const char *pre, const char *slug, const char *ext)
-{
-    if ((size_t)snprintf(dst, cap, "%s/%s%s%s", dir, pre, slug, ext) >= cap) {
-        fprintf(stderr, "pathlab: compare: path too long in %s\n", dir);
-        return 1;
-    }
+    if (out_path(md, c, "", "table", ".md") || out_path(csv, c, "", "table", ".csv")) return 1;
+    if (compare_write_md(md, rows, c->nest, c->notes) || compare_write_csv(csv, rows, c->nest)) return 1;
+    compare_print_table(stdout, rows, c->nest);
+    printf("\n%s", c->notes);
+    printf("(mosaic %dx%d in %s/mosaic.png; images, heatmaps and table.md, table.csv in %s)\n", c->mosaic_w, c->mosaic_h, c->dir, c->dir);
     return 0;
 }
 
 /* ---- the command ---- */
 
-static int same_vec(vec3 a, vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
-
-/* One reference serves all: the estimators must see the same image. */
-static int same_camera(const camera *a, const camera *b)
+/* The procedure. 0 done, 1 a render or a write failed, 2 bad input (nothing written). */
+static int run(comparison *c)
 {
-    return same_vec(a->eye, b->eye) && same_vec(a->w, b->w) && same_vec(a->u, b->u) && same_vec(a->v, b->v);
-}
-
-static int run(compare_args *c, scene *s)
-{
-    image ref = {0, 0, NULL}, ref_var = {0, 0, NULL}, legend = {0, 0, NULL}, mosaic = {0, 0, NULL};
-    render_args ra;
-    char notes[4096], path[4200], ref_label[160];
-    double ref_secs = 0.0, mean_var = 0.0, scale = c->scale, worst = 0.0;
-    int i, rc = 2, has_var = 0, w, h, max_spp = 0, ref_spp = 0;
-    size_t nn = 0;
-    for (i = 0; i < c->nest; i++) {
-        estimator *e = &c->est[i];
-        if (render_make_camera(&e->a, s, &e->cam)) goto done;
-        if (i && (e->cam.width != c->est[0].cam.width || e->cam.height != c->est[0].cam.height)) {
-            fprintf(stderr, "pathlab: compare: estimator '%s' renders %dx%d but '%s' %dx%d: one size for all\n",
-                    e->label, e->cam.width, e->cam.height, c->est[0].label, c->est[0].cam.width, c->est[0].cam.height);
-            goto done;
-        }
-        if (i && !same_camera(&e->cam, &c->est[0].cam)) {
-            fprintf(stderr, "pathlab: compare: estimator '%s' sees the scene from another camera than '%s': one view for all\n",
-                    e->label, c->est[0].label);
-            goto done;
-        }
-    }
-    w = c->est[0].cam.width;
-    h = c->est[0].cam.height;
-    if (c->ref) {
-        if (img_read_pfm(&ref, c->ref)) goto done;
-        if (ref.w != w || ref.h != h) {
-            fprintf(stderr, "pathlab: compare: the reference %s is %dx%d but the renders are %dx%d (use --size %dx%d, or another reference)\n",
-                    c->ref, ref.w, ref.h, w, h, ref.w, ref.h);
-            goto done;
-        }
-        if (c->ref_var) {
-            if (img_read_pfm(&ref_var, c->ref_var)) goto done;
-            if (ref_var.w != w || ref_var.h != h) {
-                fprintf(stderr, "pathlab: compare: --ref-var %s is %dx%d but the reference is %dx%d\n", c->ref_var, ref_var.w, ref_var.h, w, h);
-                goto done;
-            }
-        }
-    }
-    if (mkdir(c->dir, 0777) && errno != EEXIST) { fprintf(stderr, "pathlab: compare: cannot create %s: %s\n", c->dir, strerror(errno)); goto done; }
+    scene s;
+    reference ref;
+    int rc = 2;
+    memset(&ref, 0, sizeof ref);
+    if (load_scene(c, &s)) return 2;
+    /* the inputs, checked before anything is written */
+    if (make_camera(c, &s) || (c->ref && read_reference(c, &ref)) || make_dir(c->dir)) goto done;
     rc = 1;
-    /* the number of samples of each */
-    for (i = 0; i < c->nest; i++) {
-        estimator *e = &c->est[i];
-        if (c->time > 0.0f) {
-            double target = CALIB_FRACTION * c->time;
-            if (calibrate(s, e, target)) goto done;
-            e->spp = (int)fmin(1 << 30, fmax(1.0, floor(c->time / e->sec_per_spp + 0.5)));
-            if (!c->base.ro.quiet) fprintf(stderr, "compare: %s: %.3g ms per spp -> %d spp for %g s\n", e->label, 1e3 * e->sec_per_spp, e->spp, c->time);
-        } else {
-            e->spp = c->spp;
-        }
-        if (e->spp > max_spp) max_spp = e->spp;
-    }
-    if (!c->ref) {   /* the reference: the best estimator, many more samples, its own seed */
-        ra = c->base;
-        for (i = 0; i < 6; i += 2) {
-            int j = i;
-            if (render_parse_flag(&ra, 6, (char **)BEST, &j)) goto done;
-        }
-        ra.ro.quiet = c->base.ro.quiet;
-        ref_spp = c->ref_spp ? c->ref_spp : (int)fmin(1 << 30, 16.0 * max_spp);
-        ra.ro.spp = ref_spp;
-        ra.ro.seed = c->base.ro.seed ^ 0x9e3779b97f4a7c15ULL;
-        if (!c->base.ro.quiet) fprintf(stderr, "compare: rendering the reference: %d spp of %s %s %s %s %s %s\n", ref_spp,
-                                       BEST[0], BEST[1], BEST[2], BEST[3], BEST[4], BEST[5]);
-        if (render_image(s, &c->est[0].cam, &ra.ro, &ref, &ref_var, &ref_secs)) goto done;
-        if (out_path(path, sizeof path, c->dir, "", "reference", ".pfm") || img_write(&ref, path, 0.0f)) goto done;
-        if (out_path(path, sizeof path, c->dir, "", "reference-var", ".pfm") || img_write(&ref_var, path, 0.0f)) goto done;
-        if (out_path(path, sizeof path, c->dir, "", "reference", ".png") || img_write(&ref, path, c->base.exposure)) goto done;
-    }
-    has_var = ref_var.px != NULL;
-    if (has_var) mean_var = mean_of(&ref_var);
-    for (i = 0; i < c->nest; i++) {
-        estimator *e = &c->est[i];
-        render_opts ro = e->a.ro;
-        ro.spp = e->spp;
-        if (render_image(s, &e->cam, &ro, &e->img, NULL, &e->secs)) goto done;
-        diff_compute(&e->ds, &e->img, &ref);
-        e->mse = e->ds.rmse * e->ds.rmse - mean_var;
-        if (!(e->mse > 0.0)) e->mse = 1e-30;   /* below the reference's noise: efficiency is then meaningless */
-        e->eff = 1.0 / (e->mse * fmax(e->secs, 1e-9));
-        if (e->ds.rmse > worst) worst = e->ds.rmse;
-        if (!c->base.ro.quiet) fprintf(stderr, "compare: %s: %d spp in %.3f s, RMSE %.4g\n", e->label, e->spp, e->secs, e->ds.rmse);
-        if (out_path(path, sizeof path, c->dir, "", e->slug, ".pfm") || img_write(&e->img, path, 0.0f)) goto done;
-        if (out_path(path, sizeof path, c->dir, "", e->slug, ".png") || img_write(&e->img, path, c->base.exposure)) goto done;
-    }
-    if (!(scale > 0.0)) scale = worst > 0.0 ? 3.0 * worst : 1.0;
-    for (i = 0; i < c->nest; i++) {
-        estimator *e = &c->est[i];
-        if (diff_heatmap(&e->heat, &e->img, &ref, scale)) goto done;
-        if (out_path(path, sizeof path, c->dir, "heat-", e->slug, ".png") || img_write(&e->heat, path, 0.0f)) goto done;
-    }
-    /* the notes under the table */
-    if (c->ref) {
-        nn += (size_t)snprintf(notes + nn, sizeof notes - nn, "- reference: %s (given)%s%s.\n", c->ref,
-                               has_var ? ", its variance " : "", has_var ? c->ref_var : "");
-        snprintf(ref_label, sizeof ref_label, "reference");
-    } else {
-        nn += (size_t)snprintf(notes + nn, sizeof notes - nn,
-                               "- reference: rendered with `--direct mis-power --light solid-angle --dir brdf` at %d spp "
-                               "(%s), seed %llu, in %.2f s; written as reference.pfm (its variance: reference-var.pfm).\n",
-                               ref_spp, c->ref_spp ? "--ref-spp" : "16 x the largest spp", (unsigned long long)ra.ro.seed, ref_secs);
-        snprintf(ref_label, sizeof ref_label, "reference %d spp", ref_spp);
-    }
-    if (has_var)
-        nn += (size_t)snprintf(notes + nn, sizeof notes - nn,
-                               "- MSE = RMSE^2 - %.4g, the mean variance of the reference's pixels: its own noise, which adds to every "
-                               "squared error; efficiency = 1/(MSE * time). RMSE, relMSE and MAE are raw (as pathlab diff prints them).\n", mean_var);
-    else
-        nn += (size_t)snprintf(notes + nn, sizeof notes - nn,
-                               "- MSE = RMSE^2: the reference's variance is unknown (--ref-var), so its noise counts as error.\n");
-    if (c->time > 0.0f)
-        nn += (size_t)snprintf(notes + nn, sizeof notes - nn,
-                               "- equal time: %g s each; spp = SEC / (seconds per spp measured on calibration renders of 1, 2, 4... spp "
-                               "lasting %.3g s); time = the final render's wall-clock time, %d threads.\n",
-                               c->time, CALIB_FRACTION * c->time, c->base.ro.threads);
-    else
-        nn += (size_t)snprintf(notes + nn, sizeof notes - nn, "- equal samples: %d spp each; time = wall-clock time of the render, %d threads.\n",
-                               c->spp, c->base.ro.threads);
-    snprintf(notes + nn, sizeof notes - nn, "- heatmaps (heat-LABEL.png): |image - reference| averaged over RGB, black 0 to white %.4g.\n", scale);
-    if (make_legend(&legend, w, h) || make_mosaic(&mosaic, c, &ref, ref_label, &legend, scale, c->base.exposure)) goto done;
-    if (out_path(path, sizeof path, c->dir, "", "mosaic", ".ppm") || img_write(&mosaic, path, 0.0f)) goto done;
-    if (out_path(path, sizeof path, c->dir, "", "mosaic", ".png") || img_write(&mosaic, path, 0.0f)) goto done;
-    if (out_path(path, sizeof path, c->dir, "", "table", ".md") || write_text(path, c, notes, 0)) goto done;
-    if (out_path(path, sizeof path, c->dir, "", "table", ".csv") || write_text(path, c, notes, 1)) goto done;
-    print_table(stdout, c, 0);
-    printf("\n%s", notes);
-    printf("(mosaic %dx%d in %s/mosaic.png; images, heatmaps and table.md, table.csv in %s)\n", mosaic.w, mosaic.h, c->dir, c->dir);
+    /* the renders: how many samples each, the reference unless given, then each estimator */
+    if (choose_spp(c, &s) || (!c->ref && render_reference(c, &s, &ref))) goto done;
+    ref.mean_var = ref.var.px ? mean_of(&ref.var) : 0.0;   /* its own noise, taken off each MSE */
+    if (render_estimators(c, &s, &ref)) goto done;
+    /* the outputs */
+    if (write_heatmaps(c, &ref)) goto done;
+    write_notes(c, &ref);
+    if (write_mosaic(c, &ref) || write_tables(c)) goto done;
     rc = 0;
 done:
-    img_free(&ref);
-    img_free(&ref_var);
-    img_free(&legend);
-    img_free(&mosaic);
+    img_free(&ref.img);
+    img_free(&ref.var);
+    scene_free(&s);
     return rc;
 }
 
 int compare_main(int argc, char **argv)
 {
-    compare_args *c = calloc(1, sizeof *c);
-    scene s;
-    int rc = 2, i, k;
+    comparison *c = calloc(1, sizeof *c);
+    int rc, i;
     if (!c) { fprintf(stderr, "pathlab: compare: out of memory\n"); return 1; }
-    if (!parse_args(c, argc, argv) && !scene_load(&s, c->base.scene, c->base.ro.threads, 1)) {
-        if (s.lights.n == 0) fprintf(stderr, "pathlab: warning: %s has no emitters: every image is black\n", c->base.scene);
-        rc = run(c, &s);
-        scene_free(&s);
-    }
+    rc = parse_args(c, argc, argv) ? 2 : run(c);
     for (i = 0; i < MAX_EST; i++) {
-        for (k = 0; k < c->est[i].ntok; k++) free(c->est[i].tok[k]);
         img_free(&c->est[i].img);
         img_free(&c->est[i].heat);
     }

@@ -1,0 +1,110 @@
+/* compare_report.c — the table of pathlab compare in three forms (see compare_report.h). */
+#include "cmd/compare_report.h"
+#include <errno.h>
+#include <string.h>
+
+/* The best efficiency, to which each row's is compared. */
+static double best_eff(const compare_row *rows, int n)
+{
+    double best = 0.0;
+    int i;
+    for (i = 0; i < n; i++)
+        if (rows[i].eff > best) best = rows[i].eff;
+    return best;
+}
+
+void compare_print_table(FILE *f, const compare_row *rows, int n)
+{
+    double best = best_eff(rows, n);
+    int i, wl = 9, wf = 5;
+    for (i = 0; i < n; i++) {
+        if ((int)strlen(rows[i].label) > wl) wl = (int)strlen(rows[i].label);
+        if ((int)strlen(rows[i].flags) > wf) wf = (int)strlen(rows[i].flags);
+    }
+    fprintf(f, "%-*s  %-*s %7s %8s %10s %10s %10s %10s %11s %6s\n", wl, "estimator", wf, "flags", "spp", "time(s)",
+            "RMSE", "relMSE", "MAE", "MSE", "efficiency", "ratio");
+    for (i = 0; i < n; i++) {
+        const compare_row *r = &rows[i];
+        fprintf(f, "%-*s  %-*s %7d %8.3f %10.4g %10.4g %10.4g %10.4g %11.4g %6.3f\n", wl, r->label, wf, r->flags,
+                r->spp, r->secs, r->rmse, r->relmse, r->mae, r->mse, r->eff, best > 0.0 ? r->eff / best : 0.0);
+    }
+}
+
+static void print_md(FILE *f, const compare_row *rows, int n, const char *notes)
+{
+    double best = best_eff(rows, n);
+    int i;
+    fprintf(f, "| estimator | flags | spp | time (s) | RMSE | relMSE | MAE | MSE | efficiency 1/(MSE*time) | ratio to best |\n"
+               "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (i = 0; i < n; i++) {
+        const compare_row *r = &rows[i];
+        fprintf(f, "| %s | `%s` | %d | %.3f | %.4g | %.4g | %.4g | %.4g | %.4g | %.3f |\n", r->label, r->flags,
+                r->spp, r->secs, r->rmse, r->relmse, r->mae, r->mse, r->eff, best > 0.0 ? r->eff / best : 0.0);
+    }
+    fprintf(f, "\nNotes:\n\n%s", notes);
+}
+
+/* A CSV field in quotes, its quotes doubled. */
+static void csv_field(FILE *f, const char *s)
+{
+    fputc('"', f);
+    for (; *s; s++) {
+        if (*s == '"') fputc('"', f);
+        fputc(*s, f);
+    }
+    fputc('"', f);
+}
+
+static void print_csv(FILE *f, const compare_row *rows, int n)
+{
+    double best = best_eff(rows, n);
+    int i;
+    fprintf(f, "estimator,flags,spp,time_s,rmse,relmse,mae,mse,efficiency,ratio_to_best\n");
+    for (i = 0; i < n; i++) {
+        const compare_row *r = &rows[i];
+        csv_field(f, r->label);
+        fputc(',', f);
+        csv_field(f, r->flags);
+        fprintf(f, ",%d,%.6f,%.9g,%.9g,%.9g,%.9g,%.9g,%.6f\n", r->spp, r->secs, r->rmse, r->relmse, r->mae, r->mse,
+                r->eff, best > 0.0 ? r->eff / best : 0.0);
+    }
+}
+
+/* path.tmp, to be renamed over path by close_atomic; NULL after printing why. */
+static FILE *open_atomic(const char *path, char *tmp, size_t cap)
+{
+    FILE *f;
+    snprintf(tmp, cap, "%s.tmp", path);
+    if (!(f = fopen(tmp, "w"))) fprintf(stderr, "%s: %s\n", tmp, strerror(errno));
+    return f;
+}
+
+static int close_atomic(FILE *f, const char *tmp, const char *path)
+{
+    int err = ferror(f);
+    err |= fclose(f) != 0;
+    if (err || rename(tmp, path)) {
+        fprintf(stderr, "%s: could not write\n", path);
+        remove(tmp);
+        return 1;
+    }
+    return 0;
+}
+
+int compare_write_md(const char *path, const compare_row *rows, int n, const char *notes)
+{
+    char tmp[4200];
+    FILE *f = open_atomic(path, tmp, sizeof tmp);
+    if (!f) return 1;
+    print_md(f, rows, n, notes);
+    return close_atomic(f, tmp, path);
+}
+
+int compare_write_csv(const char *path, const compare_row *rows, int n)
+{
+    char tmp[4200];
+    FILE *f = open_atomic(path, tmp, sizeof tmp);
+    if (!f) return 1;
+    print_csv(f, rows, n);
+    return close_atomic(f, tmp, path);
+}

@@ -1,0 +1,204 @@
+/* estimators.c — the estimator language of pathlab compare: split the list, expand the names
+ * into render flags, parse those flags (see estimators.h). */
+#include "cmd/estimators.h"
+#include <stdio.h>
+#include <string.h>
+#include "tracer/integrator.h"
+#include "tracer/light.h"
+
+#define MAX_FLAGS 64   /* of one estimator, its names expanded */
+
+/* The names of the strategy tables beside their enums are shorthands: name X means FLAG X. */
+typedef struct { const char *flag; const char *const *names; } strategy_table;
+static const strategy_table STRATEGIES[] = {
+    {"--direct", DIRECT_STRATEGY_NAMES}, {"--dir", DIR_STRATEGY_NAMES}, {"--light", LIGHT_STRATEGY_NAMES}};
+#define NSTRATEGIES (int)(sizeof STRATEGIES / sizeof *STRATEGIES)
+
+/* The shorthand of strategy `name` of table t: the name itself, with one exception: --dir brdf is
+ * "dir-brdf", since "brdf" alone is --direct brdf. */
+static const char *shorthand(int t, const char *name)
+{
+    return !strcmp(STRATEGIES[t].flag, "--dir") && !strcmp(name, "brdf") ? "dir-brdf" : name;
+}
+
+/* The words of one estimator once its names are expanded, as argv for render_parse_flag (which
+ * reads them only: some point to the constant strings of the tables). */
+typedef struct {
+    const char *label;   /* for messages */
+    char *tok[MAX_FLAGS];
+    int n;
+} flag_list;
+
+static int add_flag(flag_list *f, const char *s)
+{
+    if (f->n >= MAX_FLAGS) {
+        fprintf(stderr, "pathlab: compare: estimator '%s': more than %d flags\n", f->label, MAX_FLAGS);
+        return 1;
+    }
+    f->tok[f->n++] = (char *)s;
+    return 0;
+}
+
+static void print_names(void)
+{
+    int t, k;
+    for (t = 0; t < NSTRATEGIES; t++) {
+        fputs(t ? "        " : "  names:", stderr);
+        for (k = 0; STRATEGIES[t].names[k]; k++) fprintf(stderr, " %s", shorthand(t, STRATEGIES[t].names[k]));
+        fprintf(stderr, " (%s)%s\n", STRATEGIES[t].flag, t + 1 < NSTRATEGIES ? "," : ";");
+    }
+    fprintf(stderr, "  or render flags, e.g. \"--direct light --light solid-angle\"\n");
+}
+
+/* One name (n characters at w) -> its flag and its value. */
+static int expand_name(flag_list *f, const char *w, size_t n)
+{
+    int t, k;
+    for (t = 0; t < NSTRATEGIES; t++)
+        for (k = 0; STRATEGIES[t].names[k]; k++) {
+            const char *name = STRATEGIES[t].names[k], *word = shorthand(t, name);
+            if (strlen(word) == n && !strncmp(word, w, n)) return add_flag(f, STRATEGIES[t].flag) || add_flag(f, name);
+        }
+    fprintf(stderr, "pathlab: compare: estimator '%s': unknown name '%.*s'\n", f->label, (int)n, w);
+    print_names();
+    return 1;
+}
+
+static int takes_value(const char *flag)
+{
+    return strcmp(flag, "--quiet") && strcmp(flag, "--pixel-center") && strcmp(flag, "--split");
+}
+
+/* Splits text (modified: words end with '\0') into flags, flag values and names joined with '+'. */
+static int expand_words(flag_list *f, char *text)
+{
+    char *p = text, *end;
+    int after_flag = 0;
+    while (*(p += strspn(p, " \t"))) {
+        end = p + strcspn(p, " \t");
+        if (*end) *end++ = '\0';
+        if (*p == '-' || after_flag) {            /* a flag or a flag's value, as it is */
+            if (add_flag(f, p)) return 1;
+            after_flag = *p == '-' && !after_flag && takes_value(p);
+        } else {                                  /* names joined with '+' */
+            while (*p) {
+                size_t m = strcspn(p, "+");
+                if (expand_name(f, p, m)) return 1;
+                p += m + (p[m] == '+');
+            }
+        }
+        p = end;
+    }
+    return 0;
+}
+
+static void trim(char *s)
+{
+    size_t n = strlen(s), i = 0;
+    while (n > 0 && (s[n - 1] == ' ' || s[n - 1] == '\t')) s[--n] = '\0';
+    while (s[i] == ' ' || s[i] == '\t') i++;
+    memmove(s, s + i, n - i + 1);
+}
+
+/* "LABEL=FLAGS": moves LABEL out of text into e->label; without '=', the label is the text. */
+static int split_label(estimator_spec *e, char *text, const char *item, size_t len)
+{
+    char *eq = strchr(text, '=');
+    if (eq) {
+        *eq = '\0';
+        snprintf(e->label, sizeof e->label, "%s", text);
+        trim(e->label);
+        memmove(text, eq + 1, strlen(eq + 1) + 1);
+        trim(text);
+        if (!e->label[0]) { fprintf(stderr, "pathlab: compare: empty label before '=' in '%.*s'\n", (int)len, item); return 1; }
+    } else {
+        snprintf(e->label, sizeof e->label, "%s", text);
+    }
+    if (!text[0]) { fprintf(stderr, "pathlab: compare: an empty estimator in --estimators (two commas, or nothing after '=')\n"); return 1; }
+    return 0;
+}
+
+/* The slug: lower-case letters and digits of the label, other runs become one '-'. */
+static int make_slug(estimator_spec *e)
+{
+    const char *p;
+    size_t n = 0;
+    for (p = e->label; *p && n + 1 < sizeof e->slug; p++) {
+        int c = (unsigned char)*p;
+        if ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9')) e->slug[n++] = (char)c;
+        else if (c >= 'A' && c <= 'Z') e->slug[n++] = (char)(c - 'A' + 'a');
+        else if (n > 0 && e->slug[n - 1] != '-') e->slug[n++] = '-';
+    }
+    while (n > 0 && e->slug[n - 1] == '-') n--;
+    e->slug[n] = '\0';
+    if (!n) { fprintf(stderr, "pathlab: compare: label '%s' has no letter or digit to name its files\n", e->label); return 1; }
+    return 0;
+}
+
+/* e->a: the shared flags of base, then the estimator's own, which win. */
+static int apply_flags(estimator_spec *e, const flag_list *f, const render_args *base)
+{
+    int i;
+    e->a = *base;
+    e->a.scene = e->a.out = e->a.variance = NULL;
+    e->a.ro.spp = 0;
+    for (i = 0; i < f->n; i++)
+        if (render_parse_flag(&e->a, f->n, (char **)f->tok, &i)) {
+            fprintf(stderr, "pathlab: compare: in estimator '%s'\n", e->label);
+            return 1;
+        }
+    if (e->a.scene || e->a.out || e->a.variance || e->a.ro.io.split || e->a.ro.spp) {
+        fprintf(stderr, "pathlab: compare: estimator '%s': %s\n", e->label,
+                e->a.scene ? "a word that is neither a flag, a flag's value nor a name" :
+                e->a.ro.spp ? "--spp is set for all estimators (--spp or --time of compare), not for one" :
+                "-o, --variance and --split are not for an estimator");
+        return 1;
+    }
+    e->a.scene = base->scene;
+    e->a.ro.quiet = 1;
+    return 0;
+}
+
+/* One estimator, the len characters at item: its label, slug, flags and render_args. */
+static int parse_one(estimator_spec *e, const char *item, size_t len, const render_args *base)
+{
+    char text[600];
+    flag_list f;
+    int k;
+    if (len >= sizeof text) { fprintf(stderr, "pathlab: compare: estimator '%.40s...' is too long\n", item); return 1; }
+    memcpy(text, item, len);
+    text[len] = '\0';
+    trim(text);
+    f.label = e->label;
+    f.n = 0;
+    if (split_label(e, text, item, len) || expand_words(&f, text) || make_slug(e)) return 1;
+    e->flags[0] = '\0';
+    for (k = 0; k < f.n; k++) {
+        size_t used = strlen(e->flags);
+        snprintf(e->flags + used, sizeof e->flags - used, "%s%s", k ? " " : "", f.tok[k]);
+    }
+    return apply_flags(e, &f, base);
+}
+
+/* A comma ends an estimator unless a number follows it (--eye 0,1,5 or --up 0,-1,0). */
+static int splits_here(const char *s)
+{
+    return s[0] == ',' && !(s[1] >= '0' && s[1] <= '9') && s[1] != '.'
+           && !(s[1] == '-' && ((s[2] >= '0' && s[2] <= '9') || s[2] == '.'));
+}
+
+int estimators_parse(const char *list, const render_args *base, estimator_spec *est, int max, int *n)
+{
+    const char *s = list;
+    *n = 0;
+    if (!*s) { fprintf(stderr, "pathlab: compare: --estimators is empty\n"); return 1; }
+    while (*s) {
+        size_t len = 0;
+        while (s[len] && !splits_here(s + len)) len++;
+        if (*n == max) { fprintf(stderr, "pathlab: compare: at most %d estimators\n", max); return 1; }
+        if (parse_one(&est[(*n)++], s, len, base)) return 1;
+        s += len + (s[len] == ',');
+        if (s[-1] == ',' && !*s) { fprintf(stderr, "pathlab: compare: --estimators ends with a comma\n"); return 1; }
+    }
+    return 0;
+}

@@ -174,8 +174,7 @@ static void *run_job(void *arg)
     int i;
     memset(&st, 0, sizeof st);
     for (k = 0; k < j->a.n; k++) {
-        vec3 L = v3(0, 0, 0);
-        integrate(j->s, j->o, j->r, &j->rng, &L, &st);
+        vec3 L = integrate(j->s, j->o, j->r, &j->rng, NULL, &st);
         j->a.nonzero += !v3_is_zero(L);
         for (i = 0; i < 3; i++) {
             double c = v3_comp(L, i);
@@ -238,7 +237,7 @@ static void check_point_at(const scene *s, const char *where, dvec eye, dvec x, 
     char name[160];
     memset(&o, 0, sizeof o);
     o.light = S->light, o.dir = S->dir, o.direct = S->direct;
-    o.bmin = o.bmax = 1, o.rr_depth = -1, o.split = 0;
+    o.bmin = o.bmax = 1, o.rr_depth = -1;
     r.o = v3((float)eye.x, (float)eye.y, (float)eye.z);
     r.d = v3((float)(x.x - eye.x), (float)(x.y - eye.y), (float)(x.z - eye.z));
     r.tmax = INFINITY;
@@ -294,7 +293,7 @@ static void check_emission(const scene *s)
     ray up, down;
     pcg32 rng;
     trace_stats st;
-    vec3 Lu = v3(0, 0, 0), Ld = v3(0, 0, 0);
+    vec3 Lu, Ld;
     int e = s->lights.emitter_of_tri[2];   /* triangle 2 contains (-0.3, -0.45, 1)... */
     memset(&o, 0, sizeof o);
     memset(&st, 0, sizeof st);
@@ -302,8 +301,8 @@ static void check_emission(const scene *s)
     pcg32_init(&rng, 1, 1);
     up.o = v3(0.0f, -0.45f, 0.3f), up.d = v3(0.0f, 0.0f, 1.0f), up.tmax = INFINITY;
     down.o = v3(0.0f, -0.45f, 1.5f), down.d = v3(0.0f, 0.0f, -1.0f), down.tmax = INFINITY;
-    integrate(s, &o, &up, &rng, &Lu, &st);
-    integrate(s, &o, &down, &rng, &Ld, &st);
+    Lu = integrate(s, &o, &up, &rng, NULL, &st);
+    Ld = integrate(s, &o, &down, &rng, NULL, &st);
     check(e >= 0 && v3_is_zero(v3_sub(Lu, s->lights.e[e].Le)) && v3_is_zero(Ld), "L0 of the light: Le from the front, 0 from the back",
           "front %g %g %g (Le %g %g %g), back %g %g %g", Lu.x, Lu.y, Lu.z, s->lights.e[e].Le.x, s->lights.e[e].Le.y,
           s->lights.e[e].Le.z, Ld.x, Ld.y, Ld.z);
@@ -339,8 +338,9 @@ int main(void)
     scene s;
     unsigned seed = 7;
     size_t i, j;
+    int built;
     if (fast && *fast && strcmp(fast, "0")) n_max /= 20, n_pilot /= 20;
-    int built = build_scene(&s) == 0;
+    built = build_scene(&s) == 0;
     if (!check(built && s.lights.n == NLIGHT, "build the scene in memory", "%d emitters", s.lights.n)) return check_summary();
     check_emission(&s);
     for (i = 0; i < sizeof P / sizeof P[0]; i++) {

@@ -84,9 +84,9 @@ else fail "heatmap of the missing-L2 image: blue and red pixel counts '$colours'
 # 4. the cosine forgotten at the first bounce: a copy of src/ with the bug, built with the same cc
 mkdir -p "$TMP/broken"
 cp -r src "$TMP/broken/src"
-sed -i 's|beta = v3_mul(beta, v3_scale(f, cos_p / pdf2));|beta = v3_mul(beta, v3_scale(f, (k == 1 ? 1.0f : cos_p) / pdf2));|' "$TMP/broken/src/tracer/integrator.c"
+sed -i 's|beta = v3_mul(beta, v3_scale(f, cos_p / pdf2_sa));|beta = v3_mul(beta, v3_scale(f, (k == 1 ? 1.0f : cos_p) / pdf2_sa));|' "$TMP/broken/src/tracer/integrator.c"
 if cmp -s src/tracer/integrator.c "$TMP/broken/src/tracer/integrator.c"; then
-    fail "cosine forgotten: the throughput line 'beta = v3_mul(beta, v3_scale(f, cos_p / pdf2));' is no longer in src/tracer/integrator.c; update this test"
+    fail "cosine forgotten: the throughput line 'beta = v3_mul(beta, v3_scale(f, cos_p / pdf2_sa));' is no longer in src/tracer/integrator.c; update this test"
 elif ! ${CC:-cc} -std=c99 -D_POSIX_C_SOURCE=200809L -O1 -I"$TMP/broken/src" -o "$TMP/broken/pathlab" "$TMP"/broken/src/*/*.c -lm -lpthread 2> "$TMP/err"; then
     fail "cosine forgotten: the broken copy does not build: $(head -c 300 "$TMP/err")"
 else

@@ -1,179 +1,250 @@
-/* integrator.c — the path tracer of the course, vertex by vertex.
- * Notation of the slides: p is the current vertex, wo the direction back toward the eye, s a point
- * on a light chosen with pdf1(s), q the next vertex found in a direction chosen with pdf2; the path
- * throughput `beta` carries f cos / pdf2 of the vertices before p, so that at vertex k the estimate
- * of L_k is beta * f(p) * Le * G / pdf(s) — the slides' L2 estimator with pdf(s, q) = pdf1(s) pdf2(q). */
+/* integrator.c — the path tracer of the course, vertex by vertex, in the slides' notation:
+ *   p          the current vertex (a `vertex`); wo the direction back toward the eye;
+ *   s          a point on a light, chosen with pdf1(s) (a `light_sample`);
+ *   q          the next vertex: where the ray from p, in a direction wi chosen with pdf2, hits;
+ *   wi_world   a direction in world coordinates; wi_local the same in p's frame (cos theta = z);
+ *   _area _sa  a density per unit area, per steradian (solid angle): pdf1_area, pdf1_sa, pdf2_sa.
+ * The slides' L2 estimator, with pdf(s, q) = pdf1(s) x pdf2(q) and both pdfs per unit area,
+ *   Le(s) f(s, q, p) G(q, s) f(q, p, o) G(p, q) / (pdf1(s) pdf2(q)),
+ * is computed one vertex at a time: the path throughput `beta` carries f G / pdf2(q) of the vertices
+ * walked so far, and at each vertex light sampling adds beta x Le f G / pdf1(s). Directions are
+ * sampled per steradian; per unit area at q the density is pdf2_area(q) = pdf2_sa cos(theta_q) / d^2,
+ * so in f G(p, q) / pdf2_area(q) the cos(theta_q) / d^2 cancels: beta *= f cos(theta_p) / pdf2_sa.
+ * Likewise pdf1_sa = pdf1_area d^2 / cos(theta_s): Le f G(p, s) / pdf1_area = Le f cos(theta_p) / pdf1_sa.
+ * MIS weighs the two ways of finding a light with both pdfs per steradian. */
 #include "tracer/integrator.h"
 #include "tracer/brdf.h"
 #include "tracer/sampling.h"
+#include <assert.h>
 
 const char *const DIR_STRATEGY_NAMES[] = {"uniform", "cosine", "brdf", 0};
 const char *const DIRECT_STRATEGY_NAMES[] = {"light", "brdf", "mis-balance", "mis-power", 0};
 
 /* A shading point: position, normal facing the incoming ray, local frame, material. */
 typedef struct {
-    vec3 p, n, wo_local;
+    vec3 pos, n, wo_local;
     float scale;              /* triangle_scale of its triangle, for offset_ray_origin */
-    frame f;
+    frame frame;              /* n is its z axis */
     const material *mat;
 } vertex;
 
-static vertex make_vertex(const scene *s, const hit *h, vec3 dir)
+/* The vertex at hit h of a ray of direction dir. */
+static vertex make_vertex(const scene *sc, const hit *h, vec3 dir)
 {
     vertex v;
     vec3 wo = v3_scale(dir, -1.0f / v3_length(dir));
-    v.p = scene_hit_point(s, h);
-    v.scale = scene_triangle_scale(s, h->tri);
-    v.n = s->Ng[h->tri];
+    v.pos = scene_hit_point(sc, h);
+    v.scale = scene_triangle_scale(sc, h->tri);
+    v.n = sc->Ng[h->tri];
     if (v3_dot(v.n, wo) < 0.0f) v.n = v3_scale(v.n, -1.0f);   /* the BRDF is two-sided */
-    v.f = frame_from_normal(v.n);
-    v.wo_local = frame_to_local(&v.f, wo);
-    v.mat = &s->m.mats[s->m.tri_mat[h->tri]];
+    v.frame = frame_from_normal(v.n);
+    v.wo_local = frame_to_local(&v.frame, wo);
+    v.mat = &sc->m.mats[sc->m.tri_mat[h->tri]];
     return v;
 }
 
 /* Le seen along dir at the hit: emission is one-sided, on the front face only. */
-static vec3 emitted(const scene *s, const hit *h, vec3 dir)
+static vec3 emitted(const scene *sc, const hit *h, vec3 dir)
 {
-    vec3 Ke = s->m.mats[s->m.tri_mat[h->tri]].Ke;
-    return v3_dot(s->Ng[h->tri], dir) < 0.0f ? Ke : v3(0, 0, 0);
+    vec3 Ke = sc->m.mats[sc->m.tri_mat[h->tri]].Ke;
+    return v3_dot(sc->Ng[h->tri], dir) < 0.0f ? Ke : v3(0, 0, 0);
 }
+
+static inline int finite3(vec3 c) { return isfinite(c.x) && isfinite(c.y) && isfinite(c.z); }
 
 static int uses_light_sampling(direct_strategy d) { return d != DIRECT_BRDF; }
 static int uses_dir_sampling(direct_strategy d) { return d != DIRECT_LIGHT; }
 
-/* MIS weight of a strategy of density pf against the other of density pg (same measure). */
-static float mis_weight(direct_strategy d, float pf, float pg)
+/* MIS weight of a strategy of density pdf_this against the other of density pdf_other (both per
+ * steradian); 1 without MIS. */
+static float mis_weight(direct_strategy d, float pdf_this, float pdf_other)
 {
     switch (d) {
-    case DIRECT_MIS_BALANCE: return balance_heuristic(pf, pg);
-    case DIRECT_MIS_POWER: return power_heuristic(pf, pg);
+    case DIRECT_MIS_BALANCE: return balance_heuristic(pdf_this, pdf_other);
+    case DIRECT_MIS_POWER: return power_heuristic(pdf_this, pdf_other);
     default: return 1.0f;
     }
 }
 
-/* pdf2 of the direction strategy, per steradian, for wi in the local frame of v. */
-static float pdf_dir(const integrator_opts *o, const vertex *v, vec3 wi)
+/* pdf2 per steradian of the --dir strategy at p, for the direction wi_local. */
+static float dir_pdf2_sa(const integrator_opts *o, const vertex *p, vec3 wi_local)
 {
     switch (o->dir) {
-    case DIR_UNIFORM: return pdf_uniform_hemisphere(wi);
-    case DIR_COSINE: return pdf_cosine_hemisphere(wi);
-    default: return brdf_pdf(v->mat, v->wo_local, wi);
+    case DIR_UNIFORM: return pdf_uniform_hemisphere(wi_local);
+    case DIR_COSINE: return pdf_cosine_hemisphere(wi_local);
+    default: return brdf_pdf(p->mat, p->wo_local, wi_local);
     }
 }
 
-static vec3 sample_dir(const integrator_opts *o, const vertex *v, pcg32 *rng, float *pdf)
+/* A direction wi_local at p chosen by the --dir strategy, its pdf2 per steradian in *pdf2_sa (0: the
+ * BRDF lobe sent it below the surface). */
+static vec3 sample_dir(const integrator_opts *o, const vertex *p, pcg32 *rng, float *pdf2_sa)
 {
     float u0 = pcg32_float(rng), u1 = pcg32_float(rng), u2 = pcg32_float(rng);
-    vec3 wi;
+    vec3 wi_local;
     switch (o->dir) {
-    case DIR_UNIFORM: wi = sample_uniform_hemisphere(u1, u2); *pdf = pdf_uniform_hemisphere(wi); break;
-    case DIR_COSINE: wi = sample_cosine_hemisphere(u1, u2); *pdf = pdf_cosine_hemisphere(wi); break;
-    default: wi = brdf_sample(v->mat, v->wo_local, u0, u1, u2, pdf); break;
+    case DIR_UNIFORM: wi_local = sample_uniform_hemisphere(u1, u2); *pdf2_sa = pdf_uniform_hemisphere(wi_local); break;
+    case DIR_COSINE: wi_local = sample_cosine_hemisphere(u1, u2); *pdf2_sa = pdf_cosine_hemisphere(wi_local); break;
+    default: return brdf_sample(p->mat, p->wo_local, u0, u1, u2, pdf2_sa);
     }
-    return wi;
+    assert(*pdf2_sa > 0.0f);   /* the hemisphere warps never return z = 0, since u1 < 1 */
+    return wi_local;
 }
 
-/* L_k by light sampling: Le(s) f(p) cos(theta_p) cos(theta_s) / d^2 / pdf1(s), MIS-weighted. */
-static vec3 direct_from_light(const scene *s, const integrator_opts *o, const vertex *v, pcg32 *rng, trace_stats *st)
+/* The shadow ray from just off p to just off s: no epsilon on t, the offsets keep both surfaces out. */
+static int visible(const scene *sc, const vertex *p, const light_sample *s, trace_stats *st)
 {
-    light_sample ls;
-    vec3 d, wi, f;
-    float dist2, dist, cos_p, cos_s, pdf_light, w;
     ray shadow;
-    double u0 = pcg32_double(rng);
-    float u1 = pcg32_float(rng), u2 = pcg32_float(rng);
-    light_sample_point(&s->lights, o->light, v->p, u0, u1, u2, &ls);
-    d = v3_sub(ls.p, v->p);
-    dist2 = v3_dot(d, d);
-    dist = sqrtf(dist2);
-    wi = v3_scale(d, 1.0f / dist);
-    cos_p = v3_dot(v->n, wi);
-    cos_s = -v3_dot(ls.n, wi);
-    if (cos_p <= 0.0f || cos_s <= 0.0f || !(dist2 > 0.0f)) return v3(0, 0, 0);   /* no shadow ray: no light */
-    f = brdf_eval(v->mat, v->wo_local, frame_to_local(&v->f, wi));
-    if (v3_is_zero(f)) return v3(0, 0, 0);
-    /* from just off p to just off s: no epsilon on t, the offsets keep both surfaces out */
-    shadow.o = offset_ray_origin(v->p, v->n, v->scale);
-    shadow.d = v3_sub(offset_ray_origin(ls.p, ls.n, scene_triangle_scale(s, s->lights.e[ls.emitter].tri)), shadow.o);
+    shadow.o = offset_ray_origin(p->pos, p->n, p->scale);
+    shadow.d = v3_sub(offset_ray_origin(s->p, s->n, scene_triangle_scale(sc, sc->lights.e[s->emitter].tri)), shadow.o);
     shadow.tmax = 1.0f;
     st->shadow_rays++;
-    if (bvh_occluded(s->accel, &shadow)) return v3(0, 0, 0);
-    pdf_light = pdf_area_to_solid_angle(ls.pdf_area, dist2, cos_s);
-    w = mis_weight(o->direct, pdf_light, pdf_dir(o, v, frame_to_local(&v->f, wi)));
-    return v3_scale(v3_mul(f, ls.Le), cos_p / pdf_light * w);
+    return !bvh_occluded(sc->accel, &shadow);
 }
 
-/* L_k by direction sampling: the continuation ray from p (vertex v) hit an emitter at q (hit h). */
-static vec3 direct_from_dir(const scene *s, const integrator_opts *o, const vertex *v, const hit *h, const ray *r, float pdf2)
+/* L_k by light sampling at p: Le(s) f cos(theta_p) cos(theta_s) / d^2 / pdf1_area(s), which is
+ * Le(s) f cos(theta_p) / pdf1_sa(s), MIS-weighted against direction sampling. */
+static vec3 direct_from_light(const scene *sc, const integrator_opts *o, const vertex *p, pcg32 *rng, trace_stats *st)
 {
-    vec3 Le = emitted(s, h, r->d);
-    float w = 1.0f;
+    light_sample s;
+    vec3 d, wi_world, wi_local, f;
+    float dist2, dist, cos_p, cos_s, pdf1_sa, w_mis;
+    double u0 = pcg32_double(rng);
+    float u1 = pcg32_float(rng), u2 = pcg32_float(rng);
+    light_sample_point(&sc->lights, o->light, p->pos, u0, u1, u2, &s);
+    d = v3_sub(s.p, p->pos);
+    dist2 = v3_dot(d, d);
+    dist = sqrtf(dist2);
+    wi_world = v3_scale(d, 1.0f / dist);
+    cos_p = v3_dot(p->n, wi_world);
+    cos_s = -v3_dot(s.n, wi_world);
+    if (cos_p <= 0.0f || cos_s <= 0.0f || !(dist2 > 0.0f)) return v3(0, 0, 0);   /* no shadow ray: no light */
+    wi_local = frame_to_local(&p->frame, wi_world);
+    f = brdf_eval(p->mat, p->wo_local, wi_local);
+    if (v3_is_zero(f) || !visible(sc, p, &s, st)) return v3(0, 0, 0);
+    pdf1_sa = pdf_area_to_solid_angle(s.pdf_area, dist2, cos_s);
+    w_mis = mis_weight(o->direct, pdf1_sa, dir_pdf2_sa(o, p, wi_local));
+    return v3_scale(v3_mul(f, s.Le), cos_p / pdf1_sa * w_mis);
+}
+
+/* pdf1 per steradian with which light sampling at p would have chosen the point hit at q. */
+static float light_pdf1_sa(const scene *sc, const integrator_opts *o, const vertex *p, const hit *q, const ray *ray_pq)
+{
+    int i = sc->lights.emitter_of_tri[q->tri];
+    float dist2 = q->t * q->t * v3_dot(ray_pq->d, ray_pq->d);
+    float cos_s = -v3_dot(sc->Ng[q->tri], ray_pq->d) / v3_length(ray_pq->d);
+    assert(i >= 0);   /* q emits light, so its triangle is one of the emitters */
+    return pdf_area_to_solid_angle(light_pdf_area(&sc->lights, o->light, i, p->pos, scene_hit_point(sc, q)), dist2, cos_s);
+}
+
+/* L_k by direction sampling: the ray from p, of density pdf2_sa, hit q; Le(q) if q emits toward p,
+ * MIS-weighted against light sampling. */
+static vec3 direct_from_dir(const scene *sc, const integrator_opts *o, const vertex *p, const hit *q, const ray *ray_pq, float pdf2_sa)
+{
+    vec3 Le = emitted(sc, q, ray_pq->d);
+    float w_mis = 1.0f;
     if (v3_is_zero(Le)) return Le;
     if (uses_light_sampling(o->direct)) {
-        int i = s->lights.emitter_of_tri[h->tri];
-        float dist2 = h->t * h->t * v3_dot(r->d, r->d);
-        float cos_s = -v3_dot(s->Ng[h->tri], r->d) / v3_length(r->d);
-        float pdf_light = pdf_area_to_solid_angle(light_pdf_area(&s->lights, o->light, i, v->p, scene_hit_point(s, h)), dist2, cos_s);
-        w = mis_weight(o->direct, pdf2, pdf_light);
+        float pdf1_sa = light_pdf1_sa(sc, o, p, q, ray_pq);
+        w_mis = mis_weight(o->direct, pdf2_sa, pdf1_sa);
     }
-    return v3_scale(Le, w);
+    return v3_scale(Le, w_mis);
 }
 
-/* L[0] is the total, summed in path order whether or not bounces are split, so that --split
- * leaves the total image bit for bit the same; L[1 + k - bmin] is L_k alone. */
-static void add(vec3 *L, const integrator_opts *o, int k, vec3 c)
+/* The ray from just off p in the direction wi_local, toward the next vertex q. */
+static ray continuation_ray(const vertex *p, vec3 wi_local)
 {
-    L[0] = v3_add(L[0], c);
-    if (o->split) L[1 + k - o->bmin] = v3_add(L[1 + k - o->bmin], c);
+    ray r;
+    r.o = offset_ray_origin(p->pos, p->n, p->scale);
+    r.d = frame_to_world(&p->frame, wi_local);
+    r.tmax = INFINITY;
+    return r;
 }
 
-void integrate(const scene *s, const integrator_opts *o, const ray *camera, pcg32 *rng, vec3 *L, trace_stats *st)
+/* "et on arrête quand ?": Russian roulette. The path goes on with probability p_survive, which
+ * follows its throughput, and a surviving path's throughput is divided by p_survive, so that
+ * E[beta] is unchanged and no L_k is biased; the clamp at 0.05 bounds that weight by 20.
+ * Returns 0 when the path stops. */
+static int survives_roulette(vec3 *beta, pcg32 *rng)
 {
-    ray r = *camera;
-    hit h;
-    vec3 beta = v3(1, 1, 1);
-    int k, lights = s->lights.n > 0;
+    vec3 before = *beta;
+    float p_survive = fminf(1.0f, fmaxf(0.05f, v3_max_comp(before)));
+    if (pcg32_float(rng) >= p_survive) return 0;
+    *beta = v3_scale(before, 1.0f / p_survive);
+    /* when below 1, p_survive is >= every channel of beta, which thus ends <= 1: finite stays finite */
+    assert(finite3(*beta) || !finite3(before));
+    return 1;
+}
+
+/* The radiance of one camera ray: L = the sum in path order, and with Lk each L_k on its own. */
+typedef struct {
+    vec3 L, *Lk;
+    int bmin, bmax;
+} radiance_sum;
+
+static radiance_sum radiance_start(const integrator_opts *o, vec3 *Lk)
+{
+    radiance_sum sum;
+    int k;
+    assert(0 <= o->bmin && o->bmin <= o->bmax);
+    sum.L = v3(0, 0, 0);
+    sum.Lk = Lk;
+    sum.bmin = o->bmin, sum.bmax = o->bmax;
+    for (k = 0; Lk && k <= o->bmax; k++) Lk[k] = v3(0, 0, 0);
+    return sum;
+}
+
+/* Adds c to L_k. L is summed in path order whether or not Lk is kept, so that --split leaves the
+ * total image bit for bit the same. */
+static void add_Lk(radiance_sum *sum, int k, vec3 c)
+{
+    assert(sum->bmin <= k && k <= sum->bmax);
+    sum->L = v3_add(sum->L, c);
+    if (sum->Lk) sum->Lk[k] = v3_add(sum->Lk[k], c);
+}
+
+vec3 integrate(const scene *sc, const integrator_opts *o, const ray *camera, pcg32 *rng, vec3 *Lk, trace_stats *st)
+{
+    radiance_sum sum = radiance_start(o, Lk);
+    ray ray_pq = *camera;     /* from p (first the eye) toward the next vertex q */
+    hit q;
+    vec3 beta = v3(1, 1, 1);  /* the path throughput: the product of f G / pdf2(q) over the vertices before p */
+    int k, has_lights = sc->lights.n > 0;
 
     st->camera_rays++;
-    if (!bvh_intersect(s->accel, &r, &h)) return;
-    if (o->bmin == 0) add(L, o, 0, emitted(s, &h, r.d));                /* L0 */
+    if (!bvh_intersect(sc->accel, &ray_pq, &q)) return sum.L;
+    if (o->bmin == 0) add_Lk(&sum, 0, emitted(sc, &q, ray_pq.d));                    /* L0 */
 
     for (k = 1; k <= o->bmax; k++) {
-        vertex v = make_vertex(s, &h, r.d);
-        vec3 wi, f;
-        float pdf2, cos_p;
+        vertex p = make_vertex(sc, &q, ray_pq.d);     /* the last q is the new p */
+        vec3 wi_local, f;
+        float pdf2_sa, cos_p;
+        int adds_Lk = k >= o->bmin && has_lights;
 
-        /* L_k, light sampling: choose s on a light */
-        if (k >= o->bmin && lights && uses_light_sampling(o->direct))
-            add(L, o, k, v3_mul(beta, direct_from_light(s, o, &v, rng, st)));
+        /* L_k by light sampling: a point s on a light, with pdf1(s) */
+        if (adds_Lk && uses_light_sampling(o->direct))
+            add_Lk(&sum, k, v3_mul(beta, direct_from_light(sc, o, &p, rng, st)));
 
         /* the last bounce needs a continuation ray only to find emitters by direction sampling */
         if (k == o->bmax && !uses_dir_sampling(o->direct)) break;
 
-        /* choose the next vertex q in a direction with pdf2; then beta *= f G(p,q) / pdf2(q),
-         * which is f cos(theta_p) / pdf2(w): the cos(theta_q) / d^2 of G and of the area pdf cancel */
-        wi = sample_dir(o, &v, rng, &pdf2);
-        if (!(pdf2 > 0.0f)) break;
-        f = brdf_eval(v.mat, v.wo_local, wi);
-        cos_p = wi.z;
-        beta = v3_mul(beta, v3_scale(f, cos_p / pdf2));
+        /* the next vertex q, in a direction chosen with pdf2: beta *= f G(p, q) / pdf2_area(q) */
+        wi_local = sample_dir(o, &p, rng, &pdf2_sa);
+        if (!(pdf2_sa > 0.0f)) break;
+        f = brdf_eval(p.mat, p.wo_local, wi_local);
+        cos_p = wi_local.z;
+        beta = v3_mul(beta, v3_scale(f, cos_p / pdf2_sa));
         if (v3_is_zero(beta)) break;                                    /* no light can follow */
-        r.o = offset_ray_origin(v.p, v.n, v.scale);
-        r.d = frame_to_world(&v.f, wi);
-        r.tmax = INFINITY;
+        ray_pq = continuation_ray(&p, wi_local);
         st->continuation_rays++;
-        if (!bvh_intersect(s->accel, &r, &h)) break;
+        if (!bvh_intersect(sc->accel, &ray_pq, &q)) break;
 
-        /* L_k, direction sampling: q is on a light */
-        if (k >= o->bmin && lights && uses_dir_sampling(o->direct))
-            add(L, o, k, v3_mul(beta, direct_from_dir(s, o, &v, &h, &r, pdf2)));
+        /* L_k by direction sampling: q is on a light */
+        if (adds_Lk && uses_dir_sampling(o->direct))
+            add_Lk(&sum, k, v3_mul(beta, direct_from_dir(sc, o, &p, &q, &ray_pq, pdf2_sa)));
 
-        /* "et on arrete quand ?": Russian roulette, survival in proportion to the throughput */
-        if (o->rr_depth >= 0 && k >= o->rr_depth && k < o->bmax) {
-            float q = fminf(1.0f, fmaxf(0.05f, v3_max_comp(beta)));
-            if (pcg32_float(rng) >= q) break;
-            beta = v3_scale(beta, 1.0f / q);
-        }
+        /* "et on arrête quand ?" */
+        if (o->rr_depth >= 0 && k >= o->rr_depth && k < o->bmax && !survives_roulette(&beta, rng)) break;
     }
+    return sum.L;
 }

@@ -1,8 +1,8 @@
-/* integrator.h — the path tracer: the radiance along a camera ray, split by bounce.
+/* integrator.h — the path tracer: the radiance along a camera ray, and each bounce's share of it.
  * L_k is the light that reached the eye after exactly k reflections: L0 = emitters seen directly,
- * L1 = direct light, L2 = one indirect bounce... At each surface vertex x_k the path adds
+ * L1 = direct light, L2 = one indirect bounce... At each surface vertex p the path adds
  *   - L_k by light sampling: a point s on an emitter with pdf1(s) and a shadow ray, and/or
- *   - L_k by direction sampling: the continuation ray from x_k hits an emitter,
+ *   - L_k by direction sampling: the continuation ray from p hits an emitter at the next vertex q,
  * weighted by MIS when both are used, so emission is never counted twice. */
 #ifndef PATHLAB_INTEGRATOR_H
 #define PATHLAB_INTEGRATOR_H
@@ -22,9 +22,9 @@ typedef struct {
     light_strategy light;
     dir_strategy dir;
     direct_strategy direct;
-    int bmin, bmax;           /* render L_bmin + ... + L_bmax */
+    int bmin, bmax;           /* L_bmin + ... + L_bmax, 0 <= bmin <= bmax */
     int rr_depth;             /* Russian roulette after this many bounces; -1: off */
-    int split;                /* 0: L[0] = the total; 1: also L[1 + k - bmin] = L_k */
+    int split;                /* --split: the render also keeps one image per L_k (integrate ignores it) */
 } integrator_opts;
 
 typedef struct {
@@ -32,6 +32,8 @@ typedef struct {
     uint64_t nonfinite;       /* samples that were NaN or infinite (and were dropped) */
 } trace_stats;
 
-/* Adds the radiance along r (a camera ray) to L[0], and with opts->split each L_k to L[1 + k - bmin]. */
-void integrate(const scene *s, const integrator_opts *o, const ray *r, pcg32 *rng, vec3 *L, trace_stats *st);
+/* Returns the radiance L_bmin + ... + L_bmax along the camera ray, summed in path order. If Lk is
+ * not NULL it has o->bmax + 1 entries and receives Lk[k] = L_k for k = 0..bmax (0 outside bmin..bmax).
+ * Counts the rays it traces in *st. */
+vec3 integrate(const scene *sc, const integrator_opts *o, const ray *camera, pcg32 *rng, vec3 *Lk, trace_stats *st);
 #endif

@@ -1,6 +1,8 @@
-/* light.c — emitters and the choice of a point s on them. */
+/* light.c — emitters and the choice of a point s on them: first an emitter (a discrete
+ * probability), then a point on it (uniform per unit area, or per steradian for solid-angle). */
 #include "tracer/light.h"
 #include "tracer/sampling.h"
+#include <assert.h>
 #include <stdlib.h>
 #include "math/dvec.h"
 
@@ -86,9 +88,11 @@ static int pick(const double *cdf, int n, double u)
     return lo;
 }
 
-float light_choice_prob(const light_set *ls, light_strategy st, int i)
+/* The probability of choosing emitter i (before the point on it). */
+static float choice_prob(const light_set *ls, light_strategy st, int i)
 {
     const double *cdf = ls->cdf[choice_of(st)];
+    assert(0 <= i && i < ls->n);
     return (float)(cdf[i] - (i > 0 ? cdf[i - 1] : 0.0));
 }
 
@@ -123,16 +127,18 @@ static int solid_angle_usable(const spherical_triangle *t)
 }
 
 /* Arvo 1995: a direction uniform over the spherical triangle. u1 picks the sub-triangle A B C'
- * of area u1 Omega (C' on the arc AC), u2 a point on the arc from B to C' with the right density. */
+ * of area u1 Omega (C' on the arc AC), u2 a point on the arc from B to C' with the right density.
+ * Arvo's s, t, u, v, q are sin_d, cos_d (d = sub - alpha), u, v, cos_ac here: s and q are points
+ * in the course. */
 static vec3 sample_spherical_triangle(const spherical_triangle *t, float u1, float u2)
 {
-    double sub = u1 * t->omega, s = sin(sub - t->alpha), c = cos(sub - t->alpha);
+    double sub = u1 * t->omega, sin_d = sin(sub - t->alpha), cos_d = cos(sub - t->alpha);
     double cos_alpha = cos(t->alpha), sin_alpha = sin(t->alpha);
-    double u = c - cos_alpha, v = s + sin_alpha * dv_dot(t->A, t->B), z;
-    double q = ((v * c - u * s) * cos_alpha - v) / ((v * s + u * c) * sin_alpha);   /* cos of arc AC' */
+    double u = cos_d - cos_alpha, v = sin_d + sin_alpha * dv_dot(t->A, t->B), z;
+    double cos_ac = ((v * cos_d - u * sin_d) * cos_alpha - v) / ((v * sin_d + u * cos_d) * sin_alpha);   /* of arc AC' */
     dvec C1, w;
-    q = fmin(1.0, fmax(-1.0, q));
-    C1 = dv_lin(t->A, q, orthogonal_part(t->C, t->A), sqrt(1.0 - q * q));
+    cos_ac = fmin(1.0, fmax(-1.0, cos_ac));
+    C1 = dv_lin(t->A, cos_ac, orthogonal_part(t->C, t->A), sqrt(1.0 - cos_ac * cos_ac));
     z = 1.0 - u2 * (1.0 - dv_dot(C1, t->B));                                         /* cos of arc B P */
     w = dv_lin(t->B, z, orthogonal_part(C1, t->B), sqrt(fmax(0.0, 1.0 - z * z)));
     return v3((float)w.x, (float)w.y, (float)w.z);
@@ -148,17 +154,21 @@ float light_pdf_area(const light_set *ls, light_strategy st, int i, vec3 p, vec3
         if (solid_angle_usable(&t)) {
             vec3 d = v3_sub(s, p);
             float dist2 = v3_dot(d, d), cos_s = fabsf(v3_dot(e->n, d)) / sqrtf(dist2);
-            return light_choice_prob(ls, st, i) / (float)t.omega * cos_s / dist2;   /* 1/Omega per steradian */
+            float pdf_sa = choice_prob(ls, st, i) / (float)t.omega;   /* uniform over Omega */
+            return pdf_solid_angle_to_area(pdf_sa, dist2, cos_s);
         }
     }
-    return light_choice_prob(ls, st, i) / e->area;
+    return choice_prob(ls, st, i) / e->area;
 }
 
 void light_sample_point(const light_set *ls, light_strategy st, vec3 p, double u0, float u1, float u2, light_sample *out)
 {
-    int i = pick(ls->cdf[choice_of(st)], ls->n, u0);
-    const emitter *e = &ls->e[i];
+    int i;
+    const emitter *e;
     float b1, b2;
+    assert(ls->n > 0);   /* callers sample lights only in a scene that has some */
+    i = pick(ls->cdf[choice_of(st)], ls->n, u0);
+    e = &ls->e[i];
     out->n = e->n;
     out->Le = e->Le;
     out->emitter = i;

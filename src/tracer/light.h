@@ -4,8 +4,11 @@
  * triangle chosen uniformly, then a uniform point on it; power = a triangle chosen in proportion to
  * area x luminance(Ke), then a uniform point on it; solid-angle = a triangle chosen as for power,
  * then a direction uniform over the spherical triangle it subtends from the shading point p
- * (Arvo 1995), so that its pdf is 1/Omega per steradian. Pdfs are returned per unit area;
- * pdf_area_to_solid_angle converts: pdf_w = pdf_A d^2 / cos(theta_s). */
+ * (Arvo 1995), so that its pdf is 1/Omega per steradian.
+ * Measures: pdf1 is returned per unit area (pdf_area) whatever the strategy. Seen from p at
+ * distance d, with theta_s the angle at s between its normal and the direction to p, the density
+ * per steradian is pdf_sa = pdf_area d^2 / cos(theta_s) (pdf_area_to_solid_angle), and back,
+ * pdf_area = pdf_sa cos(theta_s) / d^2 (pdf_solid_angle_to_area). */
 #ifndef PATHLAB_LIGHT_H
 #define PATHLAB_LIGHT_H
 #include "scene/mesh.h"
@@ -44,11 +47,12 @@ void light_free(light_set *ls);
 void light_sample_point(const light_set *ls, light_strategy st, vec3 p, double u0, float u1, float u2, light_sample *out);
 /* pdf1(s) per unit area of the point s on emitter i, chosen from p under strategy st. */
 float light_pdf_area(const light_set *ls, light_strategy st, int i, vec3 p, vec3 s);
-/* The probability of choosing emitter i (before the point on it). */
-float light_choice_prob(const light_set *ls, light_strategy st, int i);
-/* Converts an area pdf at a point seen at distance^2 dist2 and cosine cos_s into a solid-angle pdf. */
+/* A density per unit area at a point seen at squared distance dist2 under cosine cos_s, made one
+ * per steradian (0 when the point is seen edge-on or from behind). */
 static inline float pdf_area_to_solid_angle(float pdf_area, float dist2, float cos_s)
 {
     return cos_s > 0.0f ? pdf_area * dist2 / cos_s : 0.0f;
 }
+/* The converse: a density per steradian made one per unit area at that point. */
+static inline float pdf_solid_angle_to_area(float pdf_sa, float dist2, float cos_s) { return pdf_sa * cos_s / dist2; }
 #endif

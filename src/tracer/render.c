@@ -1,6 +1,8 @@
-/* render.c — threads, tiles, per-pixel streams, progress. */
+/* render.c — tiles handed to threads by parallel_for, per-pixel streams, per-layer means, progress. */
 #include "tracer/render.h"
 #include "sys/clock.h"
+#include "sys/parallel.h"
+#include <assert.h>
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -9,12 +11,21 @@
 
 #define TILE 16
 
+/* What one thread owns, so that rendering needs no lock; the counts are merged at the end. */
 typedef struct {
-    const scene *s;
-    const camera *c;
+    vec3 *Lk;                /* L_k of one sample for k = 0..bmax, with --split (else NULL) */
+    double *sums;            /* per layer: the sum and sum of squares of one pixel's samples, 6 doubles */
+    trace_stats st;
+} thread_state;
+
+typedef struct {
+    const scene *sc;
+    const camera *cam;
     const render_opts *o;
     render_result *out;
-    int tiles_x, ntiles, next_tile, done_tiles;
+    thread_state *ts;        /* [thread] */
+    int tiles_x, ntiles;
+    int done_tiles;          /* under lock, for the progress bar */
     int progress;            /* draw a progress bar on stderr */
     double t0;
     pthread_mutex_t lock;
@@ -22,17 +33,19 @@ typedef struct {
 
 static int finite3(vec3 c) { return isfinite(c.x) && isfinite(c.y) && isfinite(c.z); }
 
-/* Layer 0 is the total; with --split, layer 1 + k - bmin holds L_k. */
 static void accumulate(double *a, vec3 c)
 {
     a[0] += c.x; a[1] += c.y; a[2] += c.z;
     a[3] += (double)c.x * c.x; a[4] += (double)c.y * c.y; a[5] += (double)c.z * c.z;
 }
 
-static void store_pixel(render_result *out, int k, int idx, const double *a, int spp)
+static void store_pixel(render_result *out, int layer, int idx, const double *a, int spp)
 {
-    float *m = out->mean[k].px + 3 * idx, *v = out->var[k].px + 3 * idx;
+    float *m, *v;
     int ch;
+    assert(0 <= layer && layer < out->nlayers);
+    m = out->mean[layer].px + 3 * idx;
+    v = out->var[layer].px + 3 * idx;
     for (ch = 0; ch < 3; ch++) {
         double mean = a[ch] / spp;
         double s2 = spp > 1 ? (a[3 + ch] - spp * mean * mean) / (spp - 1) : 0.0;   /* sample variance */
@@ -41,23 +54,35 @@ static void store_pixel(render_result *out, int k, int idx, const double *a, int
     }
 }
 
-static void render_pixel(job *j, int px, int py, vec3 *L, double *acc, trace_stats *st)
+/* One sample into the pixel's sums: layer 0 is the total; with --split, layer 1 + k - bmin is L_k. */
+static void add_sample(const job *j, thread_state *t, vec3 L)
+{
+    const integrator_opts *io = &j->o->io;
+    int k;
+    accumulate(t->sums, L);
+    for (k = io->bmin; t->Lk && k <= io->bmax; k++) {
+        int layer = 1 + k - io->bmin;
+        assert(layer < j->out->nlayers);
+        accumulate(t->sums + 6 * layer, t->Lk[k]);
+    }
+}
+
+static void render_pixel(const job *j, thread_state *t, int px, int py)
 {
     const render_opts *o = j->o;
-    int n = j->out->nlayers, i, k, idx = py * j->c->width + px;
+    int i, layer, idx = py * j->cam->width + px;
     pcg32 rng;
     pcg32_init(&rng, splitmix64_mix(o->seed ^ splitmix64_mix((uint64_t)idx)), (uint64_t)idx);   /* (seed, pixel) -> stream */
-    memset(acc, 0, sizeof(double) * 6 * (size_t)n);   /* sum, sum of squares per layer */
+    memset(t->sums, 0, sizeof(double) * 6 * (size_t)j->out->nlayers);
     for (i = 0; i < o->spp; i++) {
         float jx = o->pixel_center ? 0.5f : pcg32_float(&rng);
         float jy = o->pixel_center ? 0.5f : pcg32_float(&rng);
-        ray r = camera_ray(j->c, (float)px + jx, (float)py + jy);
-        memset(L, 0, sizeof(vec3) * (size_t)n);
-        integrate(j->s, &o->io, &r, &rng, L, st);
-        if (!finite3(L[0])) { st->nonfinite++; continue; }   /* counted, reported, dropped */
-        for (k = 0; k < n; k++) accumulate(acc + 6 * k, L[k]);
+        ray r = camera_ray(j->cam, (float)px + jx, (float)py + jy);
+        vec3 L = integrate(j->sc, &o->io, &r, &rng, t->Lk, &t->st);
+        if (finite3(L)) add_sample(j, t, L);
+        else t->st.nonfinite++;   /* counted, reported, dropped */
     }
-    for (k = 0; k < n; k++) store_pixel(j->out, k, idx, acc + 6 * k, o->spp);
+    for (layer = 0; layer < j->out->nlayers; layer++) store_pixel(j->out, layer, idx, t->sums + 6 * layer, o->spp);
 }
 
 static void draw_progress(job *j)
@@ -72,37 +97,56 @@ static void draw_progress(job *j)
     fflush(stderr);
 }
 
-static void *worker(void *arg)
+/* The parallel_for body: tiles [begin, end) on thread `thread`. */
+static void render_tiles(void *ctx, int thread, int begin, int end)
 {
-    job *j = arg;
-    trace_stats st = {0, 0, 0, 0};
-    int n = j->out->nlayers;
-    vec3 *L = malloc(sizeof(vec3) * (size_t)n);
-    double *acc = malloc(sizeof(double) * 6 * (size_t)n);
-    for (;;) {
-        int t, x0, y0, x, y;
-        pthread_mutex_lock(&j->lock);
-        t = j->next_tile++;
-        pthread_mutex_unlock(&j->lock);
-        if (t >= j->ntiles || !L || !acc) break;
-        x0 = (t % j->tiles_x) * TILE;
-        y0 = (t / j->tiles_x) * TILE;
-        for (y = y0; y < y0 + TILE && y < j->c->height; y++)
-            for (x = x0; x < x0 + TILE && x < j->c->width; x++) render_pixel(j, x, y, L, acc, &st);
+    job *j = ctx;
+    thread_state t = j->ts[thread];   /* copied to this thread's stack: its ray counters share no cache line */
+    int tile, x, y;
+    for (tile = begin; tile < end; tile++) {
+        int x0 = (tile % j->tiles_x) * TILE, y0 = (tile / j->tiles_x) * TILE;
+        for (y = y0; y < y0 + TILE && y < j->cam->height; y++)
+            for (x = x0; x < x0 + TILE && x < j->cam->width; x++) render_pixel(j, &t, x, y);
         pthread_mutex_lock(&j->lock);
         j->done_tiles++;
         if (j->progress) draw_progress(j);
         pthread_mutex_unlock(&j->lock);
     }
-    pthread_mutex_lock(&j->lock);
-    j->out->st.camera_rays += st.camera_rays;
-    j->out->st.continuation_rays += st.continuation_rays;
-    j->out->st.shadow_rays += st.shadow_rays;
-    j->out->st.nonfinite += st.nonfinite;
-    pthread_mutex_unlock(&j->lock);
-    free(L);
-    free(acc);
-    return NULL;
+    j->ts[thread].st = t.st;
+}
+
+static void free_thread_states(thread_state *ts, int nthreads)
+{
+    int t;
+    for (t = 0; ts && t < nthreads; t++) {
+        free(ts[t].Lk);
+        free(ts[t].sums);
+    }
+    free(ts);
+}
+
+/* nLk entries of L_k per thread (0: none); NULL if memory ran out. */
+static thread_state *alloc_thread_states(int nthreads, int nlayers, int nLk)
+{
+    thread_state *ts = calloc((size_t)nthreads, sizeof *ts);
+    int t;
+    for (t = 0; ts && t < nthreads; t++) {
+        ts[t].Lk = nLk > 0 ? malloc(sizeof(vec3) * (size_t)nLk) : NULL;
+        ts[t].sums = malloc(sizeof(double) * 6 * (size_t)nlayers);
+        if ((nLk > 0 && !ts[t].Lk) || !ts[t].sums) {
+            free_thread_states(ts, nthreads);
+            return NULL;
+        }
+    }
+    return ts;
+}
+
+static void add_stats(trace_stats *sum, const trace_stats *st)
+{
+    sum->camera_rays += st->camera_rays;
+    sum->continuation_rays += st->continuation_rays;
+    sum->shadow_rays += st->shadow_rays;
+    sum->nonfinite += st->nonfinite;
 }
 
 static int alloc_layers(render_result *out, int n, int w, int h)
@@ -117,32 +161,32 @@ static int alloc_layers(render_result *out, int n, int w, int h)
     return 0;
 }
 
-int render(const scene *s, const camera *c, const render_opts *o, render_result *out)
+int render(const scene *sc, const camera *cam, const render_opts *o, render_result *out)
 {
     job j;
-    pthread_t th[256];
-    int i, nthreads = o->threads < 1 ? 1 : o->threads > 256 ? 256 : o->threads;
+    int t, nthreads = o->threads < 1 ? 1 : o->threads > PARALLEL_MAX_THREADS ? PARALLEL_MAX_THREADS : o->threads;
     int nlayers = 1 + (o->io.split ? o->io.bmax - o->io.bmin + 1 : 0);
     memset(out, 0, sizeof *out);
-    if (alloc_layers(out, nlayers, c->width, c->height)) {
-        fprintf(stderr, "pathlab: out of memory for a %dx%d image\n", c->width, c->height);
+    memset(&j, 0, sizeof j);
+    j.ts = alloc_thread_states(nthreads, nlayers, o->io.split ? o->io.bmax + 1 : 0);
+    if (!j.ts || alloc_layers(out, nlayers, cam->width, cam->height)) {
+        fprintf(stderr, "pathlab: out of memory for a %dx%d image\n", cam->width, cam->height);
+        free_thread_states(j.ts, nthreads);
         render_result_free(out);
         return 1;
     }
-    memset(&j, 0, sizeof j);
-    j.s = s; j.c = c; j.o = o; j.out = out;
-    j.tiles_x = (c->width + TILE - 1) / TILE;
-    j.ntiles = j.tiles_x * ((c->height + TILE - 1) / TILE);
+    j.sc = sc; j.cam = cam; j.o = o; j.out = out;
+    j.tiles_x = (cam->width + TILE - 1) / TILE;
+    j.ntiles = j.tiles_x * ((cam->height + TILE - 1) / TILE);
     j.progress = !o->quiet && isatty(2);
     j.t0 = clock_seconds();
     pthread_mutex_init(&j.lock, NULL);
-    if (s->lights.n > 0)   /* without emitters every pixel is black: no work at all */
-        for (i = 0; i < nthreads; i++)
-            if (pthread_create(&th[i], NULL, worker, &j)) { nthreads = i; break; }
-    if (s->lights.n > 0 && nthreads == 0) worker(&j);
-    for (i = 0; i < nthreads && s->lights.n > 0; i++) pthread_join(th[i], NULL);
+    if (sc->lights.n > 0)   /* without emitters every pixel is black: no work at all */
+        parallel_for(j.ntiles, 1, nthreads, render_tiles, &j);
     pthread_mutex_destroy(&j.lock);
     out->seconds = clock_seconds() - j.t0;
+    for (t = 0; t < nthreads; t++) add_stats(&out->st, &j.ts[t].st);
+    free_thread_states(j.ts, nthreads);
     return 0;
 }
 

@@ -1,7 +1,7 @@
-/* render.h — the render loop: pixels in 16x16 tiles handed to threads as they come free, each
- * pixel with its own random stream (seed, pixel index), so the image is the same whatever the
- * number of threads. Each image layer (the total, or one per bounce with --split) gets its mean
- * and the variance of that mean per pixel. */
+/* render.h — the render loop: pixels in 16x16 tiles handed to threads as they come free
+ * (parallel_for), each pixel with its own random stream (seed, pixel index), so the image is the
+ * same whatever the number of threads. Each image layer (the total, and with --split one per
+ * bounce L_k) gets its mean and the variance of that mean per pixel. */
 #ifndef PATHLAB_RENDER_H
 #define PATHLAB_RENDER_H
 #include "scene/camera.h"
@@ -22,7 +22,7 @@ typedef struct {
 } render_result;
 
 /* Renders; 0 on success, nonzero (after printing why) if memory ran out. */
-int render(const scene *s, const camera *c, const render_opts *o, render_result *out);
+int render(const scene *sc, const camera *cam, const render_opts *o, render_result *out);
 void render_result_free(render_result *r);
 /* The one-line summary: time, samples/s, Mrays/s and the rays of each kind. */
 void render_print_stats(const render_result *r, int spp, int npixels);

@@ -15,39 +15,39 @@
 # Patterns use sed's basic regular expressions: * . [ ] / are escaped; in a replacement & is the
 # matched text (\& a literal &).
 
-# ---- direct light: the estimator Le f cos(theta_p) cos(theta_s) / d^2 / pdf_A ----
+# ---- direct light: the estimator Le f cos(theta_p) cos(theta_s) / d^2 / pdf1_area ----
 mutant no-cos-surface src/tracer/integrator.c \
-    's/cos_p \/ pdf_light \* w/1.0f \/ pdf_light * w/' \
+    's/cos_p \/ pdf1_sa \* w_mis/1.0f \/ pdf1_sa * w_mis/' \
     test_direct PATHLAB_FAST=1 'forgot cos(theta) of the light direction at the surface point'
 mutant no-cos-light src/tracer/light.h \
     's/pdf_area \* dist2 \/ cos_s : 0\.0f/pdf_area * dist2 : 0.0f/' \
     test_direct PATHLAB_FAST=1 'forgot cos(theta_s) at the light when turning the area pdf into solid angle'
 mutant area-pdf src/tracer/integrator.c \
-    's/pdf_light = pdf_area_to_solid_angle(ls\.pdf_area, dist2, cos_s);/pdf_light = ls.pdf_area;/' \
+    's/pdf1_sa = pdf_area_to_solid_angle(s\.pdf_area, dist2, cos_s);/pdf1_sa = s.pdf_area;/' \
     test_direct PATHLAB_FAST=1 'divided by the area pdf 1/A instead of the solid-angle pdf (no d^2/cos)'
 mutant light-choice src/tracer/light.c \
-    's/return light_choice_prob(ls, st, i) \/ e->area;/return 1.0f \/ e->area;/' \
+    's/return choice_prob(ls, st, i) \/ e->area;/return 1.0f \/ e->area;/' \
     test_direct PATHLAB_FAST=1 'picked a light triangle with probability P_i but never divided by P_i'
 # ---- emission and MIS ----
 mutant emission-twice src/tracer/integrator.c \
-    's/w = mis_weight(o->direct, pdf2, pdf_light);/w = 1.0f;/' \
+    's/w_mis = mis_weight(o->direct, pdf2_sa, pdf1_sa);/w_mis = 1.0f;/' \
     test_direct PATHLAB_FAST=1 'light found by light sampling AND by the BRDF ray, no MIS weight: counted twice'
 mutant le-every-vertex src/tracer/integrator.c \
-    's/if (!bvh_intersect(s->accel, &r, &h)) break;/&\n        add(L, o, k, v3_mul(beta, emitted(s, \&h, r.d)));/' \
+    's/if (!bvh_intersect(sc->accel, &ray_pq, &q)) break;/&\n        add_Lk(\&sum, k, v3_mul(beta, emitted(sc, \&q, ray_pq.d)));/' \
     test_direct PATHLAB_FAST=1 'added Le at every hit on top of next-event estimation'
 mutant mis-swapped src/tracer/integrator.c \
-    's/w = mis_weight(o->direct, pdf2, pdf_light);/w = mis_weight(o->direct, pdf_light, pdf2);/' \
+    's/w_mis = mis_weight(o->direct, pdf2_sa, pdf1_sa);/w_mis = mis_weight(o->direct, pdf1_sa, pdf2_sa);/' \
     test_direct PATHLAB_FAST=1 'MIS weights that do not sum to 1 (the pdfs swapped on the BRDF side)'
 mutant two-sided-emission src/tracer/integrator.c \
-    's/return v3_dot(s->Ng\[h->tri\], dir) < 0\.0f ? Ke : v3(0, 0, 0);/(void)dir; return Ke;/' \
+    's/return v3_dot(sc->Ng\[h->tri\], dir) < 0\.0f ? Ke : v3(0, 0, 0);/(void)dir; return Ke;/' \
     test_direct PATHLAB_FAST=1 'lights emit from their back face too'
 # ---- paths ----
 mutant no-cos-throughput src/tracer/integrator.c \
-    's/beta = v3_mul(beta, v3_scale(f, cos_p \/ pdf2));/beta = v3_mul(beta, v3_scale(f, 1.0f \/ pdf2));/' \
+    's/beta = v3_mul(beta, v3_scale(f, cos_p \/ pdf2_sa));/beta = v3_mul(beta, v3_scale(f, 1.0f \/ pdf2_sa));/' \
     test_direct PATHLAB_FAST=1 'forgot cos(theta) in the path throughput f cos / pdf'
 mutant rr-no-divide src/tracer/integrator.c \
-    's/beta = v3_scale(beta, 1\.0f \/ q);/(void)q;/' \
-    test_rr PATHLAB_FAST=1 'Russian roulette kills paths but survivors are not divided by q'
+    's/\*beta = v3_scale(before, 1\.0f \/ p_survive);/(void)p_survive;/' \
+    test_rr PATHLAB_FAST=1 'Russian roulette kills paths but survivors are not divided by p_survive'
 # ---- BRDF and warps ----
 mutant blinn-norm src/tracer/brdf.c \
     's/(m->Ns + 8\.0f) \/ (8\.0f \* PI_F)/(m->Ns + 2.0f) \/ (8.0f * PI_F)/' \

@@ -10,6 +10,7 @@
  *  5. offset_ray_origin: rays leaving points of triangles 1e5 from the origin never hit their own.
  * Sanitizer builds, and PATHLAB_TEST_QUICK=1, shrink the sizes. */
 #include "geometry/bvh.h"
+#include "geometry/ray.h"
 #include "check.h"
 #include <stdint.h>
 #include <stdlib.h>

@@ -11,8 +11,10 @@
  *  1. Every triangle gets a primref (its bounds and index). A binary tree is built top down: each
  *     node bins its triangles' centroids into BVH_BINS bins on each axis, picks the plane of least
  *     surface area heuristic (SAH) cost and partitions its primrefs in place; a node becomes a leaf
- *     when that is cheaper than splitting and it holds at most BVH_LEAF_MAX triangles. Big subtrees
- *     are built by another thread while one is idle. Nothing is sorted, nothing allocated per node.
+ *     when that is cheaper than splitting and it holds at most BVH_LEAF_MAX triangles. The two
+ *     subtrees of a big node are built by two threads (a parallel_for of 2 iterations) while the
+ *     build may start one more; the tree is the same for any number of threads. Nothing is sorted,
+ *     nothing allocated per node.
  *  2. The binary tree is collapsed into an 8-wide one (each node adopts grandchildren, largest area
  *     first, until it has 8 children), laid out depth first; leaves become blocks of 4 triangles.
  *     A node tests its 8 boxes with the few instructions of one loop the compiler vectorizes, and a
@@ -27,10 +29,11 @@
  * conservative (pbrt's 1 + 2 gamma(3) on exit distances), so no ray slips between two triangles
  * sharing an edge or a vertex, and a box never hides a triangle the triangle test would report. */
 #include "geometry/bvh.h"
+#include "sys/parallel.h"
+#include <assert.h>
 #include <float.h>
 #include <limits.h>
 #include <pthread.h>
-#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -48,8 +51,9 @@
 #define BVH_COST_NODE 1.0f     /* SAH cost of visiting a node ... */
 #define BVH_COST_BLOCK 1.0f    /* ... and of testing one block of 4 triangles (as measured: alike) */
 #define BVH_SAH_DEPTH 48       /* deeper than this, split in halves: bounds the depth for the stack */
-#define BVH_PARALLEL_MIN 4096  /* a subtree this big may go to another thread */
-#define BVH_STACK (BVH_WIDTH * 80) /* < W entries per level; the binary depth is <= 48 + 30 */
+#define BVH_PARALLEL_MIN 4096  /* a node this big may have its two subtrees built on two threads */
+#define BVH_MAX_DEPTH 80       /* binary depth <= 48 + 30 (indices < 2^30), wide depth no more */
+#define BVH_STACK (BVH_WIDTH * BVH_MAX_DEPTH) /* traversal stack: < W entries per level */
 
 /* gamma(3) = 3 eps / (1 - 3 eps) with eps = 2^-24: the relative error of (plane - o) * (1/d)
  * (pbrt 3rd ed. 3.9). Exit distances are widened by 1 + 2 gamma(3). */
@@ -93,7 +97,8 @@ typedef struct { int axis, bin, nbins, nleft; float cost; aabb left, right; } sp
 typedef struct {
     primref *refs;
     node2 *nodes;
-    int idle;          /* threads we may still start, under lock */
+    int nslots;        /* the length of nodes */
+    int idle;          /* threads the build may still start, under lock */
     pthread_mutex_t lock;
 } builder;
 
@@ -104,7 +109,8 @@ static aabb aabb_empty(void)
 }
 static inline void aabb_grow(aabb *restrict b, const aabb *restrict p)
 {
-    for (int i = 0; i < 4; i++) {
+    int i;
+    for (i = 0; i < 4; i++) {
         b->lo[i] = p->lo[i] < b->lo[i] ? p->lo[i] : b->lo[i];
         b->hi[i] = p->hi[i] > b->hi[i] ? p->hi[i] : b->hi[i];
     }
@@ -113,7 +119,8 @@ static inline void aabb_grow(aabb *restrict b, const aabb *restrict p)
 static inline void aabb_grow_centroid(aabb *restrict b, const primref *restrict p)
 {
     aabb c;
-    for (int i = 0; i < 4; i++) c.lo[i] = c.hi[i] = p->lo[i] + p->hi[i];
+    int i;
+    for (i = 0; i < 4; i++) c.lo[i] = c.hi[i] = p->lo[i] + p->hi[i];
     aabb_grow(b, &c);
 }
 /* Half the surface area; the SAH only compares ratios. */
@@ -139,11 +146,12 @@ typedef struct { aabb box[3][BVH_BINS]; int n[3][BVH_BINS]; } bins;
 
 static void bin_refs(const primref *r, int n, const aabb *cb, const float scale[3], int nbins, bins *B)
 {
-    for (int a = 0; a < 3; a++)
-        for (int k = 0; k < nbins; k++) { B->box[a][k] = aabb_empty(); B->n[a][k] = 0; }
-    for (int i = 0; i < n; i++)
-        for (int a = 0; a < 3; a++) {
-            int k = bin_of(&r[i], a, cb, scale[a], nbins);
+    int a, i, k;
+    for (a = 0; a < 3; a++)
+        for (k = 0; k < nbins; k++) { B->box[a][k] = aabb_empty(); B->n[a][k] = 0; }
+    for (i = 0; i < n; i++)
+        for (a = 0; a < 3; a++) {
+            k = bin_of(&r[i], a, cb, scale[a], nbins);
             aabb_grow(&B->box[a][k], &r[i]);
             B->n[a][k]++;
         }
@@ -152,21 +160,21 @@ static void bin_refs(const primref *r, int n, const aabb *cb, const float scale[
 /* Sweeps the bins of one axis from both ends and keeps the cheapest plane in *best. */
 static void sweep_axis(const aabb *box, const int *count, int nbins, int axis, split *best)
 {
-    float right_area[BVH_BINS];
+    float right_area[BVH_BINS], cost;
     int right_n[BVH_BINS];
     aabb right_box[BVH_BINS], acc = aabb_empty();
-    int n = 0;
-    for (int k = nbins - 1; k > 0; k--) {
+    int n = 0, k;
+    for (k = nbins - 1; k > 0; k--) {
         aabb_grow(&acc, &box[k]);
         n += count[k];
         right_box[k] = acc; right_n[k] = n; right_area[k] = aabb_area(&acc);
     }
     acc = aabb_empty(); n = 0;
-    for (int k = 1; k < nbins; k++) {    /* plane k: bins [0, k) go left */
+    for (k = 1; k < nbins; k++) {    /* plane k: bins [0, k) go left */
         aabb_grow(&acc, &box[k - 1]);
         n += count[k - 1];
         if (n == 0 || right_n[k] == 0) continue;
-        float cost = aabb_area(&acc) * blocks_of(n) + right_area[k] * blocks_of(right_n[k]);
+        cost = aabb_area(&acc) * blocks_of(n) + right_area[k] * blocks_of(right_n[k]);
         if (cost < best->cost) {
             best->axis = axis; best->bin = k; best->nleft = n; best->cost = cost;
             best->left = acc; best->right = right_box[k];
@@ -178,8 +186,8 @@ static void sweep_axis(const aabb *box, const int *count, int nbins, int axis, s
 static int find_split(const primref *r, int n, const aabb *cb, split *s, float scale[3])
 {
     bins B;
-    int nbins = bins_for(n);
-    for (int a = 0; a < 3; a++) {
+    int nbins = bins_for(n), a;
+    for (a = 0; a < 3; a++) {
         float extent = cb->hi[a] - cb->lo[a];
         scale[a] = extent > 0 ? (float)nbins / extent : 0.0f;
         if (!(scale[a] < FLT_MAX)) scale[a] = 0.0f;   /* a denormal extent: treat the axis as flat */
@@ -187,7 +195,7 @@ static int find_split(const primref *r, int n, const aabb *cb, split *s, float s
     bin_refs(r, n, cb, scale, nbins, &B);
     s->cost = INFINITY;
     s->nbins = nbins;
-    for (int a = 0; a < 3; a++)
+    for (a = 0; a < 3; a++)
         if (scale[a] > 0) sweep_axis(B.box[a], B.n[a], nbins, a, s);
     return s->cost < INFINITY;
 }
@@ -211,9 +219,10 @@ static int partition(primref *r, int n, const split *s, const aabb *cb, float sc
 /* Fallback split for identical centroids and for too deep trees: halves by position. */
 static void split_halves(const primref *r, int n, split *s, aabb *lcb, aabb *rcb)
 {
+    int i;
     s->nleft = n / 2;
     s->left = s->right = *lcb = *rcb = aabb_empty();
-    for (int i = 0; i < n; i++) {
+    for (i = 0; i < n; i++) {
         aabb_grow(i < s->nleft ? &s->left : &s->right, &r[i]);
         aabb_grow_centroid(i < s->nleft ? lcb : rcb, &r[i]);
     }
@@ -252,16 +261,6 @@ static int choose_split(builder *B, int ni, int first, int count, const aabb *cb
     return 1;
 }
 
-typedef struct { builder *B; int node, first, count, depth, next, leaves; aabb cb; } job;
-static int build_rec(builder *B, int ni, int first, int count, aabb cb, int depth, int *next);
-
-static void *job_main(void *arg)
-{
-    job *j = arg;
-    j->leaves = build_rec(j->B, j->node, j->first, j->count, j->cb, j->depth, &j->next);
-    return NULL;
-}
-
 /* Takes (delta -1) or returns (+1) one of the threads the build may start; 1 if it could. */
 static int claim_thread(builder *B, int delta)
 {
@@ -273,74 +272,74 @@ static int claim_thread(builder *B, int delta)
     return ok;
 }
 
-/* Builds the right child on a new thread while this one builds the left; returns the leaves of
- * both, or 0 if no thread was started. The right subtree owns the node slots from where a full
- * left subtree (2 nleft - 2 nodes) would end; the gap left between the two is never read. */
-static int build_pair_parallel(builder *B, int left, int first, const split *s, int count,
-                               aabb lcb, aabb rcb, int depth, int *next)
+/* The two children of a split node, [0] the left one and [1] the right one, for build_pair_body.
+ * next[i]: the first slot child i's descendants may take; on return, the slot after the last. */
+typedef struct {
+    builder *B;
+    int node[2], first[2], count[2], next[2], leaves[2], depth;
+    aabb cb[2];
+} child_pair;
+
+static int build_rec(builder *B, int ni, int first, int count, aabb cb, int depth, int *next);
+
+/* parallel_body: builds the subtrees of children [begin, end) of the pair. */
+static void build_pair_body(void *ctx, int thread, int begin, int end)
 {
-    job jr = {B, left + 1, first + s->nleft, count - s->nleft, depth + 1, left + 2 * s->nleft, 0, rcb};
-    pthread_t th;
-    int leaves;
-    if (count < BVH_PARALLEL_MIN || !claim_thread(B, -1)) return 0;
-    if (pthread_create(&th, NULL, job_main, &jr) != 0) { claim_thread(B, +1); return 0; }
-    leaves = build_rec(B, left, first, s->nleft, lcb, depth + 1, next);
-    pthread_join(th, NULL);
-    claim_thread(B, +1);
-    *next = jr.next;
-    return leaves + jr.leaves;
+    child_pair *c = ctx;
+    int i;
+    (void)thread;
+    for (i = begin; i < end; i++)
+        c->leaves[i] = build_rec(c->B, c->node[i], c->first[i], c->count[i], c->cb[i], c->depth, &c->next[i]);
+}
+
+/* Builds the subtrees of the children of a split node, at slots `left` and left + 1; returns their
+ * leaves. Their descendants take the slots from *next = left + 2 on, and *next ends after the last.
+ * On one thread the right child's descendants follow the left's: the nodes stay close in memory. A
+ * big node's children are built on two threads if the build may start one more; the right child's
+ * descendants then start where a full left subtree (2 nleft - 2 nodes) would end, and the gap is
+ * never read. The slots differ, the tree does not: collapse follows the links, depth first. */
+static int build_pair(builder *B, int left, int first, int count, const split *s, aabb lcb, aabb rcb,
+                      int depth, int *next)
+{
+    child_pair c;
+    c.B = B; c.depth = depth;
+    c.node[0] = left; c.first[0] = first; c.count[0] = s->nleft; c.cb[0] = lcb; c.next[0] = *next;
+    c.node[1] = left + 1; c.first[1] = first + s->nleft; c.count[1] = count - s->nleft; c.cb[1] = rcb;
+    if (count >= BVH_PARALLEL_MIN && claim_thread(B, -1)) {
+        c.next[1] = left + 2 * s->nleft;
+        parallel_for(2, 1, 2, build_pair_body, &c);
+        claim_thread(B, +1);
+    } else {
+        build_pair_body(&c, 0, 0, 1);
+        c.next[1] = c.next[0];
+        build_pair_body(&c, 0, 1, 2);
+    }
+    *next = c.next[1];
+    return c.leaves[0] + c.leaves[1];
 }
 
 /* Builds the subtree of node ni, whose bounds are set, and returns its number of leaves. Its
- * descendants take the slots from *next on, at most 2 count - 2 of them (count leaves at most). */
+ * descendants take the slots from *next on, at most 2 count - 2 of them (count leaves at most), and
+ * *next ends after the last. */
 static int build_rec(builder *B, int ni, int first, int count, aabb cb, int depth, int *next)
 {
     split s;
     aabb lcb, rcb;
     node2 *nd = &B->nodes[ni];
     int left = *next, leaves;
+    assert(ni >= 0 && ni < B->nslots && count > 0);
     if (!choose_split(B, ni, first, count, &cb, depth, &s, &lcb, &rcb)) {
         nd->first = first; nd->count = count;
         return 1;
     }
+    assert(s.nleft > 0 && s.nleft < count && left + 2 * count - 2 <= B->nslots);
     *next += 2;
     set_node(&B->nodes[left], &s.left);
     set_node(&B->nodes[left + 1], &s.right);
     nd->first = left; nd->count = 0;
-    leaves = build_pair_parallel(B, left, first, &s, count, lcb, rcb, depth, next);
-    if (leaves) return leaves;
-    leaves = build_rec(B, left, first, s.nleft, lcb, depth + 1, next);
-    return leaves + build_rec(B, left + 1, first + s.nleft, count - s.nleft, rcb, depth + 1, next);
-}
-
-/* ---- Parallel loops ------------------------------------------------------------------------------
- * The two linear passes (primrefs from triangles, blocks from leaves) split their range in equal
- * chunks, one per thread; each chunk keeps its own bounds, merged afterwards. */
-#define BVH_MAX_THREADS 64
-typedef struct chunk chunk;
-struct chunk {
-    void (*fn)(chunk *c);
-    const void *ctx;
-    int begin, end;
-    aabb box, cb;      /* make_refs: the bounds of the chunk's triangles and of their centroids */
-};
-
-static void *chunk_main(void *arg) { chunk *c = arg; c->fn(c); return NULL; }
-
-static void parallel_for(int n, int threads, void (*fn)(chunk *), const void *ctx, chunk *c)
-{
-    pthread_t th[BVH_MAX_THREADS];
-    int started[BVH_MAX_THREADS] = {0};
-    for (int k = 0; k < threads; k++) {
-        c[k].fn = fn; c[k].ctx = ctx;
-        c[k].begin = (int)((long long)n * k / threads); c[k].end = (int)((long long)n * (k + 1) / threads);
-    }
-    for (int k = 1; k < threads; k++) started[k] = pthread_create(&th[k], NULL, chunk_main, &c[k]) == 0;
-    fn(&c[0]);
-    for (int k = 1; k < threads; k++) {
-        if (started[k]) pthread_join(th[k], NULL);
-        else fn(&c[k]);     /* could not start a thread: do its share here */
-    }
+    leaves = build_pair(B, left, first, count, &s, lcb, rcb, depth + 1, next);
+    assert(*next <= left + 2 * count - 2);   /* within the range the caller set aside */
+    return leaves;
 }
 
 /* ---- Build, step 2: the wide tree ------------------------------------------------------------- */
@@ -350,6 +349,7 @@ typedef struct {
     const vec3 *P;
     const int *tri;
     bvh *b;
+    int max_nodes, max_blocks;   /* the lengths of b->nodes and b->blocks */
 } collapser;
 
 static float node_area(const node2 *nd)
@@ -362,14 +362,15 @@ static float node_area(const node2 *nd)
 static int gather_children(const node2 *nodes, const node2 *n, const node2 *out[BVH_WIDTH])
 {
     float area[BVH_WIDTH];
-    int k = 2;
+    int k = 2, i;
     out[0] = &nodes[n->first]; out[1] = &nodes[n->first + 1];
     area[0] = node_area(out[0]); area[1] = node_area(out[1]);
     while (k < BVH_WIDTH) {
+        const node2 *open;
         int best = 0;
-        for (int i = 1; i < k; i++) best = area[i] > area[best] ? i : best;
+        for (i = 1; i < k; i++) best = area[i] > area[best] ? i : best;
         if (area[best] < 0) break;
-        const node2 *open = out[best];
+        open = out[best];
         out[best] = &nodes[open->first]; area[best] = node_area(out[best]);
         out[k] = &nodes[open->first + 1]; area[k] = node_area(out[k]);
         k++;
@@ -377,44 +378,54 @@ static int gather_children(const node2 *nodes, const node2 *n, const node2 *out[
     return k;
 }
 
-/* Emits binary node n (inner or leaf) and its subtree; returns its child reference. A leaf's block
- * gets the primref index of each lane in id[]; fill_blocks turns them into triangles later. */
+/* A leaf's block: the primref index of each lane in id[] (fill_blocks turns them into triangles). */
+static int collapse_leaf(collapser *C, const node2 *n)
+{
+    bvh *b = C->b;
+    tri4 *blk = &b->blocks[b->nblocks];
+    int lane;
+    assert(b->nblocks < C->max_blocks && n->count <= 4);
+    for (lane = 0; lane < 4; lane++) blk->id[lane] = n->first + (lane < n->count ? lane : n->count - 1);
+    return ~b->nblocks++;
+}
+
+/* Emits binary node n (inner or leaf) and its subtree, depth first; returns its child reference. */
 static int collapse(collapser *C, const node2 *n, int depth)
 {
     bvh *b = C->b;
-    if (depth > b->depth) b->depth = depth;
-    if (n->count) {
-        tri4 *blk = &b->blocks[b->nblocks];
-        for (int lane = 0; lane < 4; lane++) blk->id[lane] = n->first + (lane < n->count ? lane : n->count - 1);
-        return ~b->nblocks++;
-    }
     const node2 *kids[BVH_WIDTH];
-    int k = gather_children(C->bin, n, kids), wi = b->nnodes++;
-    wnode *w = &b->nodes[wi];
-    for (int i = 0; i < BVH_WIDTH; i++) {
-        for (int a = 0; a < 3; a++) {
+    int k, wi, i, a;
+    wnode *w;
+    if (depth > b->depth) b->depth = depth;
+    if (n->count) return collapse_leaf(C, n);
+    k = gather_children(C->bin, n, kids);
+    assert(b->nnodes < C->max_nodes);
+    wi = b->nnodes++;
+    w = &b->nodes[wi];
+    for (i = 0; i < BVH_WIDTH; i++) {
+        for (a = 0; a < 3; a++) {
             w->box[a][i] = i < k ? kids[i]->lo[a] : INFINITY;
             w->box[3 + a][i] = i < k ? kids[i]->hi[a] : -INFINITY;
         }
         w->child[i] = ~0;
     }
     memset(w->pad, 0, sizeof w->pad);
-    for (int i = 0; i < k; i++) {
-        int ref = collapse(C, kids[i], depth + 1);
-        b->nodes[wi].child[i] = ref;
-    }
+    for (i = 0; i < k; i++) w->child[i] = collapse(C, kids[i], depth + 1);
     return wi;
 }
 
-static void fill_blocks(chunk *c)
+/* parallel_body: the triangles of blocks [begin, end), from the primref indices collapse left. */
+static void fill_blocks(void *ctx, int thread, int begin, int end)
 {
-    const collapser *C = c->ctx;
-    for (int i = c->begin; i < c->end; i++) {
+    const collapser *C = ctx;
+    int i, lane, k, id;
+    (void)thread;
+    for (i = begin; i < end; i++) {
         tri4 *blk = &C->b->blocks[i];
-        for (int lane = 0; lane < 4; lane++) {
-            int id = ref_id(&C->refs[blk->id[lane]]);
+        for (lane = 0; lane < 4; lane++) {
+            id = ref_id(&C->refs[blk->id[lane]]);
             blk->id[lane] = id;
-            for (int k = 0; k < 3; k++) {
+            for (k = 0; k < 3; k++) {
                 vec3 p = C->P[C->tri[3 * id + k]];
                 blk->v[k][0][lane] = p.x; blk->v[k][1][lane] = p.y; blk->v[k][2][lane] = p.z;
             }
@@ -422,16 +433,38 @@ static void fill_blocks(chunk *c)
     }
 }
 
-/* ---- Build: driver ------------------------------------------------------------------------------ */
-typedef struct { const vec3 *P; const int *tri; primref *refs; } ref_maker;
-
-static void make_refs(chunk *c)
+/* Every child reference in range: a node after its parent (depth first), a block, or an empty slot. */
+static int wide_tree_valid(const bvh *b)
 {
-    const ref_maker *M = c->ctx;
-    c->box = aabb_empty(); c->cb = aabb_empty();
-    for (int i = c->begin; i < c->end; i++) {
+    int n, i, ref;
+    for (n = 0; n < b->nnodes; n++)
+        for (i = 0; i < BVH_WIDTH; i++) {
+            ref = b->nodes[n].child[i];
+            if (ref >= 0 ? (ref <= n || ref >= b->nnodes) : (~ref >= b->nblocks && ref != ~0)) return 0;
+        }
+    return b->depth <= BVH_MAX_DEPTH && (b->root == 0 ? b->nnodes > 0 : b->root == ~0);
+}
+
+/* ---- Build: driver ------------------------------------------------------------------------------
+ * The two linear passes (primrefs from triangles, blocks from leaves) give each thread one equal
+ * share; make_refs keeps the bounds each thread saw, merged afterwards (min and max: exact in any
+ * order). */
+typedef struct {
+    const vec3 *P;
+    const int *tri;
+    primref *refs;
+    aabb box[PARALLEL_MAX_THREADS], cb[PARALLEL_MAX_THREADS];   /* per thread: triangles, centroids */
+} ref_maker;
+
+/* parallel_body: the primrefs of triangles [begin, end). */
+static void make_refs(void *ctx, int thread, int begin, int end)
+{
+    ref_maker *M = ctx;
+    aabb box = aabb_empty(), cb = aabb_empty();
+    int i, k;
+    for (i = begin; i < end; i++) {
         aabb t = aabb_empty();
-        for (int k = 0; k < 3; k++) {
+        for (k = 0; k < 3; k++) {
             vec3 p = M->P[M->tri[3 * i + k]];
             aabb q = {{p.x, p.y, p.z, 0}, {p.x, p.y, p.z, 0}};
             aabb_grow(&t, &q);
@@ -439,9 +472,11 @@ static void make_refs(chunk *c)
         memcpy(&t.lo[3], &i, sizeof i);
         t.hi[3] = 0;
         M->refs[i] = t;
-        aabb_grow(&c->box, &t);
-        aabb_grow_centroid(&c->cb, &t);
+        aabb_grow(&box, &t);
+        aabb_grow_centroid(&cb, &t);
     }
+    aabb_grow(&M->box[thread], &box);
+    aabb_grow(&M->cb[thread], &cb);
 }
 
 static void *aligned_array(size_t n, size_t size, size_t align)
@@ -454,18 +489,20 @@ static void *aligned_array(size_t n, size_t size, size_t align)
 /* Step 1; returns the number of leaves, 0 when out of memory. */
 static int build_binary(builder *B, const vec3 *P, const int *tri, int ntris, int threads)
 {
-    chunk c[BVH_MAX_THREADS];
-    ref_maker M = {P, tri, NULL};
-    int next = 1, leaves;
-    B->refs = M.refs = aligned_array((size_t)ntris, sizeof(primref), 64);
-    B->nodes = aligned_array(2 * (size_t)ntris, sizeof(node2), 64);
+    ref_maker M;
+    int t, leaves, next = 1;
+    B->nslots = 2 * ntris;
+    B->refs = aligned_array((size_t)ntris, sizeof(primref), 64);
+    B->nodes = aligned_array((size_t)B->nslots, sizeof(node2), 64);
     if (!B->refs || !B->nodes) return 0;
-    parallel_for(ntris, threads, make_refs, &M, c);
-    for (int k = 1; k < threads; k++) { aabb_grow(&c[0].box, &c[k].box); aabb_grow(&c[0].cb, &c[k].cb); }
-    set_node(&B->nodes[0], &c[0].box);
+    M.P = P; M.tri = tri; M.refs = B->refs;
+    for (t = 0; t < threads; t++) M.box[t] = M.cb[t] = aabb_empty();
+    parallel_for(ntris, parallel_even_grain(ntris, threads), threads, make_refs, &M);
+    for (t = 1; t < threads; t++) { aabb_grow(&M.box[0], &M.box[t]); aabb_grow(&M.cb[0], &M.cb[t]); }
+    set_node(&B->nodes[0], &M.box[0]);
     B->idle = threads - 1;
     pthread_mutex_init(&B->lock, NULL);
-    leaves = build_rec(B, 0, 0, ntris, c[0].cb, 0, &next);
+    leaves = build_rec(B, 0, 0, ntris, M.cb[0], 0, &next);
     pthread_mutex_destroy(&B->lock);
     return leaves;
 }
@@ -473,13 +510,16 @@ static int build_binary(builder *B, const vec3 *P, const int *tri, int ntris, in
 /* Step 2: a wide tree with at most leaves - 1 nodes (each has 2 children at least). */
 static int build_wide(bvh *b, const builder *B, const vec3 *P, const int *tri, int leaves, int threads)
 {
-    chunk c[BVH_MAX_THREADS];
-    collapser C = {B->nodes, B->refs, P, tri, b};
-    b->nodes = aligned_array((size_t)(leaves > 1 ? leaves - 1 : 1), sizeof(wnode), 64);
-    b->blocks = aligned_array((size_t)leaves, sizeof(tri4), 64);
+    collapser C;
+    C.bin = B->nodes; C.refs = B->refs; C.P = P; C.tri = tri; C.b = b;
+    C.max_nodes = leaves > 1 ? leaves - 1 : 1;
+    C.max_blocks = leaves;
+    b->nodes = aligned_array((size_t)C.max_nodes, sizeof(wnode), 64);
+    b->blocks = aligned_array((size_t)C.max_blocks, sizeof(tri4), 64);
     if (!b->nodes || !b->blocks) return 0;
     b->root = collapse(&C, &B->nodes[0], 1);
-    parallel_for(b->nblocks, threads, fill_blocks, &C, c);
+    assert(b->nblocks == leaves && wide_tree_valid(b));
+    parallel_for(b->nblocks, parallel_even_grain(b->nblocks, threads), threads, fill_blocks, &C);
     return 1;
 }
 
@@ -491,7 +531,7 @@ bvh *bvh_build(const vec3 *P, const int *tri, int ntris, int threads)
     B.refs = NULL; B.nodes = NULL;   /* build_binary sets up the rest */
     if (!b || ntris == 0) return b;             /* an empty bvh: every ray misses */
     if (ntris < 0 || ntris > INT_MAX / 2) { free(b); return NULL; }
-    threads = threads < 1 ? 1 : threads > BVH_MAX_THREADS ? BVH_MAX_THREADS : threads;
+    threads = threads < 1 ? 1 : threads > PARALLEL_MAX_THREADS ? PARALLEL_MAX_THREADS : threads;
     leaves = build_binary(&B, P, tri, ntris, threads);
     ok = leaves > 0 && build_wide(b, &B, P, tri, leaves, threads);
     free(B.refs);
@@ -538,14 +578,16 @@ static inline ray_pre ray_prepare(const ray *r)
 {
     ray_pre p;
     float o[3] = {r->o.x, r->o.y, r->o.z}, d[3] = {r->d.x, r->d.y, r->d.z};
-    for (int a = 0; a < 3; a++) {
+    float ax, ay, az;
+    int a;
+    for (a = 0; a < 3; a++) {
         int lo_row = a, hi_row = 3 + a;
         p.o[a] = o[a];
         p.inv[a] = 1.0f / d[a];                /* +-inf for a zero component: the slab is NaN-safe */
         p.near[a] = (int)sizeof(float) * BVH_WIDTH * (signbit(d[a]) ? hi_row : lo_row);
         p.far[a] = (int)sizeof(float) * BVH_WIDTH * (signbit(d[a]) ? lo_row : hi_row);
     }
-    float ax = fabsf(d[0]), ay = fabsf(d[1]), az = fabsf(d[2]);
+    ax = fabsf(d[0]); ay = fabsf(d[1]); az = fabsf(d[2]);
     p.kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
     p.kx = p.kz == 2 ? 0 : p.kz + 1;
     p.ky = p.kx == 2 ? 0 : p.kx + 1;
@@ -567,8 +609,9 @@ static inline unsigned node_hits(const wnode *restrict n, const ray_pre *restric
     const float *fx = row(n, p->far[0]), *fy = row(n, p->far[1]), *fz = row(n, p->far[2]);
     const float ox = p->o[0], oy = p->o[1], oz = p->o[2], ix = p->inv[0], iy = p->inv[1], iz = p->inv[2];
     unsigned mask = 0;
+    int i;
     LANE_LOOP
-    for (int i = 0; i < BVH_WIDTH; i++) {
+    for (i = 0; i < BVH_WIDTH; i++) {
         float tnx = (nx[i] - ox) * ix, tny = (ny[i] - oy) * iy, tnz = (nz[i] - oz) * iz;
         float tfx = (fx[i] - ox) * ix, tfy = (fy[i] - oy) * iy, tfz = (fz[i] - oz) * iz;
         float t0 = 0.0f, t1 = INFINITY;
@@ -602,22 +645,25 @@ static inline unsigned block_hits_float(const tri4 *restrict blk, const ray_pre 
     const float ox = p->o[p->kx], oy = p->o[p->ky], oz = p->o[p->kz], Sx = p->Sx, Sy = p->Sy, Sz = p->Sz;
     float U[4], V[4], W[4], az[4], bz[4], cz[4];
     unsigned inside = 0, mask = 0, zero = 0;
+    int i;
     LANE_LOOP
-    for (int i = 0; i < 4; i++) {     /* steps 1 and 3: which lanes the ray passes inside */
+    for (i = 0; i < 4; i++) {         /* steps 1 and 3: which lanes the ray passes inside */
+        float ax, ay, bx, by, cx, cy;
+        int neg, pos, in;
         az[i] = a_z[i] - oz; bz[i] = b_z[i] - oz; cz[i] = c_z[i] - oz;
-        float ax = (a_x[i] - ox) - Sx * az[i], ay = (a_y[i] - oy) - Sy * az[i];
-        float bx = (b_x[i] - ox) - Sx * bz[i], by = (b_y[i] - oy) - Sy * bz[i];
-        float cx = (c_x[i] - ox) - Sx * cz[i], cy = (c_y[i] - oy) - Sy * cz[i];
+        ax = (a_x[i] - ox) - Sx * az[i]; ay = (a_y[i] - oy) - Sy * az[i];
+        bx = (b_x[i] - ox) - Sx * bz[i]; by = (b_y[i] - oy) - Sy * bz[i];
+        cx = (c_x[i] - ox) - Sx * cz[i]; cy = (c_y[i] - oy) - Sy * cz[i];
         U[i] = cx * by - cy * bx; V[i] = ax * cy - ay * cx; W[i] = bx * ay - by * ax;
-        int neg = (U[i] < 0.0f) | (V[i] < 0.0f) | (W[i] < 0.0f), pos = (U[i] > 0.0f) | (V[i] > 0.0f) | (W[i] > 0.0f);
-        int in = !(neg & pos);
+        neg = (U[i] < 0.0f) | (V[i] < 0.0f) | (W[i] < 0.0f); pos = (U[i] > 0.0f) | (V[i] > 0.0f) | (W[i] > 0.0f);
+        in = !(neg & pos);
         inside |= (unsigned)in << i;
         zero |= (unsigned)(in & ((U[i] == 0.0f) | (V[i] == 0.0f) | (W[i] == 0.0f))) << i;
     }
     *edge = zero;
     if (!inside) return 0;            /* the usual case: no division */
     LANE_LOOP
-    for (int i = 0; i < 4; i++) {     /* step 2 */
+    for (i = 0; i < 4; i++) {         /* step 2 */
         float det = U[i] + V[i] + W[i], T = U[i] * (Sz * az[i]) + V[i] * (Sz * bz[i]) + W[i] * (Sz * cz[i]);
         float rcp = 1.0f / det;       /* det == 0 gives inf or NaN: t fails the tests below */
         h->t[i] = T * rcp; h->u[i] = V[i] * rcp; h->v[i] = W[i] * rcp;
@@ -634,17 +680,19 @@ static int lane_hit_exact(const tri4 *blk, ray_pre p, int i, float tmax, float *
     double bx = (blk->v[1][p.kx][i] - p.o[p.kx]) - p.Sx * bz, by = (blk->v[1][p.ky][i] - p.o[p.ky]) - p.Sy * bz;
     double cx = (blk->v[2][p.kx][i] - p.o[p.kx]) - p.Sx * cz, cy = (blk->v[2][p.ky][i] - p.o[p.ky]) - p.Sy * cz;
     float U = (float)(cx * by - cy * bx), V = (float)(ax * cy - ay * cx), W = (float)(bx * ay - by * ax);
+    float det, T, rcp;
     if ((U < 0.0f || V < 0.0f || W < 0.0f) && (U > 0.0f || V > 0.0f || W > 0.0f)) return 0;
-    float det = U + V + W, T = U * (p.Sz * az) + V * (p.Sz * bz) + W * (p.Sz * cz);
+    det = U + V + W; T = U * (p.Sz * az) + V * (p.Sz * bz) + W * (p.Sz * cz);
     if (det == 0.0f) return 0;
-    float rcp = 1.0f / det;
+    rcp = 1.0f / det;
     *t = T * rcp; *u = V * rcp; *v = W * rcp;
     return *t > 0.0f && *t < tmax;
 }
 
 static unsigned redo_edge_lanes(const tri4 *blk, ray_pre p, float tmax, unsigned mask, unsigned edge, lane_hits *h)
 {
-    for (int i = 0; i < 4; i++)
+    int i;
+    for (i = 0; i < 4; i++)
         if (edge >> i & 1) {
             mask &= ~(1u << i);
             mask |= (unsigned)lane_hit_exact(blk, p, i, tmax, &h->t[i], &h->u[i], &h->v[i]) << i;
@@ -675,23 +723,23 @@ typedef struct { int ref; float t; } entry;
 
 static inline int push_near_first(const wnode *n, unsigned mask, const float dist[BVH_WIDTH], entry *stack, int *sp)
 {
-    entry e[BVH_WIDTH];
-    int k = 0;
-    for (int i = 0; i < BVH_WIDTH; i++)
+    entry e[BVH_WIDTH], x;
+    int k = 0, i, j;
+    for (i = 0; i < BVH_WIDTH; i++)
         if (mask >> i & 1) { e[k].ref = n->child[i]; e[k].t = dist[i]; k++; }
     if (k == 1) return e[0].ref;
+    assert(*sp + k - 1 <= BVH_STACK);   /* the tree's depth bounds it (wide_tree_valid) */
     if (k == 2) {
         int near = e[1].t < e[0].t;
         stack[(*sp)++] = e[1 - near];
         return e[near].ref;
     }
-    for (int i = 1; i < k; i++) {     /* insertion sort, farthest first */
-        entry x = e[i];
-        int j = i;
-        for (; j > 0 && e[j - 1].t < x.t; j--) e[j] = e[j - 1];
+    for (i = 1; i < k; i++) {         /* insertion sort, farthest first */
+        x = e[i];
+        for (j = i; j > 0 && e[j - 1].t < x.t; j--) e[j] = e[j - 1];
         e[j] = x;
     }
-    for (int j = 0; j < k - 1; j++) stack[(*sp)++] = e[j];
+    for (j = 0; j < k - 1; j++) stack[(*sp)++] = e[j];
     return e[k - 1].ref;
 }
 
@@ -707,9 +755,10 @@ int bvh_intersect(const bvh *b, const ray *r, hit *h)
     int sp = 0, ref = b->root, best_lane = -1;
     float tmax = r->tmax, tcull = tmax * BVH_T_WIDEN, bu = 0, bv = 0;
     const tri4 *best = NULL;
+    ray_pre p;
     h->tri = -1;
     if (!b->nblocks || !ray_is_valid(r)) return 0;
-    const ray_pre p = ray_prepare(r);
+    p = ray_prepare(r);
     for (;;) {
         if (ref >= 0) {            /* node: go on with the nearest child entered, stack the others */
             float dist[BVH_WIDTH];
@@ -739,17 +788,19 @@ done:
 
 int bvh_occluded(const bvh *b, const ray *r)
 {
-    int stack[BVH_STACK], sp = 0, ref = b->root;
+    int stack[BVH_STACK], sp = 0, ref = b->root, i;
     float tmax = r->tmax, tcull = tmax * BVH_T_WIDEN;
+    ray_pre p;
     if (!b->nblocks || !ray_is_valid(r)) return 0;
-    const ray_pre p = ray_prepare(r);
+    p = ray_prepare(r);
     for (;;) {
         if (ref >= 0) {            /* node: any order will do, the first hit ends the search; the
                                       last child pushed is popped at once, from a register */
             float dist[BVH_WIDTH];
             const wnode *n = &b->nodes[ref];
             unsigned mask = node_hits(n, &p, tcull, dist);
-            for (int i = 0; i < BVH_WIDTH; i++)
+            assert(sp + BVH_WIDTH <= BVH_STACK);
+            for (i = 0; i < BVH_WIDTH; i++)
                 if (mask >> i & 1) stack[sp++] = n->child[i];
         } else {
             lane_hits lh;
@@ -765,40 +816,15 @@ int bvh_triangle_hit(vec3 a, vec3 b, vec3 c, const ray *r, hit *h)
     tri4 blk;
     lane_hits lh;
     vec3 corners[3] = {a, b, c};
+    ray_pre p;
+    int k, lane;
     if (!ray_is_valid(r)) return 0;
-    for (int k = 0; k < 3; k++)
-        for (int lane = 0; lane < 4; lane++) {
+    for (k = 0; k < 3; k++)
+        for (lane = 0; lane < 4; lane++) {
             blk.v[k][0][lane] = corners[k].x; blk.v[k][1][lane] = corners[k].y; blk.v[k][2][lane] = corners[k].z;
         }
-    const ray_pre p = ray_prepare(r);
+    p = ray_prepare(r);
     if (!(block_hits(&blk, &p, r->tmax, &lh) & 1)) return 0;
     h->t = lh.t[0]; h->u = lh.u[0]; h->v = lh.v[0];
     return 1;
-}
-
-/* ---- Ray origins --------------------------------------------------------------------------------
- * The hit point p = a + u (b - a) + v (c - a) is off the triangle's plane by a few ulps of the
- * triangle's coordinates, and the next ray-triangle test decides on which side of that plane the
- * origin is with an error of a few ulps of them too (its products mix every coordinate): so p moves
- * along n by OFFSET_ULPS ulps of the triangle's largest |coordinate|, `scale`. Not by ulps of each
- * coordinate of p (Waechter and Binder, Ray Tracing Gems ch. 6): on the wall x = 0 of a box 1e3
- * wide that gives p.x + 1.5e-5 where the test errs by ulps of 1e3 (make stress: -5.6% of the
- * furnace's light); nor by ulps of |p|: a point near the origin on a plane 20 wide would get less
- * than the plane's own rounding. 16 ulps (make stress): 1 and 4 still lose light (sliver wall,
- * grazing light), 64 and 256 (Waechter and Binder's) move contact shadows 1e6 from the origin,
- * where one ulp is 1/16. */
-#define OFFSET_ULPS 16.0f
-
-vec3 offset_ray_origin(vec3 p, vec3 n, float scale)
-{
-    /* >= 16/sqrt(3) ulps of the coordinate along n's largest component: the addition keeps the move */
-    float d = OFFSET_ULPS * ldexpf(1.0f, ilogbf(fmaxf(scale, FLT_MIN)) - 23);
-    return v3_madd(p, n, d);
-}
-
-float triangle_scale(vec3 a, vec3 b, vec3 c)
-{
-    vec3 m = v3_max(v3_max(v3(fabsf(a.x), fabsf(a.y), fabsf(a.z)), v3(fabsf(b.x), fabsf(b.y), fabsf(b.z))),
-                    v3(fabsf(c.x), fabsf(c.y), fabsf(c.z)));
-    return v3_max_comp(m);
 }

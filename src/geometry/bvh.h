@@ -4,10 +4,7 @@
  * vertex of a closed mesh hits at least one of the triangles. */
 #ifndef PATHLAB_BVH_H
 #define PATHLAB_BVH_H
-#include "math/vec.h"
-
-typedef struct { vec3 o, d; float tmax; } ray;      /* points o + t d for 0 < t < tmax */
-typedef struct { float t, u, v; int tri; } hit;     /* tri = -1: no hit; u, v barycentrics of corners 1, 2 */
+#include "geometry/ray.h"
 
 typedef struct bvh bvh;
 
@@ -24,10 +21,4 @@ int bvh_occluded(const bvh *b, const ray *r);
 int bvh_triangle_hit(vec3 a, vec3 b, vec3 c, const ray *r, hit *h);
 /* Node and leaf counts, for stats. */
 void bvh_stats(const bvh *b, int *nodes, int *leaves, int *depth);
-
-/* Offsets p (a point of a triangle) along its geometric normal n by a few ulps of `scale`, the
- * triangle's largest |coordinate| (triangle_scale), so that a ray leaving p does not hit the
- * triangle again. n must point to the side the ray leaves to. */
-vec3 offset_ray_origin(vec3 p, vec3 n, float scale);
-float triangle_scale(vec3 a, vec3 b, vec3 c);
 #endif

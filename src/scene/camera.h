@@ -4,7 +4,7 @@
  * Missing keys keep their defaults; without eye and target the camera frames the scene bounds. */
 #ifndef PATHLAB_CAMERA_H
 #define PATHLAB_CAMERA_H
-#include "geometry/bvh.h"
+#include "geometry/ray.h"
 
 typedef struct {
     vec3 eye, target, up;

@@ -62,7 +62,7 @@ mutant triangle-no-sqrt src/tracer/sampling.c \
     's/float s = sqrtf(u1);/float s = u1;/' \
     test_sampling PATHLAB_FAST=1 'point on a triangle with b = u1 instead of sqrt(u1): not uniform'
 # ---- ray tracing ----
-mutant acne src/geometry/bvh.c \
+mutant acne src/geometry/ray.c \
     's/return v3_madd(p, n, d);/(void)n; (void)d; return p;/' \
     test_bvh PATHLAB_TEST_QUICK=1 'no ray-origin offset: rays hit the surface they leave (acne)'
 mutant bvh-first-hit src/geometry/bvh.c \

@@ -37,7 +37,7 @@ build_variant() {   # name body
     local d=$ACNE_TMP/$1 f ok=0
     mkdir -p "$d"
     cat > "$d/origin.c" <<EOF
-/* acne.sh variant "$1" of offset_ray_origin, linked instead of src/geometry/bvh.c's */
+/* acne.sh variant "$1" of offset_ray_origin, linked instead of src/$ORIGIN_C's */
 #include "$ORIGIN_H"
 $PROTO
 {

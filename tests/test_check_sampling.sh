@@ -59,34 +59,5 @@ expect_status "check-sampling --frobnicate: status 2" 2 $PATHLAB check-sampling 
 expect_err "unknown flag named" "check-sampling: unknown flag '--frobnicate'"
 if grep -q "^usage: pathlab check-sampling" "$TMP/err"; then pass "a usage line on error"; else fail "no usage line on error"; fi
 
-# src/check's layout: each X.c defines only what its own X.h declares, the includes between modules
-# (X.h + X.c) go one way, and check/ uses only the layers below it (util/cli.h: the command's flags).
-msg=$(python3 - src/check <<'EOF'
-import glob, os, re, sys
-files = sorted(glob.glob(sys.argv[1] + '/*.[ch]'))
-mod = lambda f: os.path.splitext(os.path.basename(f))[0]
-text = {f: re.sub(r'/\*.*?\*/', '', open(f).read(), flags=re.S) for f in files}
-deps, bad = {mod(f): set() for f in files}, []
-for f in files:
-    for inc in re.findall(r'^#include "([^"]+)"', text[f], re.M):
-        if inc.startswith('check/'): deps[mod(f)].add(mod(inc))
-        elif not re.match(r'(sys|math|geometry|scene|tracer|stats)/', inc) and (inc, mod(f)) != ('util/cli.h', 'command'):
-            bad.append(f'{f} includes {inc}')
-    h = f[:-1] + 'h'
-    for name in re.findall(r'^(?!static)[a-z][\w *]*?\b(\w+)\((?:[^;]*$|.*\) *\{)', text[f], re.M) if f.endswith('.c') else []:
-        if not os.path.exists(h) or not re.search(r'\b%s\(' % name, text[h]): bad.append(f'{f}: {name} not declared in {h}')
-def cycle(m, path):
-    for d in deps[m] - {m}:
-        if d in path: return path[path.index(d):] + [d]
-        c = cycle(d, path + [d])
-        if c: return c
-for m in deps:
-    c = cycle(m, [m])
-    if c: bad.append('include circle: ' + ' -> '.join(c)); break
-print('; '.join(bad[:5]) or f'{len(files)} files, {len(deps)} modules')
-sys.exit(1 if bad else 0)
-EOF
-)
-if [ $? -eq 0 ]; then pass "src/check: one header per module, no include circle, only lower layers ($msg)"
-else fail "src/check layout: $msg"; fi
+# src/check's layering and include circles: tests/test_layout.sh, for every folder of src/
 exit 0

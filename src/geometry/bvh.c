@@ -433,6 +433,7 @@ static void fill_blocks(void *ctx, int thread, int begin, int end)
     }
 }
 
+#ifndef NDEBUG   /* only asserts call it */
 /* Every child reference in range: a node after its parent (depth first), a block, or an empty slot. */
 static int wide_tree_valid(const bvh *b)
 {
@@ -444,6 +445,7 @@ static int wide_tree_valid(const bvh *b)
         }
     return b->depth <= BVH_MAX_DEPTH && (b->root == 0 ? b->nnodes > 0 : b->root == ~0);
 }
+#endif
 
 /* ---- Build: driver ------------------------------------------------------------------------------
  * The two linear passes (primrefs from triangles, blocks from leaves) give each thread one equal
@@ -531,7 +533,7 @@ bvh *bvh_build(const vec3 *P, const int *tri, int ntris, int threads)
     B.refs = NULL; B.nodes = NULL;   /* build_binary sets up the rest */
     if (!b || ntris == 0) return b;             /* an empty bvh: every ray misses */
     if (ntris < 0 || ntris > INT_MAX / 2) { free(b); return NULL; }
-    threads = threads < 1 ? 1 : threads > PARALLEL_MAX_THREADS ? PARALLEL_MAX_THREADS : threads;
+    threads = parallel_threads(threads);
     leaves = build_binary(&B, P, tri, ntris, threads);
     ok = leaves > 0 && build_wide(b, &B, P, tri, leaves, threads);
     free(B.refs);

@@ -30,6 +30,7 @@ static inline float v3_max_comp(vec3 a) { return fmaxf(a.x, fmaxf(a.y, a.z)); }
 static inline float v3_mean(vec3 a) { return (a.x + a.y + a.z) * (1.0f / 3.0f); }
 /* Rec. 709 luminance of a linear RGB colour: how bright it looks, for choosing lights by power. */
 static inline float luminance(vec3 c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+static inline int v3_is_finite(vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
 static inline int v3_is_zero(vec3 a) { return a.x == 0.0f && a.y == 0.0f && a.z == 0.0f; }
 
 /* Orthonormal frame (t, b, n) around a unit normal n, so that a direction sampled in local

@@ -40,8 +40,7 @@ void parallel_for(int n, int grain, int threads, parallel_body *body, void *ctx)
     loop l;
     int t;
     if (n <= 0) return;
-    if (threads < 1) threads = 1;
-    if (threads > PARALLEL_MAX_THREADS) threads = PARALLEL_MAX_THREADS;
+    threads = parallel_threads(threads);
     l.body = body, l.ctx = ctx, l.n = n, l.grain = grain < 1 ? 1 : grain, l.next = 0;
     pthread_mutex_init(&l.lock, 0);
     for (t = 1; t < threads; t++) {
@@ -52,6 +51,11 @@ void parallel_for(int n, int grain, int threads, parallel_body *body, void *ctx)
     for (t = 1; t < threads; t++)
         if (started[t]) pthread_join(th[t], 0);
     pthread_mutex_destroy(&l.lock);
+}
+
+int parallel_threads(int requested)
+{
+    return requested < 1 ? 1 : requested > PARALLEL_MAX_THREADS ? PARALLEL_MAX_THREADS : requested;
 }
 
 int parallel_even_grain(int n, int threads)

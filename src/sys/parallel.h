@@ -12,8 +12,12 @@
  * per-thread state (counters, buffers) that then needs no lock. */
 typedef void parallel_body(void *ctx, int thread, int begin, int end);
 
-/* threads is clamped to [1, PARALLEL_MAX_THREADS]; grain < 1 is taken as 1. */
+/* threads is clamped by parallel_threads; grain < 1 is taken as 1. */
 void parallel_for(int n, int grain, int threads, parallel_body *body, void *ctx);
+
+/* The number of threads parallel_for runs for a request: clamped to [1, PARALLEL_MAX_THREADS], so
+ * that callers can size their per-thread state. */
+int parallel_threads(int requested);
 
 /* The chunk size that gives each of `threads` threads one equal share of n (at least 1). */
 int parallel_even_grain(int n, int threads);

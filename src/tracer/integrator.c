@@ -50,8 +50,6 @@ static vec3 emitted(const scene *sc, const hit *h, vec3 dir)
     return v3_dot(sc->Ng[h->tri], dir) < 0.0f ? Ke : v3(0, 0, 0);
 }
 
-static inline int finite3(vec3 c) { return isfinite(c.x) && isfinite(c.y) && isfinite(c.z); }
-
 static int uses_light_sampling(direct_strategy d) { return d != DIRECT_BRDF; }
 static int uses_dir_sampling(direct_strategy d) { return d != DIRECT_LIGHT; }
 
@@ -172,7 +170,7 @@ static int survives_roulette(vec3 *beta, pcg32 *rng)
     if (pcg32_float(rng) >= p_survive) return 0;
     *beta = v3_scale(before, 1.0f / p_survive);
     /* when below 1, p_survive is >= every channel of beta, which thus ends <= 1: finite stays finite */
-    assert(finite3(*beta) || !finite3(before));
+    assert(v3_is_finite(*beta) || !v3_is_finite(before));
     return 1;
 }
 

@@ -7,6 +7,7 @@
 #ifndef PATHLAB_INTEGRATOR_H
 #define PATHLAB_INTEGRATOR_H
 #include <stdint.h>
+#include "geometry/ray.h"
 #include "math/rng.h"
 #include "tracer/scene.h"
 

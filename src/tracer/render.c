@@ -31,8 +31,6 @@ typedef struct {
     pthread_mutex_t lock;
 } job;
 
-static int finite3(vec3 c) { return isfinite(c.x) && isfinite(c.y) && isfinite(c.z); }
-
 static void accumulate(double *a, vec3 c)
 {
     a[0] += c.x; a[1] += c.y; a[2] += c.z;
@@ -79,7 +77,7 @@ static void render_pixel(const job *j, thread_state *t, int px, int py)
         float jy = o->pixel_center ? 0.5f : pcg32_float(&rng);
         ray r = camera_ray(j->cam, (float)px + jx, (float)py + jy);
         vec3 L = integrate(j->sc, &o->io, &r, &rng, t->Lk, &t->st);
-        if (finite3(L)) add_sample(j, t, L);
+        if (v3_is_finite(L)) add_sample(j, t, L);
         else t->st.nonfinite++;   /* counted, reported, dropped */
     }
     for (layer = 0; layer < j->out->nlayers; layer++) store_pixel(j->out, layer, idx, t->sums + 6 * layer, o->spp);
@@ -164,7 +162,7 @@ static int alloc_layers(render_result *out, int n, int w, int h)
 int render(const scene *sc, const camera *cam, const render_opts *o, render_result *out)
 {
     job j;
-    int t, nthreads = o->threads < 1 ? 1 : o->threads > PARALLEL_MAX_THREADS ? PARALLEL_MAX_THREADS : o->threads;
+    int t, nthreads = parallel_threads(o->threads);
     int nlayers = 1 + (o->io.split ? o->io.bmax - o->io.bmin + 1 : 0);
     memset(out, 0, sizeof *out);
     memset(&j, 0, sizeof j);

@@ -3,6 +3,7 @@
 #ifndef PATHLAB_SCENE_H
 #define PATHLAB_SCENE_H
 #include "geometry/bvh.h"
+#include "geometry/ray.h"
 #include "tracer/light.h"
 #include "scene/mesh.h"
 

@@ -161,15 +161,6 @@ int cli_choice(const char *flag, const char *s, const char *const *names, int *o
     return e ? cli_fail(NULL, flag, e, s) : 0;
 }
 
-const char *cli_value(int argc, char **argv, int *i)
-{
-    if (*i + 1 >= argc) {
-        fprintf(stderr, "pathlab: %s needs a value (see pathlab help)\n", argv[*i]);
-        return NULL;
-    }
-    return argv[++*i];
-}
-
 /* ---- a table of flags ---- */
 
 int cli_is_word(const char *arg)

@@ -51,6 +51,4 @@ int cli_vec3(const char *flag, const char *s, vec3 *out);
 int cli_size(const char *flag, const char *s, int *w, int *h);
 /* One of the names in a NULL-terminated list; *out is its index. */
 int cli_choice(const char *flag, const char *s, const char *const *names, int *out);
-/* The value after argv[*i], advancing *i; prints an error and returns NULL if missing. */
-const char *cli_value(int argc, char **argv, int *i);
 #endif

@@ -1,7 +1,7 @@
 # pathlab — `make` builds ./pathlab, `make run` renders the Cornell box, `make test` runs every test.
 # `make test SAN=1` builds and tests with AddressSanitizer and UndefinedBehaviorSanitizer.
 CC ?= cc
-WARN = -std=c99 -Wall -Wextra -pedantic
+WARN = -std=c99 -Wall -Wextra -pedantic -Wdeclaration-after-statement
 DEFS = -D_POSIX_C_SOURCE=200809L
 # Three builds, each in its own folder: the default (portable: runs on any x86-64 or other machine
 # the compiler targets, asserts on), SAN=1 (sanitizers) and NATIVE=1 (-march=native, asserts off:

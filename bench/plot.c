@@ -504,9 +504,9 @@ static void print_num(double v, const char *fmt)
 static void print_report(const results *r, double fit_min)
 {
     int s, e, rank;
+    const char *err = strcmp(r->metric, "relmse") ? "RMSE" : "√relMSE", *sq = strcmp(r->metric, "relmse") ? "MSE" : "relMSE";
     printf("Estimators:\n\n");
     for (e = 0; e < r->nest; e++) printf("- `%s`: `%s`\n", r->est[e], r->flags[e][0] ? r->flags[e] : "?");
-    const char *err = strcmp(r->metric, "relmse") ? "RMSE" : "√relMSE", *sq = strcmp(r->metric, "relmse") ? "MSE" : "relMSE";
     printf("\n| scene | T* (s) | rank | estimator | %s at T* | efficiency 1/(%s·T*) | × the best's time | slope vs time | slope vs spp | spp |\n", err, sq);
     printf("|---|--:|--:|---|--:|--:|--:|--:|--:|--:|\n");
     for (s = 0; s < r->nscenes; s++)

@@ -72,8 +72,9 @@ static const char *kind_name[NKINDS] = {"uniform", "clustered", "thin", "mixed",
 static void make_soup(soup *s, int kind, int n)
 {
     vec3 centers[8];
-    for (int k = 0; k < 8; k++) centers[k] = rnd_vec(-1, 1);
-    for (int i = 0; i < n; i++) {
+    int i, k;
+    for (k = 0; k < 8; k++) centers[k] = rnd_vec(-1, 1);
+    for (i = 0; i < n; i++) {
         vec3 c = rnd_vec(-1, 1);
         float size = 0.1f;
         if (kind == CLUSTERED) { c = v3_add(centers[i % 8], rnd_vec(-0.01f, 0.01f)); size = 0.005f; }
@@ -88,7 +89,7 @@ static void make_soup(soup *s, int kind, int n)
             int axis = i % 3;
             float plane = (float)((int)rnd_range(-4, 5)) * 0.25f;
             vec3 p[3];
-            for (int k = 0; k < 3; k++) {
+            for (k = 0; k < 3; k++) {
                 p[k] = v3_add(c, rnd_vec(-size, size));
                 if (axis == 0) p[k].x = plane; else if (axis == 1) p[k].y = plane; else p[k].z = plane;
             }
@@ -105,10 +106,12 @@ static void make_soup(soup *s, int kind, int n)
 /* Icosphere of radius r around c: an icosahedron subdivided `levels` times, vertices shared. */
 static int midpoint(soup *s, int a, int b, int *cache_a, int *cache_b, int *cache_m, int *ncache, vec3 c, float r)
 {
-    for (int i = 0; i < *ncache; i++)
+    vec3 m;
+    int i, k;
+    for (i = 0; i < *ncache; i++)
         if ((cache_a[i] == a && cache_b[i] == b) || (cache_a[i] == b && cache_b[i] == a)) return cache_m[i];
-    vec3 m = v3_scale(v3_add(v3_sub(s->P[a], c), v3_sub(s->P[b], c)), 0.5f);
-    int k = add_vert(s, v3_add(c, v3_scale(v3_normalize(m), r)));
+    m = v3_scale(v3_add(v3_sub(s->P[a], c), v3_sub(s->P[b], c)), 0.5f);
+    k = add_vert(s, v3_add(c, v3_scale(v3_normalize(m), r)));
     cache_a[*ncache] = a; cache_b[*ncache] = b; cache_m[*ncache] = k; ++*ncache;
     return k;
 }
@@ -121,14 +124,16 @@ static void make_icosphere(soup *s, vec3 c, float r, int levels)
     float g = (1.0f + sqrtf(5.0f)) / 2;
     vec3 V[12] = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g}, {0, -1, -g}, {0, 1, -g},
                   {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
-    for (int i = 0; i < 12; i++) add_vert(s, v3_add(c, v3_scale(v3_normalize(V[i]), r)));
-    for (int i = 0; i < 20; i++) add_tri_idx(s, F[i][0], F[i][1], F[i][2]);
-    for (int l = 0; l < levels; l++) {
+    int i, l;
+    for (i = 0; i < 12; i++) add_vert(s, v3_add(c, v3_scale(v3_normalize(V[i]), r)));
+    for (i = 0; i < 20; i++) add_tri_idx(s, F[i][0], F[i][1], F[i][2]);
+    for (l = 0; l < levels; l++) {
         int n = s->ntris, *old = malloc(3 * (size_t)n * sizeof(int)), ncache = 0;
         int *ca = malloc(3 * (size_t)n * sizeof(int)), *cb = malloc(3 * (size_t)n * sizeof(int)), *cm = malloc(3 * (size_t)n * sizeof(int));
+        int t;
         memcpy(old, s->tri, 3 * (size_t)n * sizeof(int));
         s->ntris = 0;
-        for (int t = 0; t < n; t++) {
+        for (t = 0; t < n; t++) {
             int a = old[3 * t], b = old[3 * t + 1], d = old[3 * t + 2];
             int ab = midpoint(s, a, b, ca, cb, cm, &ncache, c, r), bd = midpoint(s, b, d, ca, cb, cm, &ncache, c, r);
             int da = midpoint(s, d, a, ca, cb, cm, &ncache, c, r);
@@ -144,19 +149,20 @@ static void make_cube(soup *s, vec3 c, float h, int n)
     int base = s->nverts;
     /* every grid point of the cube surface, indexed by (i, j, k) in [0, n]^3 */
     int *id = malloc((size_t)(n + 1) * (n + 1) * (n + 1) * sizeof(int));
-    for (int i = 0; i <= n; i++)
-        for (int j = 0; j <= n; j++)
-            for (int k = 0; k <= n; k++) {
+    int i, j, k, axis, side, u, v;
+    for (i = 0; i <= n; i++)
+        for (j = 0; j <= n; j++)
+            for (k = 0; k <= n; k++) {
                 int on = i == 0 || i == n || j == 0 || j == n || k == 0 || k == n;
                 vec3 p = v3(c.x - h + 2 * h * i / n, c.y - h + 2 * h * j / n, c.z - h + 2 * h * k / n);
                 id[(i * (n + 1) + j) * (n + 1) + k] = on ? add_vert(s, p) : -1;
             }
-    for (int axis = 0; axis < 3; axis++)
-        for (int side = 0; side <= n; side += n)
-            for (int u = 0; u < n; u++)
-                for (int v = 0; v < n; v++) {
+    for (axis = 0; axis < 3; axis++)
+        for (side = 0; side <= n; side += n)
+            for (u = 0; u < n; u++)
+                for (v = 0; v < n; v++) {
                     int q[4], uv[4][2] = {{u, v}, {u + 1, v}, {u + 1, v + 1}, {u, v + 1}};
-                    for (int k = 0; k < 4; k++) {
+                    for (k = 0; k < 4; k++) {
                         int g[3];
                         g[axis] = side; g[(axis + 1) % 3] = uv[k][0]; g[(axis + 2) % 3] = uv[k][1];
                         q[k] = id[(g[0] * (n + 1) + g[1]) * (n + 1) + g[2]];
@@ -172,8 +178,9 @@ static void make_cube(soup *s, vec3 c, float h, int n)
 static int brute_intersect(const soup *s, const ray *r, hit *best)
 {
     ray rr = *r;
+    int t;
     best->tri = -1;
-    for (int t = 0; t < s->ntris; t++) {
+    for (t = 0; t < s->ntris; t++) {
         hit h;
         if (bvh_triangle_hit(corner(s, t, 0), corner(s, t, 1), corner(s, t, 2), &rr, &h)) {
             *best = h; best->tri = t;
@@ -236,23 +243,24 @@ static ray ray_in_box_plane(const soup *s)
 static void test_soup(int kind, int n, int nrays)
 {
     soup s = {0};
-    make_soup(&s, kind, n);
-    bvh *b = bvh_build(s.P, s.tri, s.ntris, 2);
-    int bad = 0, hits = 0;
+    bvh *b;
+    int bad = 0, hits = 0, i;
     const char *why = "", *first_why = "";
-    for (int i = 0; i < nrays && b; i++) {
+    char name[64];
+    make_soup(&s, kind, n);
+    b = bvh_build(s.P, s.tri, s.ntris, 2);
+    for (i = 0; i < nrays && b; i++) {
         ray r = random_ray(1.5f);
+        hit h;
         if (i % 3 == 0) {
             int t = (int)(rnd() * (float)s.ntris);
             vec3 m = v3_scale(v3_add(v3_add(corner(&s, t, 0), corner(&s, t, 1)), corner(&s, t, 2)), 1.0f / 3);
             r.d = v3_normalize(v3_sub(m, r.o));
         } else if (i % 3 == 1 && i % 2 == 0)
             r = ray_in_box_plane(&s);
-        hit h;
         hits += bvh_intersect(b, &r, &h);
         if (!agrees(b, &s, &r, &why)) { if (!bad++) first_why = why; }
     }
-    char name[64];
     snprintf(name, sizeof name, "soup_%s_%d", kind_name[kind], n);
     check(b && bad == 0, name, "%d of %d rays disagree with brute force (%s); %d hits", bad, nrays, first_why, hits);
     bvh_free(b);
@@ -266,18 +274,19 @@ static void test_soup(int kind, int n, int nrays)
 static int count_misses(const bvh *b, const soup *s, vec3 o, int outside, vec3 center, int *nrays)
 {
     static const float frac[] = {0.5f, 0.25f, 1.0f / 3.0f, 0.1f, 0.999f, 1e-4f};
-    int misses = 0;
-    for (int t = 0; t < s->ntris; t++)
-        for (int k = 0; k < 3; k++) {
+    int misses = 0, t, k, f;
+    for (t = 0; t < s->ntris; t++)
+        for (k = 0; k < 3; k++) {
             vec3 a = corner(s, t, k), c = corner(s, t, (k + 1) % 3);
-            for (int f = -1; f < (int)(sizeof frac / sizeof frac[0]); f++) {
+            for (f = -1; f < (int)(sizeof frac / sizeof frac[0]); f++) {
                 vec3 target = f < 0 ? a : v3_add(a, v3_scale(v3_sub(c, a), frac[f]));
+                ray r;
+                hit h;
                 if (outside) {
                     vec3 out = v3_sub(target, center);
                     o = v3_add(target, v3_add(v3_scale(out, 2.0f), v3_scale(rnd_dir(), 0.3f * v3_length(out))));
                 }
-                ray r = {o, v3_sub(target, o), INFINITY};
-                hit h;
+                r.o = o; r.d = v3_sub(target, o); r.tmax = INFINITY;
                 if (v3_is_zero(r.d)) continue;
                 ++*nrays;
                 if (!bvh_intersect(b, &r, &h) || !bvh_occluded(b, &r)) misses++;
@@ -292,7 +301,8 @@ static void test_closed(const char *name, const soup *s, vec3 center, float radi
     int miss_in = 0, miss_out = 0, nin = 0, nout = 0;
     vec3 inside[3] = {center, v3_add(center, v3_scale(v3(0.3f, -0.2f, 0.1f), radius)),
                       v3_add(center, v3_scale(v3(-0.05f, 0.4f, -0.3f), radius))};
-    for (int i = 0; i < 3 && b; i++) miss_in += count_misses(b, s, inside[i], 0, center, &nin);
+    int i;
+    for (i = 0; i < 3 && b; i++) miss_in += count_misses(b, s, inside[i], 0, center, &nin);
     if (b) miss_out = count_misses(b, s, center, 1, center, &nout);
     check(b && miss_in + miss_out == 0, name, "%d misses of %d rays from inside, %d of %d from outside, at vertices and edges",
           miss_in, nin, miss_out, nout);
@@ -304,15 +314,16 @@ static void test_closed(const char *name, const soup *s, vec3 center, float radi
 static void test_axis_rays(const char *name, const soup *cube, vec3 c, float h, int n)
 {
     bvh *b = bvh_build(cube->P, cube->tri, cube->ntris, 1);
-    int misses = 0, nrays = 0;
-    for (int i = 1; i < n && b; i++)
-        for (int j = 1; j < n; j++)
-            for (int axis = 0; axis < 3; axis++)
-                for (int sign = -1; sign <= 1; sign += 2) {
+    int misses = 0, nrays = 0, i, j, axis, sign;
+    for (i = 1; i < n && b; i++)
+        for (j = 1; j < n; j++)
+            for (axis = 0; axis < 3; axis++)
+                for (sign = -1; sign <= 1; sign += 2) {
                     float g[3] = {c.x, c.y, c.z}, d[3] = {0, 0, 0}, u = -h + 2 * h * i / n, v = -h + 2 * h * j / n;
-                    g[(axis + 1) % 3] += u; g[(axis + 2) % 3] += v; d[axis] = (float)sign;
-                    ray r = {v3(g[0], g[1], g[2]), v3(d[0], d[1], d[2]), INFINITY};
+                    ray r;
                     hit hh;
+                    g[(axis + 1) % 3] += u; g[(axis + 2) % 3] += v; d[axis] = (float)sign;
+                    r.o = v3(g[0], g[1], g[2]); r.d = v3(d[0], d[1], d[2]); r.tmax = INFINITY;
                     nrays++;
                     if (!bvh_intersect(b, &r, &hh) || !bvh_occluded(b, &r)) misses++;
                 }
@@ -323,8 +334,8 @@ static void test_axis_rays(const char *name, const soup *cube, vec3 c, float h, 
 static void test_watertight(void)
 {
     vec3 far = v3(1e4f, -1e4f, 1e4f);
-    int levels = quick ? 3 : 4, grid = quick ? 8 : 16;
-    for (int moved = 0; moved < 2; moved++) {
+    int levels = quick ? 3 : 4, grid = quick ? 8 : 16, moved;
+    for (moved = 0; moved < 2; moved++) {
         vec3 c = moved ? far : v3(0, 0, 0);
         soup sphere = {0}, cube = {0};
         char name[64];
@@ -344,10 +355,11 @@ static void test_watertight(void)
 static void test_tmax(void)
 {
     soup s = {0};
+    bvh *b;
+    int bad = 0, tested = 0, i;
     make_soup(&s, UNIFORM, 2000);
-    bvh *b = bvh_build(s.P, s.tri, s.ntris, 1);
-    int bad = 0, tested = 0;
-    for (int i = 0; i < 2000 && b; i++) {
+    b = bvh_build(s.P, s.tri, s.ntris, 1);
+    for (i = 0; i < 2000 && b; i++) {
         ray r = {rnd_vec(-1.5f, 1.5f), rnd_dir(), INFINITY};
         hit h, h2;
         if (!bvh_intersect(b, &r, &h)) continue;
@@ -370,26 +382,26 @@ static void test_threads(void)
      * hands them subtrees deep inside ones built on one thread (a race, hence the repeats) */
     static const int threads[NBUILDS] = {1, 2, 3, 8, 8, 8};
     soup s = {0};
-    int n = quick ? 20000 : 100000, bad = 0, stats[NBUILDS][3] = {{0}}, ok = 1;
-    make_soup(&s, UNIFORM, n);   /* not MIXED: its 10% of big triangles make every ray slow */
+    int n = quick ? 20000 : 100000, bad = 0, stats[NBUILDS][3] = {{0}}, ok = 1, i, k;
     bvh *b[NBUILDS];
-    for (int k = 0; k < NBUILDS; k++) {
+    make_soup(&s, UNIFORM, n);   /* not MIXED: its 10% of big triangles make every ray slow */
+    for (k = 0; k < NBUILDS; k++) {
         b[k] = bvh_build(s.P, s.tri, s.ntris, threads[k]);
         if (b[k]) bvh_stats(b[k], &stats[k][0], &stats[k][1], &stats[k][2]);
         ok = ok && b[k];
     }
-    for (int i = 0; i < 20000 && ok; i++) {
+    for (i = 0; i < 20000 && ok; i++) {
         ray r = random_ray(1.5f);
         hit h[NBUILDS];
         int got[NBUILDS];
-        for (int k = 0; k < NBUILDS; k++) got[k] = bvh_intersect(b[k], &r, &h[k]);
-        for (int k = 1; k < NBUILDS; k++)
+        for (k = 0; k < NBUILDS; k++) got[k] = bvh_intersect(b[k], &r, &h[k]);
+        for (k = 1; k < NBUILDS; k++)
             if (got[k] != got[0] || (got[0] && (h[k].t != h[0].t || h[k].tri != h[0].tri || h[k].u != h[0].u))) bad++;
     }
-    for (int k = 1; k < NBUILDS && ok; k++) ok = !memcmp(stats[0], stats[k], sizeof stats[0]);
+    for (k = 1; k < NBUILDS && ok; k++) ok = !memcmp(stats[0], stats[k], sizeof stats[0]);
     check(ok && bad == 0, "threads_same_hits", "1, 2, 3, 8, 8, 8 threads: %d differences; nodes %d %d %d %d, leaves %d, depth %d",
           bad, stats[0][0], stats[1][0], stats[2][0], stats[3][0], stats[0][1], stats[0][2]);
-    for (int k = 0; k < NBUILDS; k++) bvh_free(b[k]);
+    for (k = 0; k < NBUILDS; k++) bvh_free(b[k]);
     soup_free(&s);
 }
 
@@ -424,17 +436,19 @@ static vec3 rnd_hemisphere(vec3 n, float mincos)
 static void test_offset(void)
 {
     soup s = {0};
+    bvh *b;
+    int self = 0, self_raw = 0, rays = 0, i, side;
     make_icosphere(&s, v3(1e5f, -1e5f, 1e5f), 10.0f, 3);
-    bvh *b = bvh_build(s.P, s.tri, s.ntris, 1);
-    int self = 0, self_raw = 0, rays = 0;
-    for (int i = 0; i < (quick ? 5000 : 40000) && b; i++) {
+    b = bvh_build(s.P, s.tri, s.ntris, 1);
+    for (i = 0; i < (quick ? 5000 : 40000) && b; i++) {
         int t = (int)(rnd() * (float)s.ntris);
         vec3 a = corner(&s, t, 0), bb = corner(&s, t, 1), c = corner(&s, t, 2);
         vec3 n = v3_normalize(v3_cross(v3_sub(bb, a), v3_sub(c, a)));   /* outward */
         float u = rnd(), v = rnd();
+        vec3 p;
         if (u + v > 1) { u = 1 - u; v = 1 - v; }
-        vec3 p = v3_add(a, v3_add(v3_scale(v3_sub(bb, a), u), v3_scale(v3_sub(c, a), v)));
-        for (int side = -1; side <= 1; side += 2) {
+        p = v3_add(a, v3_add(v3_scale(v3_sub(bb, a), u), v3_scale(v3_sub(c, a), v)));
+        for (side = -1; side <= 1; side += 2) {
             vec3 ns = v3_scale(n, (float)side);
             ray r = {offset_ray_origin(p, ns, triangle_scale(a, bb, c)), rnd_hemisphere(ns, 0.01f), INFINITY}, raw = r;
             hit h;
@@ -452,9 +466,10 @@ static void test_offset(void)
 int main(void)
 {
     static const int sizes[] = {1, 2, 5, 17, 100, 1000, 20000};
+    int kind, i;
     quick = SANITIZED || getenv("PATHLAB_TEST_QUICK") != NULL;
-    for (int kind = 0; kind < NKINDS; kind++)
-        for (int i = 0; i < (int)(sizeof sizes / sizeof sizes[0]); i++) {
+    for (kind = 0; kind < NKINDS; kind++)
+        for (i = 0; i < (int)(sizeof sizes / sizeof sizes[0]); i++) {
             int n = sizes[i], nrays = n >= 20000 ? 300 : 2000;
             if (quick && n > 1000) continue;
             test_soup(kind, n, quick ? nrays / 4 : nrays);

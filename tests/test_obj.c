@@ -144,6 +144,7 @@ static void check_tiling(const char *name, const mesh *m, const int *idx, int n,
 {
     double N[3] = {0, 0, 0}, area, sum = 0, sum3 = 0, an;
     int i, t, axis, u, v, flipped = 0, outside = 0;
+    char full[300];
     for (i = 0; i < n; i++) {
         vec3 a = m->P[idx[i]], b = m->P[idx[(i + 1) % n]];
         N[0] += ((double)a.y - b.y) * ((double)a.z + b.z);
@@ -166,7 +167,6 @@ static void check_tiling(const char *name, const mesh *m, const int *idx, int n,
         outside += !inside(m, idx, n, u, v, (comp(a, u) + comp(b, u) + comp(c, u)) / 3,
                            (comp(a, v) + comp(b, v) + comp(c, v)) / 3);
     }
-    char full[300];
     snprintf(full, sizeof full, "%s_area_sum", name);
     check(fabs(sum - area) <= 1e-5 * fabs(area), full, "projected signed areas: triangles %.9g, polygon %.9g", sum, area);
     snprintf(full, sizeof full, "%s_winding", name);

@@ -25,6 +25,9 @@ allowed() {
     esac
 }
 SRC=${LAYOUT_SRC:-src}   # another tree to check (tests/test_layout.sh's own negative checks use it)
+# the tests' and benchmarks' C files follow the same dialect (the compiler's
+# -Wdeclaration-after-statement sees the rest of it: declarations after statements)
+C_ELSEWHERE=""; [ -z "${LAYOUT_SRC:-}" ] && C_ELSEWHERE="tests/*.c bench/*.c"
 
 stray=$(find "$SRC" -type f \( -name '*.c' -o -name '*.h' \) | while read -r f; do
     d=${f#"$SRC"/}; d=${d%%/*}
@@ -65,8 +68,8 @@ nfn=$(cat "$SRC"/*/*.c | grep -c '^{')
 if [ -z "$long" ]; then pass "no function over 60 lines ($nfn functions)"
 else fail "functions over 60 lines: $(echo "$long" | tr '\n' ';')"; fi
 
-mixed=$(grep -nE '(^|[^A-Za-z0-9_])for[[:space:]]*\([[:space:]]*(const[[:space:]]+)?(int|long|size_t|unsigned|float|double|char|uint[0-9]+_t|int[0-9]+_t)[[:space:]]' "$SRC"/*/*.c || true)
-if [ -z "$mixed" ]; then pass "one C dialect: declarations at the top of a block, none in a for statement"
+mixed=$(grep -nE '(^|[^A-Za-z0-9_])for[[:space:]]*\([[:space:]]*(const[[:space:]]+)?(int|long|size_t|unsigned|float|double|char|uint[0-9]+_t|int[0-9]+_t)[[:space:]]' "$SRC"/*/*.c $C_ELSEWHERE || true)
+if [ -z "$mixed" ]; then pass "one C dialect in src/, tests/ and bench/: declarations at the top of a block, none in a for statement"
 else fail "declarations in for statements: $(echo "$mixed" | tr '\n' ';')"; fi
 
 calls=$(grep -nwE 'atoi|atof|atol' "$SRC"/*/*.c || true)

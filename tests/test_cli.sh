@@ -66,4 +66,18 @@ if [ -f "$out" ] && [ "$(tail -c 768 "$out" | tr -d '\0' | wc -c)" -eq 0 ]; then
 # an output that cannot be written: status 1, a message naming it, nothing left behind
 expect_status "unwritable output: status 1" 1 $PATHLAB render scenes/cornell.obj --size 8x8 --spp 1 --quiet -o "$TMP/no/such/dir/x.pfm"
 expect_err "unwritable output named" "no/such/dir/x.pfm"
+# the help lists the strategy names from the tables the parser reads: every name it shows is accepted
+$PATHLAB help > "$TMP/help" 2>&1
+if grep -q "{light\|{dir\|{direct" "$TMP/help"; then fail "help: a {name} placeholder was not expanded"
+else pass "help: placeholders expanded"; fi
+for flag in light dir direct; do
+    names=$(sed -n "s/^  --$flag \([a-z|-]*\) .*/\1/p" "$TMP/help" | tr '|' ' ')
+    [ -n "$names" ] || { fail "help: no line for --$flag"; continue; }
+    bad=""
+    for n in $names; do
+        $PATHLAB render scenes/cornell.obj --$flag "$n" --size 4x4 --spp 1 --quiet -o "$TMP/h.pfm" 2> /dev/null || bad="$bad $n"
+    done
+    if [ -z "$bad" ]; then pass "help: every --$flag name it lists is accepted ($names)"
+    else fail "help: --$flag names refused by the parser:$bad"; fi
+done
 exit 0

@@ -138,7 +138,7 @@ static void setup_camera(bench_scene *s, const mesh *m)
     s->cw = v3_normalize(v3_sub(c, s->eye));
     s->cu = v3_normalize(v3_cross(s->cw, v3(0, 1, 0)));
     s->cv = v3_cross(s->cu, s->cw);
-    th = tanf(0.5f * 40.0f * 3.14159265f / 180.0f);
+    th = tanf(0.5f * 40.0f * PI_F / 180.0f);
     s->cu = v3_scale(s->cu, th); s->cv = v3_scale(s->cv, th);
 }
 

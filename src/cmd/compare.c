@@ -30,6 +30,7 @@
 #include "cmd/compare_report.h"
 #include "cmd/diff.h"
 #include "cmd/estimators.h"
+#include "cmd/help.h"
 #include "cmd/render_args.h"
 #include "image/mosaic.h"
 #include "tracer/render.h"
@@ -137,7 +138,7 @@ static int parse_flags(comparison *c, int argc, char **argv)
 static int check_flags(const comparison *c)
 {
     if (!c->base.scene || !c->list || !c->dir) {
-        fprintf(stderr, "pathlab: compare needs a scene, --estimators and -o DIR\nusage:\n" COMPARE_USAGE COMPARE_HELP);
+        help_print(stderr, "pathlab: compare needs a scene, --estimators and -o DIR\nusage:\n" COMPARE_USAGE COMPARE_HELP);
         return 1;
     }
     if (c->spp_given && c->time > 0.0f) { fprintf(stderr, "pathlab: compare: --spp (equal samples) or --time (equal time), not both\n"); return 1; }

@@ -8,6 +8,7 @@
 #include "cmd/convert.h"
 #include "cmd/diff.h"
 #include "cmd/grade.h"
+#include "cmd/help.h"
 #include "cmd/render_cmd.h"
 
 static const char *USAGE =
@@ -41,9 +42,9 @@ static const char *USAGE =
     "  --bounces A:B        render L_A + ... + L_B; B may be inf (default 0:inf)\n"
     "  --bounce K           the same as --bounces K:K\n"
     "  --split              also write one image per bounce: FILE_L0.pfm, FILE_L1.pfm, ...\n"
-    "  --light area|triangle|power|solid-angle   how a point s on a light is chosen (default area)\n"
-    "  --dir uniform|cosine|brdf        how a direction is chosen at a surface (default brdf)\n"
-    "  --direct light|brdf|mis-balance|mis-power   the estimator of direct light (default mis-power)\n"
+    "  --light {light|}   how a point s on a light is chosen (default area)\n"
+    "  --dir {dir|}        how a direction is chosen at a surface (default brdf)\n"
+    "  --direct {direct|}   the estimator of direct light (default mis-power)\n"
     "  --rr D|off           Russian roulette after D bounces (default 3)\n"
     "  --variance FILE.pfm  also write the variance of each pixel's mean (with --split, one per bounce too)\n";
 
@@ -71,8 +72,8 @@ static const command COMMANDS[] = {
 
 static void help(FILE *f)
 {
-    fputs(USAGE, f);
-    fputs(USAGE_TOOLS, f);
+    help_print(f, USAGE);
+    help_print(f, USAGE_TOOLS);
 }
 
 int main(int argc, char **argv)

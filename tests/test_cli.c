@@ -12,6 +12,27 @@
 #include "cmd/render_args.h"
 #include "util/cli.h"
 
+/* One value through cli_parse_value, as a flag of kind `kind` named `flag` (no command: the
+ * message starts "pathlab: "). */
+static int one_value(cli_kind kind, const char *flag, const char *s, double lo, double hi, const char *const *names, void *out)
+{
+    cli_flag f = {NULL, CLI_INT, NULL, 0, 0, NULL, NULL, NULL};
+    f.name = flag, f.kind = kind, f.dest = out, f.lo = lo, f.hi = hi, f.choices = names;
+    return cli_parse_value(NULL, &f, s, NULL);
+}
+static int cli_int(const char *flag, const char *s, int lo, int hi, int *out) { return one_value(CLI_INT, flag, s, lo, hi, NULL, out); }
+static int cli_u64(const char *flag, const char *s, uint64_t *out) { return one_value(CLI_U64, flag, s, 0, 0, NULL, out); }
+static int cli_float(const char *flag, const char *s, float *out) { return one_value(CLI_FLOAT, flag, s, 0, 0, NULL, out); }
+static int cli_double(const char *flag, const char *s, double lo, double hi, double *out) { return one_value(CLI_DOUBLE, flag, s, lo, hi, NULL, out); }
+static int cli_vec3(const char *flag, const char *s, vec3 *out) { return one_value(CLI_VEC3, flag, s, 0, 0, NULL, out); }
+static int cli_size(const char *flag, const char *s, int *w, int *h)
+{
+    int wh[2] = {0, 0}, rc = one_value(CLI_SIZE, flag, s, 0, 0, NULL, wh);
+    if (!rc) *w = wh[0], *h = wh[1];
+    return rc;
+}
+static int cli_choice(const char *flag, const char *s, const char *const *names, int *out) { return one_value(CLI_CHOICE, flag, s, 0, 0, names, out); }
+
 static char err_path[] = "/tmp/pathlab_test_cli_XXXXXX";
 static char err[1024];   /* what the last call printed on stderr */
 

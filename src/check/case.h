@@ -74,7 +74,7 @@ typedef struct {
 static inline pcg32 case_stream(uint64_t seed, int k)
 {
     pcg32 r;
-    pcg32_init(&r, seed + 0x9E3779B97F4A7C15ULL * (uint64_t)k, (uint64_t)k);
+    pcg32_init(&r, seed + SPLITMIX64_GAMMA * (uint64_t)k, (uint64_t)k);
     return r;
 }
 #endif

@@ -22,11 +22,8 @@ static void run_case(const sampling_case *c, long n, uint64_t seed, sampling_res
     }
 }
 
-/* splitmix64 of (seed, i): the seeds of different cases are unrelated */
-static uint64_t case_seed(uint64_t seed, int i)
-{
-    return splitmix64_mix(seed + 0x9E3779B97F4A7C15ULL * (uint64_t)(i + 1));
-}
+/* The seed of case i: the cases' streams are unrelated */
+static uint64_t case_seed(uint64_t seed, int i) { return splitmix64_at(seed, (uint64_t)i + 1); }
 
 typedef struct {
     const sampling_case *c;

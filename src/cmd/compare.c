@@ -83,11 +83,10 @@ typedef struct {
 static int parse_time(void *ctx, const char *flag, const char *v)
 {
     comparison *c = ctx;
-    if (cli_float(flag, v, &c->time)) return 1;
-    if (!(c->time > 0.0f && c->time <= 86400.0f)) {
-        fprintf(stderr, "pathlab: --time expects seconds in (0, 86400], got '%s'\n", v);
-        return 1;
-    }
+    cli_flag as_float = {NULL, CLI_FLOAT, NULL, 0, 0, NULL, NULL, NULL};
+    as_float.name = flag, as_float.dest = &c->time;
+    if (cli_parse_value("compare", &as_float, v, NULL)) return 1;
+    if (!(c->time > 0.0f && c->time <= 86400.0f)) return cli_fail("compare", flag, "seconds in (0, 86400]", v);
     return 0;
 }
 
@@ -174,7 +173,6 @@ static int parse_args(comparison *c, int argc, char **argv)
     render_args_init(&c->base);
     c->spp = 16;
     if (parse_flags(c, argc, argv) || check_flags(c)) return 1;
-    if (c->base.ro.threads < 1) c->base.ro.threads = 1;
     return estimators_parse(c->list, &c->base, c->spec, MAX_EST, &c->nest) || check_file_names(c);
 }
 

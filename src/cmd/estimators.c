@@ -147,7 +147,7 @@ static int apply_flags(estimator_spec *e, const flag_list *f, const render_args 
             fprintf(stderr, "pathlab: compare: in estimator '%s'\n", e->label);
             return 1;
         }
-    if (e->a.scene || e->a.out || e->a.variance || e->a.ro.io.split || e->a.ro.spp) {
+    if (e->a.scene || e->a.out || e->a.variance || e->a.ro.split || e->a.ro.spp) {
         fprintf(stderr, "pathlab: compare: estimator '%s': %s\n", e->label,
                 e->a.scene ? "a word that is neither a flag, a flag's value nor a name" :
                 e->a.ro.spp ? "--spp is set for all estimators (--spp or --time of compare), not for one" :

@@ -198,7 +198,7 @@ static void test_pixels(grade_report *r, const image *img, const image *ref, con
     double k = 1.0 + (double)o->ref_spp / o->spp;
     r->pixel_test = 1;
     r->pixel_n = (long)n;
-    r->pixel_zcrit = normal_quantile(1.0 - 0.5 * sidak_level(r->alpha, (long)n));
+    r->pixel_zcrit = sidak_zcrit(r->alpha, (long)n);
     for (i = 0; i < n; i++) {
         double d = d_at(img, ref, i), rounding = GRADE_ROUNDING * (fabs(ref->px[i]) + fabs(ref->px[i] + d));
         if (fabs(t_stat(d, var->px[i] * k + rounding * rounding)) > r->pixel_zcrit) r->pixel_fail++;

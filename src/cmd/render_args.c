@@ -1,10 +1,10 @@
 /* render_args.c — the flags of pathlab render as a cli_flag table. Most are plain kinds; the
  * custom ones store into an enum or a pair of integrator fields. */
 #include "cmd/render_args.h"
+#include "sys/parallel.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 /* Parses v as a plain kind of value (cli_parse_value), for a custom flag; 0, or 1 after printing why. */
 static int parse_as(const render_args *a, const char *flag, const char *v, cli_kind kind, void *dest, double lo,
@@ -99,7 +99,7 @@ void render_flag_table(render_args *a, cli_flag t[RENDER_NFLAGS])
         {"--variance", CLI_STRING, &a->variance, 0, 0, NULL, NULL, NULL},
         {"--spp", CLI_INT, &a->ro.spp, 1, 1 << 30, NULL, NULL, NULL},
         {"--seed", CLI_U64, &a->ro.seed, 0, 0, NULL, NULL, NULL},
-        {"--threads", CLI_INT, &a->ro.threads, 1, 256, NULL, NULL, NULL},
+        {"--threads", CLI_INT, &a->ro.threads, 1, PARALLEL_MAX_THREADS, NULL, NULL, NULL},
         {"--quiet", CLI_SWITCH, &a->ro.quiet, 0, 0, NULL, NULL, NULL},
         {"--exposure", CLI_FLOAT, &a->exposure, 0, 0, NULL, NULL, NULL},
         {"--eye", CLI_VEC3, &a->flags.eye, 0, 0, NULL, NULL, &a->eye},
@@ -110,7 +110,7 @@ void render_flag_table(render_args *a, cli_flag t[RENDER_NFLAGS])
         {"--pixel-center", CLI_SWITCH, &a->ro.pixel_center, 0, 0, NULL, NULL, NULL},
         {"--bounces", CLI_CUSTOM, NULL, 0, 0, NULL, parse_bounces, NULL},
         {"--bounce", CLI_CUSTOM, NULL, 0, 0, NULL, parse_bounce, NULL},
-        {"--split", CLI_SWITCH, &a->ro.io.split, 0, 0, NULL, NULL, NULL},
+        {"--split", CLI_SWITCH, &a->ro.split, 0, 0, NULL, NULL, NULL},
         {"--light", CLI_CUSTOM, NULL, 0, 0, NULL, parse_light, NULL},
         {"--dir", CLI_CUSTOM, NULL, 0, 0, NULL, parse_dir, NULL},
         {"--direct", CLI_CUSTOM, NULL, 0, 0, NULL, parse_direct, NULL},
@@ -143,7 +143,7 @@ void render_args_init(render_args *a)
     a->cmd = "render";
     a->ro.spp = 16;
     a->ro.seed = 1;
-    a->ro.threads = (int)sysconf(_SC_NPROCESSORS_ONLN);
+    a->ro.threads = parallel_default_threads();
     a->ro.io.light = LIGHT_AREA;
     a->ro.io.dir = DIR_BRDF;
     a->ro.io.direct = DIRECT_MIS_POWER;

@@ -28,11 +28,10 @@ static int parse_render_args(render_args *a, int argc, char **argv)
         fprintf(stderr, "pathlab render: --variance %s: the variance is written as .pfm\n", a->variance);
         return 1;
     }
-    if (a->ro.io.split && a->ro.io.bmax == BOUNCES_INF) {
+    if (a->ro.split && a->ro.io.bmax == BOUNCES_INF) {
         fprintf(stderr, "pathlab render: --split needs a last bounce, e.g. --bounces 0:8\n");
         return 1;
     }
-    if (a->ro.threads < 1) a->ro.threads = 1;
     return 0;
 }
 

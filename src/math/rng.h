@@ -1,7 +1,8 @@
 /* rng.h — PCG32 (O'Neill 2014, "PCG: a family of simple fast space-efficient statistically good
  * algorithms for random number generation"): 64-bit LCG state, 32-bit output by xorshift and a
  * random rotation. Each pixel owns one stream, selected by (seed, pixel index), so an image does
- * not depend on how pixels are shared among threads. */
+ * not depend on how pixels are shared among threads. Also SplitMix64's finaliser, which turns
+ * such (seed, index) pairs into unrelated seeds. */
 #ifndef PATHLAB_RNG_H
 #define PATHLAB_RNG_H
 #include <stdint.h>
@@ -37,6 +38,12 @@ static inline uint64_t splitmix64_mix(uint64_t z)
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
     return z ^ (z >> 31);
 }
+
+/* SplitMix64's increment, 2^64 / golden ratio: seed + k GAMMA for k = 0, 1, 2... are far apart. */
+#define SPLITMIX64_GAMMA 0x9E3779B97F4A7C15ULL
+
+/* The k-th output of the SplitMix64 sequence started at seed: unrelated seeds for items k of a run. */
+static inline uint64_t splitmix64_at(uint64_t seed, uint64_t k) { return splitmix64_mix(seed + SPLITMIX64_GAMMA * k); }
 
 /* Uniform double in [0, 1) with 32 random bits: for discrete choices among millions of items,
  * where 24 bits would quantise each item's probability. */

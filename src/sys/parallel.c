@@ -1,6 +1,7 @@
 /* parallel.c — parallel_for: a shared counter under a mutex hands out chunks; C99 has no atomics. */
 #include "sys/parallel.h"
 #include <pthread.h>
+#include <unistd.h>
 
 typedef struct {
     parallel_body *body;
@@ -56,6 +57,12 @@ void parallel_for(int n, int grain, int threads, parallel_body *body, void *ctx)
 int parallel_threads(int requested)
 {
     return requested < 1 ? 1 : requested > PARALLEL_MAX_THREADS ? PARALLEL_MAX_THREADS : requested;
+}
+
+int parallel_default_threads(void)
+{
+    long n = sysconf(_SC_NPROCESSORS_ONLN);
+    return parallel_threads(n > 0 && n < PARALLEL_MAX_THREADS ? (int)n : n > 0 ? PARALLEL_MAX_THREADS : 1);
 }
 
 int parallel_even_grain(int n, int threads)

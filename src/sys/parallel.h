@@ -19,6 +19,9 @@ void parallel_for(int n, int grain, int threads, parallel_body *body, void *ctx)
  * that callers can size their per-thread state. */
 int parallel_threads(int requested);
 
+/* The number of processors online, at least 1: the default number of threads. */
+int parallel_default_threads(void);
+
 /* The chunk size that gives each of `threads` threads one equal share of n (at least 1). */
 int parallel_even_grain(int n, int threads);
 #endif

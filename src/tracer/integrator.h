@@ -25,12 +25,10 @@ typedef struct {
     direct_strategy direct;
     int bmin, bmax;           /* L_bmin + ... + L_bmax, 0 <= bmin <= bmax */
     int rr_depth;             /* Russian roulette after this many bounces; -1: off */
-    int split;                /* --split: the render also keeps one image per L_k (integrate ignores it) */
 } integrator_opts;
 
 typedef struct {
     uint64_t camera_rays, continuation_rays, shadow_rays;
-    uint64_t nonfinite;       /* samples that were NaN or infinite (and were dropped) */
 } trace_stats;
 
 /* Returns the radiance L_bmin + ... + L_bmax along the camera ray, summed in path order. If Lk is

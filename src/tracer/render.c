@@ -16,6 +16,7 @@ typedef struct {
     vec3 *Lk;                /* L_k of one sample for k = 0..bmax, with --split (else NULL) */
     double *sums;            /* per layer: the sum and sum of squares of one pixel's samples, 6 doubles */
     trace_stats st;
+    uint64_t nonfinite;      /* samples dropped for being NaN or infinite */
 } thread_state;
 
 typedef struct {
@@ -78,7 +79,7 @@ static void render_pixel(const job *j, thread_state *t, int px, int py)
         ray r = camera_ray(j->cam, (float)px + jx, (float)py + jy);
         vec3 L = integrate(j->sc, &o->io, &r, &rng, t->Lk, &t->st);
         if (v3_is_finite(L)) add_sample(j, t, L);
-        else t->st.nonfinite++;   /* counted, reported, dropped */
+        else t->nonfinite++;   /* counted, reported, dropped */
     }
     for (layer = 0; layer < j->out->nlayers; layer++) store_pixel(j->out, layer, idx, t->sums + 6 * layer, o->spp);
 }
@@ -111,6 +112,7 @@ static void render_tiles(void *ctx, int thread, int begin, int end)
         pthread_mutex_unlock(&j->lock);
     }
     j->ts[thread].st = t.st;
+    j->ts[thread].nonfinite = t.nonfinite;
 }
 
 static void free_thread_states(thread_state *ts, int nthreads)
@@ -144,7 +146,6 @@ static void add_stats(trace_stats *sum, const trace_stats *st)
     sum->camera_rays += st->camera_rays;
     sum->continuation_rays += st->continuation_rays;
     sum->shadow_rays += st->shadow_rays;
-    sum->nonfinite += st->nonfinite;
 }
 
 static int alloc_layers(render_result *out, int n, int w, int h)
@@ -163,10 +164,10 @@ int render(const scene *sc, const camera *cam, const render_opts *o, render_resu
 {
     job j;
     int t, nthreads = parallel_threads(o->threads);
-    int nlayers = 1 + (o->io.split ? o->io.bmax - o->io.bmin + 1 : 0);
+    int nlayers = 1 + (o->split ? o->io.bmax - o->io.bmin + 1 : 0);
     memset(out, 0, sizeof *out);
     memset(&j, 0, sizeof j);
-    j.ts = alloc_thread_states(nthreads, nlayers, o->io.split ? o->io.bmax + 1 : 0);
+    j.ts = alloc_thread_states(nthreads, nlayers, o->split ? o->io.bmax + 1 : 0);
     if (!j.ts || alloc_layers(out, nlayers, cam->width, cam->height)) {
         fprintf(stderr, "pathlab: out of memory for a %dx%d image\n", cam->width, cam->height);
         free_thread_states(j.ts, nthreads);
@@ -183,7 +184,10 @@ int render(const scene *sc, const camera *cam, const render_opts *o, render_resu
         parallel_for(j.ntiles, 1, nthreads, render_tiles, &j);
     pthread_mutex_destroy(&j.lock);
     out->seconds = clock_seconds() - j.t0;
-    for (t = 0; t < nthreads; t++) add_stats(&out->st, &j.ts[t].st);
+    for (t = 0; t < nthreads; t++) {
+        add_stats(&out->st, &j.ts[t].st);
+        out->nonfinite += j.ts[t].nonfinite;
+    }
     free_thread_states(j.ts, nthreads);
     return 0;
 }
@@ -206,5 +210,5 @@ void render_print_stats(const render_result *r, int spp, int npixels)
             "%llu NaN/Inf samples\n",
             r->seconds, spp, (double)spp * npixels / secs * 1e-6, (double)rays / secs * 1e-6,
             (unsigned long long)st->camera_rays, (unsigned long long)st->continuation_rays,
-            (unsigned long long)st->shadow_rays, (unsigned long long)st->nonfinite);
+            (unsigned long long)st->shadow_rays, (unsigned long long)r->nonfinite);
 }

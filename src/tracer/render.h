@@ -10,6 +10,7 @@
 
 typedef struct {
     int spp, threads, quiet, pixel_center;
+    int split;              /* --split: also one image layer per L_k */
     uint64_t seed;
     integrator_opts io;
 } render_opts;
@@ -18,6 +19,7 @@ typedef struct {
     int nlayers;            /* 1 + (bmax - bmin + 1 with split) */
     image *mean, *var;      /* [0] the total, [1 + k - bmin] L_k with split; var: of the pixel's mean */
     trace_stats st;
+    uint64_t nonfinite;     /* samples that were NaN or infinite (counted, and dropped) */
     double seconds;
 } render_result;
 

@@ -114,53 +114,6 @@ int cli_fail(const char *cmd, const char *flag, const char *what, const char *va
     return 1;
 }
 
-/* ---- one value outside a table ---- */
-
-int cli_int(const char *flag, const char *s, int lo, int hi, int *out)
-{
-    char what[WHAT];
-    const char *e = int_of(s, lo, hi, out, what);
-    return e ? cli_fail(NULL, flag, e, s) : 0;
-}
-
-int cli_u64(const char *flag, const char *s, uint64_t *out)
-{
-    const char *e = u64_of(s, out);
-    return e ? cli_fail(NULL, flag, e, s) : 0;
-}
-
-int cli_float(const char *flag, const char *s, float *out)
-{
-    const char *e = float_of(s, out);
-    return e ? cli_fail(NULL, flag, e, s) : 0;
-}
-
-int cli_double(const char *flag, const char *s, double lo, double hi, double *out)
-{
-    char what[WHAT];
-    const char *e = double_of(s, lo, hi, out, what);
-    return e ? cli_fail(NULL, flag, e, s) : 0;
-}
-
-int cli_vec3(const char *flag, const char *s, vec3 *out)
-{
-    const char *e = vec3_of(s, out);
-    return e ? cli_fail(NULL, flag, e, s) : 0;
-}
-
-int cli_size(const char *flag, const char *s, int *w, int *h)
-{
-    const char *e = size_of(s, w, h);
-    return e ? cli_fail(NULL, flag, e, s) : 0;
-}
-
-int cli_choice(const char *flag, const char *s, const char *const *names, int *out)
-{
-    char what[WHAT];
-    const char *e = choice_of(s, names, out, what);
-    return e ? cli_fail(NULL, flag, e, s) : 0;
-}
-
 /* ---- a table of flags ---- */
 
 int cli_is_word(const char *arg)

@@ -42,13 +42,4 @@ int cli_is_word(const char *arg);
 /* Prints "pathlab CMD: FLAG expects WHAT, got 'VALUE'" ("pathlab: ..." if cmd is NULL); returns 1. */
 int cli_fail(const char *cmd, const char *flag, const char *what, const char *value);
 
-/* One value outside a table: each returns 0, or 1 after printing "pathlab: FLAG expects ..., got 'VALUE'". */
-int cli_int(const char *flag, const char *s, int lo, int hi, int *out);
-int cli_u64(const char *flag, const char *s, uint64_t *out);
-int cli_float(const char *flag, const char *s, float *out);
-int cli_double(const char *flag, const char *s, double lo, double hi, double *out);
-int cli_vec3(const char *flag, const char *s, vec3 *out);
-int cli_size(const char *flag, const char *s, int *w, int *h);
-/* One of the names in a NULL-terminated list; *out is its index. */
-int cli_choice(const char *flag, const char *s, const char *const *names, int *out);
 #endif

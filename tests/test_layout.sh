@@ -13,14 +13,15 @@ LAYERS="sys math geometry scene tracer image stats check util cmd"
 # allowed LAYER: the layers its files may include (besides its own)
 allowed() {
     case $1 in
-        sys|math) echo "sys math" ;;
+        sys) echo "" ;;
+        math) echo "sys" ;;
         geometry) echo "sys math" ;;
         scene) echo "sys math geometry" ;;
         image) echo "sys math" ;;
         tracer) echo "sys math geometry scene image" ;;
         stats) echo "sys math image" ;;
         util) echo "sys math" ;;
-        check) echo "sys math geometry scene tracer stats util" ;;
+        check) echo "sys math geometry scene tracer stats" ;;
         cmd) echo "$LAYERS" ;;
     esac
 }

@@ -1,8 +1,8 @@
 /* main.c — pathlab's command line: the help text, and each command handed to its own file
- * (render_cmd.c, convert.c, diff.c, grade_cli.c, compare.c, bench_rays.c, check/command.c). */
+ * (render_cmd.c, convert.c, diff.c, grade_cli.c, compare.c, bench_rays.c, check_sampling.c). */
 #include <stdio.h>
 #include <string.h>
-#include "check/command.h"
+#include "cmd/check_sampling.h"
 #include "cmd/bench_rays.h"
 #include "cmd/compare.h"
 #include "cmd/convert.h"

@@ -1,6 +1,6 @@
-/* command.c — `pathlab check-sampling [--samples N] [--seed S] [--threads T] [--quiet]`: runs the
- * cases of cases.h and prints one row per sampling routine (command.h). */
-#include "check/command.h"
+/* check_sampling.c — `pathlab check-sampling [--samples N] [--seed S] [--threads T] [--quiet]`: runs the
+ * cases of check/cases.h and prints one row per sampling routine (check_sampling.h). */
+#include "cmd/check_sampling.h"
 #include "check/cases.h"
 #include "check/run.h"
 #include "check/verdict.h"
@@ -11,7 +11,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #define DEFAULT_SAMPLES 1000000   /* per case (the BRDF cases draw half): a few seconds on two cores */
 #define NAME_WIDTH 47
@@ -39,8 +38,7 @@ static int parse_options(options *o, int argc, char **argv)
         {NULL, CLI_SWITCH, NULL, 0, 0, NULL, NULL, NULL}};
     const cli_flag *const tables[] = {flags, NULL};
     o->seed = 1, o->quiet = 0;
-    o->threads = (int)sysconf(_SC_NPROCESSORS_ONLN);
-    if (o->threads < 1) o->threads = 1;
+    o->threads = parallel_default_threads();
     if (cli_parse("check-sampling", argc, argv, tables, NULL, NULL, 0, &nwords)) {
         fputs(USAGE_LINE, stderr);
         return 1;

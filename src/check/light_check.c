@@ -101,9 +101,9 @@ static int draw_light(const emitter_ctx *e, pcg32 *rng, sampling_result *r, ligh
         return -1;
     }
     t = s->ls.e[i].tri;
-    r->geom_gap = fmax(r->geom_gap, barycentrics(s, i, dv_of(out->p), &b1, &b2));
-    fn = l->pdf(&s->ls, l->st, i, l->p, out->p);
-    want = pdf_formula(&e[i], dv_of(out->p));
+    r->geom_gap = fmax(r->geom_gap, barycentrics(s, i, dv_of(out->pos), &b1, &b2));
+    fn = l->pdf(&s->ls, l->st, i, l->p, out->pos);
+    want = pdf_formula(&e[i], dv_of(out->pos));
     r->formula_gap = fmax(r->formula_gap, fabs(fn - want) / want);
     r->pdf_checked++;
     if (!(fabs(out->pdf_area - fn) <= PDF_TOL * out->pdf_area) || !v3_is_zero(v3_sub(out->n, s->Ng[t])) ||
@@ -223,7 +223,7 @@ void check_light_point(const light_routine *l, long n, uint64_t seed, sampling_r
     }
     for (j = 0; j < n; j++) {
         light_sample ps;
-        if ((i = draw_light(e, &rng, r, &ps)) >= 0) obs[i * g2 + cell_of(&e[i], ps.p, l->grid)] += 1.0;
+        if ((i = draw_light(e, &rng, r, &ps)) >= 0) obs[i * g2 + cell_of(&e[i], ps.pos, l->grid)] += 1.0;
     }
     r->n = n, r->chi2 = chi2_test(obs, expct, s.ls.n * g2);
     end(expct, s.ls.n * g2, n, r);

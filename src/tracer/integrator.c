@@ -3,14 +3,18 @@
  *   s          a point on a light, chosen with pdf1(s) (a `light_sample`);
  *   q          the next vertex: where the ray from p, in a direction wi chosen with pdf2, hits;
  *   wi_world   a direction in world coordinates; wi_local the same in p's frame (cos theta = z);
- *   _area _sa  a density per unit area, per steradian (solid angle): pdf1_area, pdf1_sa, pdf2_sa.
+ *   _area _sa  a density per unit area, per steradian (solid angle): pdf1_area (the light
+ *              sample's pdf_area), pdf1_sa, pdf2_sa; sc the scene, opt the estimator's options.
  * The slides' L2 estimator, with pdf(s, q) = pdf1(s) x pdf2(q) and both pdfs per unit area,
- *   Le(s) f(s, q, p) G(q, s) f(q, p, o) G(p, q) / (pdf1(s) pdf2(q)),
- * is computed one vertex at a time: the path throughput `beta` carries f G / pdf2(q) of the vertices
- * walked so far, and at each vertex light sampling adds beta x Le f G / pdf1(s). Directions are
- * sampled per steradian; per unit area at q the density is pdf2_area(q) = pdf2_sa cos(theta_q) / d^2,
- * so in f G(p, q) / pdf2_area(q) the cos(theta_q) / d^2 cancels: beta *= f cos(theta_p) / pdf2_sa.
- * Likewise pdf1_sa = pdf1_area d^2 / cos(theta_s): Le f G(p, s) / pdf1_area = Le f cos(theta_p) / pdf1_sa.
+ *   Le(s) f(s, q, p) G(q, s) f(q, p, o) G(p, q) / (pdf1(s) pdf2(q))     (o: the eye),
+ * is computed one vertex at a time, walking from the eye: the first vertex plays p and finds q
+ * with pdf2; then q becomes the current vertex, named p in turn, and samples s with pdf1. So the
+ * slides' "s seen from q" is the code's "s seen from p" one step later. The path throughput `beta`
+ * carries f G / pdf2(q) of the vertices walked so far, and at each vertex light sampling adds
+ * beta x Le f G / pdf1(s). Directions are sampled per steradian; per unit area at q the density is
+ * pdf2_area(q) = pdf2_sa cos(theta_q) / d^2, so in f G(p, q) / pdf2_area(q) the cos(theta_q) / d^2
+ * cancels: beta *= f cos(theta_p) / pdf2_sa. Likewise pdf1_sa = pdf1_area d^2 / cos(theta_s):
+ * Le f G(p, s) / pdf1_area = Le f cos(theta_p) / pdf1_sa.
  * MIS weighs the two ways of finding a light with both pdfs per steradian. */
 #include "tracer/integrator.h"
 #include "tracer/brdf.h"
@@ -50,14 +54,14 @@ static vec3 emitted(const scene *sc, const hit *h, vec3 dir)
     return v3_dot(sc->Ng[h->tri], dir) < 0.0f ? Ke : v3(0, 0, 0);
 }
 
-static int uses_light_sampling(direct_strategy d) { return d != DIRECT_BRDF; }
-static int uses_dir_sampling(direct_strategy d) { return d != DIRECT_LIGHT; }
+static int uses_light_sampling(direct_strategy strategy) { return strategy != DIRECT_BRDF; }
+static int uses_dir_sampling(direct_strategy strategy) { return strategy != DIRECT_LIGHT; }
 
 /* MIS weight of a strategy of density pdf_this against the other of density pdf_other (both per
  * steradian); 1 without MIS. */
-static float mis_weight(direct_strategy d, float pdf_this, float pdf_other)
+static float mis_weight(direct_strategy strategy, float pdf_this, float pdf_other)
 {
-    switch (d) {
+    switch (strategy) {
     case DIRECT_MIS_BALANCE: return balance_heuristic(pdf_this, pdf_other);
     case DIRECT_MIS_POWER: return power_heuristic(pdf_this, pdf_other);
     default: return 1.0f;
@@ -65,9 +69,9 @@ static float mis_weight(direct_strategy d, float pdf_this, float pdf_other)
 }
 
 /* pdf2 per steradian of the --dir strategy at p, for the direction wi_local. */
-static float dir_pdf2_sa(const integrator_opts *o, const vertex *p, vec3 wi_local)
+static float dir_pdf2_sa(const integrator_opts *opt, const vertex *p, vec3 wi_local)
 {
-    switch (o->dir) {
+    switch (opt->dir) {
     case DIR_UNIFORM: return pdf_uniform_hemisphere(wi_local);
     case DIR_COSINE: return pdf_cosine_hemisphere(wi_local);
     default: return brdf_pdf(p->mat, p->wo_local, wi_local);
@@ -76,11 +80,11 @@ static float dir_pdf2_sa(const integrator_opts *o, const vertex *p, vec3 wi_loca
 
 /* A direction wi_local at p chosen by the --dir strategy, its pdf2 per steradian in *pdf2_sa (0: the
  * BRDF lobe sent it below the surface). */
-static vec3 sample_dir(const integrator_opts *o, const vertex *p, pcg32 *rng, float *pdf2_sa)
+static vec3 sample_dir(const integrator_opts *opt, const vertex *p, pcg32 *rng, float *pdf2_sa)
 {
     float u0 = pcg32_float(rng), u1 = pcg32_float(rng), u2 = pcg32_float(rng);
     vec3 wi_local;
-    switch (o->dir) {
+    switch (opt->dir) {
     case DIR_UNIFORM: wi_local = sample_uniform_hemisphere(u1, u2); *pdf2_sa = pdf_uniform_hemisphere(wi_local); break;
     case DIR_COSINE: wi_local = sample_cosine_hemisphere(u1, u2); *pdf2_sa = pdf_cosine_hemisphere(wi_local); break;
     default: return brdf_sample(p->mat, p->wo_local, u0, u1, u2, pdf2_sa);
@@ -94,7 +98,7 @@ static int visible(const scene *sc, const vertex *p, const light_sample *s, trac
 {
     ray shadow;
     shadow.o = offset_ray_origin(p->pos, p->n, p->scale);
-    shadow.d = v3_sub(offset_ray_origin(s->p, s->n, scene_triangle_scale(sc, sc->lights.e[s->emitter].tri)), shadow.o);
+    shadow.d = v3_sub(offset_ray_origin(s->pos, s->n, scene_triangle_scale(sc, sc->lights.e[s->emitter].tri)), shadow.o);
     shadow.tmax = 1.0f;
     st->shadow_rays++;
     return !bvh_occluded(sc->accel, &shadow);
@@ -102,18 +106,18 @@ static int visible(const scene *sc, const vertex *p, const light_sample *s, trac
 
 /* L_k by light sampling at p: Le(s) f cos(theta_p) cos(theta_s) / d^2 / pdf1_area(s), which is
  * Le(s) f cos(theta_p) / pdf1_sa(s), MIS-weighted against direction sampling. */
-static vec3 direct_from_light(const scene *sc, const integrator_opts *o, const vertex *p, pcg32 *rng, trace_stats *st)
+static vec3 direct_from_light(const scene *sc, const integrator_opts *opt, const vertex *p, pcg32 *rng, trace_stats *st)
 {
     light_sample s;
-    vec3 d, wi_world, wi_local, f;
+    vec3 to_s, wi_world, wi_local, f;
     float dist2, dist, cos_p, cos_s, pdf1_sa, w_mis;
     double u0 = pcg32_double(rng);
     float u1 = pcg32_float(rng), u2 = pcg32_float(rng);
-    light_sample_point(&sc->lights, o->light, p->pos, u0, u1, u2, &s);
-    d = v3_sub(s.p, p->pos);
-    dist2 = v3_dot(d, d);
+    light_sample_point(&sc->lights, opt->light, p->pos, u0, u1, u2, &s);
+    to_s = v3_sub(s.pos, p->pos);
+    dist2 = v3_dot(to_s, to_s);
     dist = sqrtf(dist2);
-    wi_world = v3_scale(d, 1.0f / dist);
+    wi_world = v3_scale(to_s, 1.0f / dist);
     cos_p = v3_dot(p->n, wi_world);
     cos_s = -v3_dot(s.n, wi_world);
     if (cos_p <= 0.0f || cos_s <= 0.0f || !(dist2 > 0.0f)) return v3(0, 0, 0);   /* no shadow ray: no light */
@@ -121,30 +125,30 @@ static vec3 direct_from_light(const scene *sc, const integrator_opts *o, const v
     f = brdf_eval(p->mat, p->wo_local, wi_local);
     if (v3_is_zero(f) || !visible(sc, p, &s, st)) return v3(0, 0, 0);
     pdf1_sa = pdf_area_to_solid_angle(s.pdf_area, dist2, cos_s);
-    w_mis = mis_weight(o->direct, pdf1_sa, dir_pdf2_sa(o, p, wi_local));
+    w_mis = mis_weight(opt->direct, pdf1_sa, dir_pdf2_sa(opt, p, wi_local));
     return v3_scale(v3_mul(f, s.Le), cos_p / pdf1_sa * w_mis);
 }
 
 /* pdf1 per steradian with which light sampling at p would have chosen the point hit at q. */
-static float light_pdf1_sa(const scene *sc, const integrator_opts *o, const vertex *p, const hit *q, const ray *ray_pq)
+static float light_pdf1_sa(const scene *sc, const integrator_opts *opt, const vertex *p, const hit *q, const ray *ray_pq)
 {
     int i = sc->lights.emitter_of_tri[q->tri];
     float dist2 = q->t * q->t * v3_dot(ray_pq->d, ray_pq->d);
     float cos_s = -v3_dot(sc->Ng[q->tri], ray_pq->d) / v3_length(ray_pq->d);
     assert(i >= 0);   /* q emits light, so its triangle is one of the emitters */
-    return pdf_area_to_solid_angle(light_pdf_area(&sc->lights, o->light, i, p->pos, scene_hit_point(sc, q)), dist2, cos_s);
+    return pdf_area_to_solid_angle(light_pdf_area(&sc->lights, opt->light, i, p->pos, scene_hit_point(sc, q)), dist2, cos_s);
 }
 
 /* L_k by direction sampling: the ray from p, of density pdf2_sa, hit q; Le(q) if q emits toward p,
  * MIS-weighted against light sampling. */
-static vec3 direct_from_dir(const scene *sc, const integrator_opts *o, const vertex *p, const hit *q, const ray *ray_pq, float pdf2_sa)
+static vec3 direct_from_dir(const scene *sc, const integrator_opts *opt, const vertex *p, const hit *q, const ray *ray_pq, float pdf2_sa)
 {
     vec3 Le = emitted(sc, q, ray_pq->d);
     float w_mis = 1.0f;
     if (v3_is_zero(Le)) return Le;
-    if (uses_light_sampling(o->direct)) {
-        float pdf1_sa = light_pdf1_sa(sc, o, p, q, ray_pq);
-        w_mis = mis_weight(o->direct, pdf2_sa, pdf1_sa);
+    if (uses_light_sampling(opt->direct)) {
+        float pdf1_sa = light_pdf1_sa(sc, opt, p, q, ray_pq);
+        w_mis = mis_weight(opt->direct, pdf2_sa, pdf1_sa);
     }
     return v3_scale(Le, w_mis);
 }
@@ -180,15 +184,15 @@ typedef struct {
     int bmin, bmax;
 } radiance_sum;
 
-static radiance_sum radiance_start(const integrator_opts *o, vec3 *Lk)
+static radiance_sum radiance_start(const integrator_opts *opt, vec3 *Lk)
 {
     radiance_sum sum;
     int k;
-    assert(0 <= o->bmin && o->bmin <= o->bmax);
+    assert(0 <= opt->bmin && opt->bmin <= opt->bmax);
     sum.L = v3(0, 0, 0);
     sum.Lk = Lk;
-    sum.bmin = o->bmin, sum.bmax = o->bmax;
-    for (k = 0; Lk && k <= o->bmax; k++) Lk[k] = v3(0, 0, 0);
+    sum.bmin = opt->bmin, sum.bmax = opt->bmax;
+    for (k = 0; Lk && k <= opt->bmax; k++) Lk[k] = v3(0, 0, 0);
     return sum;
 }
 
@@ -201,9 +205,9 @@ static void add_Lk(radiance_sum *sum, int k, vec3 c)
     if (sum->Lk) sum->Lk[k] = v3_add(sum->Lk[k], c);
 }
 
-vec3 integrate(const scene *sc, const integrator_opts *o, const ray *camera, pcg32 *rng, vec3 *Lk, trace_stats *st)
+vec3 integrate(const scene *sc, const integrator_opts *opt, const ray *camera, pcg32 *rng, vec3 *Lk, trace_stats *st)
 {
-    radiance_sum sum = radiance_start(o, Lk);
+    radiance_sum sum = radiance_start(opt, Lk);
     ray ray_pq = *camera;     /* from p (first the eye) toward the next vertex q */
     hit q;
     vec3 beta = v3(1, 1, 1);  /* the path throughput: the product of f G / pdf2(q) over the vertices before p */
@@ -211,23 +215,23 @@ vec3 integrate(const scene *sc, const integrator_opts *o, const ray *camera, pcg
 
     st->camera_rays++;
     if (!bvh_intersect(sc->accel, &ray_pq, &q)) return sum.L;
-    if (o->bmin == 0) add_Lk(&sum, 0, emitted(sc, &q, ray_pq.d));                    /* L0 */
+    if (opt->bmin == 0) add_Lk(&sum, 0, emitted(sc, &q, ray_pq.d));                    /* L0 */
 
-    for (k = 1; k <= o->bmax; k++) {
+    for (k = 1; k <= opt->bmax; k++) {
         vertex p = make_vertex(sc, &q, ray_pq.d);     /* the last q is the new p */
         vec3 wi_local, f;
         float pdf2_sa, cos_p;
-        int adds_Lk = k >= o->bmin && has_lights;
+        int adds_Lk = k >= opt->bmin && has_lights;
 
         /* L_k by light sampling: a point s on a light, with pdf1(s) */
-        if (adds_Lk && uses_light_sampling(o->direct))
-            add_Lk(&sum, k, v3_mul(beta, direct_from_light(sc, o, &p, rng, st)));
+        if (adds_Lk && uses_light_sampling(opt->direct))
+            add_Lk(&sum, k, v3_mul(beta, direct_from_light(sc, opt, &p, rng, st)));
 
         /* the last bounce needs a continuation ray only to find emitters by direction sampling */
-        if (k == o->bmax && !uses_dir_sampling(o->direct)) break;
+        if (k == opt->bmax && !uses_dir_sampling(opt->direct)) break;
 
         /* the next vertex q, in a direction chosen with pdf2: beta *= f G(p, q) / pdf2_area(q) */
-        wi_local = sample_dir(o, &p, rng, &pdf2_sa);
+        wi_local = sample_dir(opt, &p, rng, &pdf2_sa);
         if (!(pdf2_sa > 0.0f)) break;
         f = brdf_eval(p.mat, p.wo_local, wi_local);
         cos_p = wi_local.z;
@@ -238,11 +242,11 @@ vec3 integrate(const scene *sc, const integrator_opts *o, const ray *camera, pcg
         if (!bvh_intersect(sc->accel, &ray_pq, &q)) break;
 
         /* L_k by direction sampling: q is on a light */
-        if (adds_Lk && uses_dir_sampling(o->direct))
-            add_Lk(&sum, k, v3_mul(beta, direct_from_dir(sc, o, &p, &q, &ray_pq, pdf2_sa)));
+        if (adds_Lk && uses_dir_sampling(opt->direct))
+            add_Lk(&sum, k, v3_mul(beta, direct_from_dir(sc, opt, &p, &q, &ray_pq, pdf2_sa)));
 
         /* "et on arrête quand ?" */
-        if (o->rr_depth >= 0 && k >= o->rr_depth && k < o->bmax && !survives_roulette(&beta, rng)) break;
+        if (opt->rr_depth >= 0 && k >= opt->rr_depth && k < opt->bmax && !survives_roulette(&beta, rng)) break;
     }
     return sum.L;
 }

@@ -9,42 +9,42 @@
 const char *const LIGHT_STRATEGY_NAMES[] = {"area", "triangle", "power", "solid-angle", 0};
 
 /* Weight of emitter i in the discrete choice of each strategy (before normalisation). */
-static float choice_weight(const emitter *e, light_strategy st)
+static float choice_weight(const emitter *e, light_strategy strategy)
 {
-    switch (st) {
+    switch (strategy) {
     case LIGHT_AREA: return e->area;
     case LIGHT_TRIANGLE: return 1.0f;
     default: return e->area * fmaxf(luminance(e->Le), 0.0f);
     }
 }
 
-static int build_cdf(light_set *ls, light_strategy st)
+static int build_cdf(light_set *ls, light_strategy strategy)
 {
     double sum = 0.0, acc = 0.0;
     int i;
-    ls->cdf[st] = malloc(sizeof(double) * (size_t)ls->n);
-    if (!ls->cdf[st]) return 1;
-    for (i = 0; i < ls->n; i++) sum += choice_weight(&ls->e[i], st);
+    ls->cdf[strategy] = malloc(sizeof(double) * (size_t)ls->n);
+    if (!ls->cdf[strategy]) return 1;
+    for (i = 0; i < ls->n; i++) sum += choice_weight(&ls->e[i], strategy);
     for (i = 0; i < ls->n; i++) {
-        acc += choice_weight(&ls->e[i], st);
-        ls->cdf[st][i] = sum > 0.0 ? acc / sum : (double)(i + 1) / ls->n;
+        acc += choice_weight(&ls->e[i], strategy);
+        ls->cdf[strategy][i] = sum > 0.0 ? acc / sum : (double)(i + 1) / ls->n;
     }
-    ls->cdf[st][ls->n - 1] = 1.0;
+    ls->cdf[strategy][ls->n - 1] = 1.0;
     return 0;
 }
 
 /* solid-angle chooses its triangle as power does */
-static light_strategy choice_of(light_strategy st) { return st == LIGHT_SOLID_ANGLE ? LIGHT_POWER : st; }
+static light_strategy choice_of(light_strategy strategy) { return strategy == LIGHT_SOLID_ANGLE ? LIGHT_POWER : strategy; }
 
 int light_build(light_set *ls, const mesh *m, const vec3 *Ng, const float *area)
 {
     double total_area = 0.0;   /* a float sum of 1e5 small areas drifts by 1e-4 or more */
-    int i, st;
+    int i, strategy;
     ls->n = 0;
     ls->total_area = 0.0f;
     ls->e = malloc(sizeof(emitter) * (size_t)(m->ntris > 0 ? m->ntris : 1));
     ls->emitter_of_tri = malloc(sizeof(int) * (size_t)(m->ntris > 0 ? m->ntris : 1));
-    for (st = 0; st < LIGHT_NSTRATEGIES; st++) ls->cdf[st] = NULL;
+    for (strategy = 0; strategy < LIGHT_NSTRATEGIES; strategy++) ls->cdf[strategy] = NULL;
     if (!ls->e || !ls->emitter_of_tri) return 1;
     for (i = 0; i < m->ntris; i++) {
         vec3 Ke = m->mats[m->tri_mat[i]].Ke;
@@ -64,17 +64,17 @@ int light_build(light_set *ls, const mesh *m, const vec3 *Ng, const float *area)
     }
     ls->total_area = (float)total_area;
     if (ls->n == 0) return 0;
-    for (st = 0; st <= LIGHT_POWER; st++)
-        if (build_cdf(ls, (light_strategy)st)) return 1;
+    for (strategy = 0; strategy <= LIGHT_POWER; strategy++)
+        if (build_cdf(ls, (light_strategy)strategy)) return 1;
     return 0;
 }
 
 void light_free(light_set *ls)
 {
-    int st;
+    int strategy;
     free(ls->e);
     free(ls->emitter_of_tri);
-    for (st = 0; st < LIGHT_NSTRATEGIES; st++) free(ls->cdf[st]);
+    for (strategy = 0; strategy < LIGHT_NSTRATEGIES; strategy++) free(ls->cdf[strategy]);
 }
 
 /* Smallest i with u < cdf[i]: binary search. */
@@ -89,9 +89,9 @@ static int pick(const double *cdf, int n, double u)
 }
 
 /* The probability of choosing emitter i (before the point on it). */
-static float choice_prob(const light_set *ls, light_strategy st, int i)
+static float choice_prob(const light_set *ls, light_strategy strategy, int i)
 {
-    const double *cdf = ls->cdf[choice_of(st)];
+    const double *cdf = ls->cdf[choice_of(strategy)];
     assert(0 <= i && i < ls->n);
     return (float)(cdf[i] - (i > 0 ? cdf[i - 1] : 0.0));
 }
@@ -144,46 +144,46 @@ static vec3 sample_spherical_triangle(const spherical_triangle *t, float u1, flo
     return v3((float)w.x, (float)w.y, (float)w.z);
 }
 
-float light_pdf_area(const light_set *ls, light_strategy st, int i, vec3 p, vec3 s)
+float light_pdf_area(const light_set *ls, light_strategy strategy, int i, vec3 p, vec3 s)
 {
     const emitter *e = &ls->e[i];
     /* the area strategy is exactly 1/A; computing it from the cdf would add rounding */
-    if (st == LIGHT_AREA) return 1.0f / ls->total_area;
-    if (st == LIGHT_SOLID_ANGLE) {
+    if (strategy == LIGHT_AREA) return 1.0f / ls->total_area;
+    if (strategy == LIGHT_SOLID_ANGLE) {
         spherical_triangle t = spherical_triangle_from(e, p);
         if (solid_angle_usable(&t)) {
             vec3 d = v3_sub(s, p);
             float dist2 = v3_dot(d, d), cos_s = fabsf(v3_dot(e->n, d)) / sqrtf(dist2);
-            float pdf_sa = choice_prob(ls, st, i) / (float)t.omega;   /* uniform over Omega */
+            float pdf_sa = choice_prob(ls, strategy, i) / (float)t.omega;   /* uniform over Omega */
             return pdf_solid_angle_to_area(pdf_sa, dist2, cos_s);
         }
     }
-    return choice_prob(ls, st, i) / e->area;
+    return choice_prob(ls, strategy, i) / e->area;
 }
 
-void light_sample_point(const light_set *ls, light_strategy st, vec3 p, double u0, float u1, float u2, light_sample *out)
+void light_sample_point(const light_set *ls, light_strategy strategy, vec3 p, double u0, float u1, float u2, light_sample *out)
 {
     int i;
     const emitter *e;
     float b1, b2;
     assert(ls->n > 0);   /* callers sample lights only in a scene that has some */
-    i = pick(ls->cdf[choice_of(st)], ls->n, u0);
+    i = pick(ls->cdf[choice_of(strategy)], ls->n, u0);
     e = &ls->e[i];
     out->n = e->n;
     out->Le = e->Le;
     out->emitter = i;
-    if (st == LIGHT_SOLID_ANGLE) {
+    if (strategy == LIGHT_SOLID_ANGLE) {
         spherical_triangle t = spherical_triangle_from(e, p);
         if (solid_angle_usable(&t)) {
             /* the point of the triangle's plane in the sampled direction */
             vec3 w = sample_spherical_triangle(&t, u1, u2);
             float dist = v3_dot(v3_sub(e->a, p), e->n) / v3_dot(w, e->n);
-            out->p = v3_madd(p, w, dist);
-            out->pdf_area = light_pdf_area(ls, st, i, p, out->p);
+            out->pos = v3_madd(p, w, dist);
+            out->pdf_area = light_pdf_area(ls, strategy, i, p, out->pos);
             return;
         }
     }
     sample_uniform_triangle(u1, u2, &b1, &b2);
-    out->p = v3_add(e->a, v3_add(v3_scale(e->e1, b1), v3_scale(e->e2, b2)));
-    out->pdf_area = light_pdf_area(ls, st, i, p, out->p);
+    out->pos = v3_add(e->a, v3_add(v3_scale(e->e1, b1), v3_scale(e->e2, b2)));
+    out->pdf_area = light_pdf_area(ls, strategy, i, p, out->pos);
 }

@@ -34,7 +34,7 @@ typedef struct {
 } light_set;
 
 typedef struct {
-    vec3 p, n, Le;      /* point on the emitter, its front normal, emitted radiance toward n's side */
+    vec3 pos, n, Le;    /* s, the point on the emitter, its front normal, emitted radiance toward n's side */
     float pdf_area;     /* pdf1(s) per unit area */
     int emitter;
 } light_sample;
@@ -44,9 +44,9 @@ int light_build(light_set *ls, const mesh *m, const vec3 *Ng, const float *area)
 void light_free(light_set *ls);
 /* Samples s seen from the shading point p: u0 (32 random bits, see pcg32_double) chooses the
  * emitter, u1, u2 the point on it. */
-void light_sample_point(const light_set *ls, light_strategy st, vec3 p, double u0, float u1, float u2, light_sample *out);
-/* pdf1(s) per unit area of the point s on emitter i, chosen from p under strategy st. */
-float light_pdf_area(const light_set *ls, light_strategy st, int i, vec3 p, vec3 s);
+void light_sample_point(const light_set *ls, light_strategy strategy, vec3 p, double u0, float u1, float u2, light_sample *out);
+/* pdf1(s) per unit area of the point s on emitter i, chosen from p under that strategy. */
+float light_pdf_area(const light_set *ls, light_strategy strategy, int i, vec3 p, vec3 s);
 /* A density per unit area at a point seen at squared distance dist2 under cosine cos_s, made one
  * per steradian (0 when the point is seen edge-on or from behind). */
 static inline float pdf_area_to_solid_angle(float pdf_area, float dist2, float cos_s)

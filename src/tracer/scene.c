@@ -6,64 +6,64 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int triangle_geometry(scene *s)
+static int triangle_geometry(scene *sc)
 {
-    const mesh *m = &s->m;
+    const mesh *m = &sc->m;
     int i;
-    s->Ng = malloc(sizeof(vec3) * (size_t)m->ntris);
-    s->area = malloc(sizeof(float) * (size_t)m->ntris);
-    if (!s->Ng || !s->area) return 1;
+    sc->Ng = malloc(sizeof(vec3) * (size_t)m->ntris);
+    sc->area = malloc(sizeof(float) * (size_t)m->ntris);
+    if (!sc->Ng || !sc->area) return 1;
     for (i = 0; i < m->ntris; i++) {
         const int *t = m->tri + 3 * i;
         vec3 c = v3_cross(v3_sub(m->P[t[1]], m->P[t[0]]), v3_sub(m->P[t[2]], m->P[t[0]]));
         float len = v3_length(c);
-        s->area[i] = 0.5f * len;
-        s->Ng[i] = v3_scale(c, 1.0f / len);   /* the parser dropped zero-area triangles */
+        sc->area[i] = 0.5f * len;
+        sc->Ng[i] = v3_scale(c, 1.0f / len);   /* the parser dropped zero-area triangles */
     }
     return 0;
 }
 
-int scene_load(scene *s, const char *path, int threads, int quiet)
+int scene_load(scene *sc, const char *path, int threads, int quiet)
 {
     double t0;
-    memset(s, 0, sizeof *s);   /* so that scene_free is safe wherever loading stops */
+    memset(sc, 0, sizeof *sc);   /* so that scene_free is safe wherever loading stops */
     t0 = clock_seconds();
-    if (obj_load(path, &s->m, quiet)) return 1;
-    s->load_seconds = clock_seconds() - t0;
-    if (triangle_geometry(s) || light_build(&s->lights, &s->m, s->Ng, s->area)) {
+    if (obj_load(path, &sc->m, quiet)) return 1;
+    sc->load_seconds = clock_seconds() - t0;
+    if (triangle_geometry(sc) || light_build(&sc->lights, &sc->m, sc->Ng, sc->area)) {
         fprintf(stderr, "%s: out of memory\n", path);
-        scene_free(s);
+        scene_free(sc);
         return 1;
     }
     t0 = clock_seconds();
-    s->accel = bvh_build(s->m.P, s->m.tri, s->m.ntris, threads);
-    s->bvh_seconds = clock_seconds() - t0;
-    if (!s->accel) {
+    sc->accel = bvh_build(sc->m.P, sc->m.tri, sc->m.ntris, threads);
+    sc->bvh_seconds = clock_seconds() - t0;
+    if (!sc->accel) {
         fprintf(stderr, "%s: out of memory building the BVH\n", path);
-        scene_free(s);
+        scene_free(sc);
         return 1;
     }
     return 0;
 }
 
-void scene_free(scene *s)
+void scene_free(scene *sc)
 {
-    bvh_free(s->accel);
-    light_free(&s->lights);
-    free(s->Ng);
-    free(s->area);
-    mesh_free(&s->m);
+    bvh_free(sc->accel);
+    light_free(&sc->lights);
+    free(sc->Ng);
+    free(sc->area);
+    mesh_free(&sc->m);
 }
 
-vec3 scene_hit_point(const scene *s, const hit *h)
+vec3 scene_hit_point(const scene *sc, const hit *h)
 {
-    const int *t = s->m.tri + 3 * h->tri;
-    vec3 a = s->m.P[t[0]], b = s->m.P[t[1]], c = s->m.P[t[2]];
+    const int *t = sc->m.tri + 3 * h->tri;
+    vec3 a = sc->m.P[t[0]], b = sc->m.P[t[1]], c = sc->m.P[t[2]];
     return v3_add(a, v3_add(v3_scale(v3_sub(b, a), h->u), v3_scale(v3_sub(c, a), h->v)));
 }
 
-float scene_triangle_scale(const scene *s, int tri)
+float scene_triangle_scale(const scene *sc, int tri)
 {
-    const int *t = s->m.tri + 3 * tri;
-    return triangle_scale(s->m.P[t[0]], s->m.P[t[1]], s->m.P[t[2]]);
+    const int *t = sc->m.tri + 3 * tri;
+    return triangle_scale(sc->m.P[t[0]], sc->m.P[t[1]], sc->m.P[t[2]]);
 }

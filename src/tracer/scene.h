@@ -18,10 +18,10 @@ typedef struct {
 
 /* Loads the OBJ at path and builds everything with up to `threads` threads; 0 on success
  * (errors are printed as file:line: message). */
-int scene_load(scene *s, const char *path, int threads, int quiet);
-void scene_free(scene *s);
+int scene_load(scene *sc, const char *path, int threads, int quiet);
+void scene_free(scene *sc);
 /* Hit point on triangle h->tri from its barycentrics. */
-vec3 scene_hit_point(const scene *s, const hit *h);
+vec3 scene_hit_point(const scene *sc, const hit *h);
 /* The largest |coordinate| of triangle tri's corners: the scale of its rounding errors. */
-float scene_triangle_scale(const scene *s, int tri);
+float scene_triangle_scale(const scene *sc, int tri);
 #endif

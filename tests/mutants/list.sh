@@ -26,17 +26,17 @@ mutant area-pdf src/tracer/integrator.c \
     's/pdf1_sa = pdf_area_to_solid_angle(s\.pdf_area, dist2, cos_s);/pdf1_sa = s.pdf_area;/' \
     test_direct PATHLAB_FAST=1 'divided by the area pdf 1/A instead of the solid-angle pdf (no d^2/cos)'
 mutant light-choice src/tracer/light.c \
-    's/return choice_prob(ls, st, i) \/ e->area;/return 1.0f \/ e->area;/' \
+    's/return choice_prob(ls, strategy, i) \/ e->area;/return 1.0f \/ e->area;/' \
     test_direct PATHLAB_FAST=1 'picked a light triangle with probability P_i but never divided by P_i'
 # ---- emission and MIS ----
 mutant emission-twice src/tracer/integrator.c \
-    's/w_mis = mis_weight(o->direct, pdf2_sa, pdf1_sa);/w_mis = 1.0f;/' \
+    's/w_mis = mis_weight(opt->direct, pdf2_sa, pdf1_sa);/w_mis = 1.0f;/' \
     test_direct PATHLAB_FAST=1 'light found by light sampling AND by the BRDF ray, no MIS weight: counted twice'
 mutant le-every-vertex src/tracer/integrator.c \
     's/if (!bvh_intersect(sc->accel, &ray_pq, &q)) break;/&\n        add_Lk(\&sum, k, v3_mul(beta, emitted(sc, \&q, ray_pq.d)));/' \
     test_direct PATHLAB_FAST=1 'added Le at every hit on top of next-event estimation'
 mutant mis-swapped src/tracer/integrator.c \
-    's/w_mis = mis_weight(o->direct, pdf2_sa, pdf1_sa);/w_mis = mis_weight(o->direct, pdf1_sa, pdf2_sa);/' \
+    's/w_mis = mis_weight(opt->direct, pdf2_sa, pdf1_sa);/w_mis = mis_weight(opt->direct, pdf1_sa, pdf2_sa);/' \
     test_direct PATHLAB_FAST=1 'MIS weights that do not sum to 1 (the pdfs swapped on the BRDF side)'
 mutant two-sided-emission src/tracer/integrator.c \
     's/return v3_dot(sc->Ng\[h->tri\], dir) < 0\.0f ? Ke : v3(0, 0, 0);/(void)dir; return Ke;/' \

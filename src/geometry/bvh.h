@@ -19,6 +19,6 @@ int bvh_occluded(const bvh *b, const ray *r);
 /* The bvh's ray-triangle test on one triangle (a, b, c), for reference and tests: returns 1 and
  * fills h->t, h->u, h->v (not h->tri) when the ray hits it with t in (0, r->tmax). */
 int bvh_triangle_hit(vec3 a, vec3 b, vec3 c, const ray *r, hit *h);
-/* Node and leaf counts, for stats. */
+/* Node and leaf counts and depth, for the tests (test_bvh). */
 void bvh_stats(const bvh *b, int *nodes, int *leaves, int *depth);
 #endif

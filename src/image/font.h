@@ -13,10 +13,11 @@
 /* 1 if pixel (x, y) of the glyph of c is ink (0 <= x < FONT_W, 0 <= y < FONT_H, y = 0 the top);
  * characters outside 32..126 are drawn as '?'. */
 int font_pixel(int c, int x, int y);
-/* 0 if every row of the glyph table is FONT_W characters of '.' and '#', else the first bad
- * character's code (a typo in the table would otherwise show as a blank row). */
+/* For the tests (test_font): 0 if every row of the glyph table is FONT_W characters of '.' and
+ * '#', else the first bad character's code (a typo in the table would otherwise show as a blank
+ * row). */
 int font_table_check(void);
-/* Width in pixels of a line of text at integer scale s (no trailing gap). */
+/* Width in pixels of a line of text at integer scale s (no trailing gap); for the tests. */
 int font_text_width(const char *text, int s);
 /* Draws one line of text into im with its top-left corner at (x, y), each font pixel an s x s
  * square of colour rgb; whatever falls outside the image is clipped. */

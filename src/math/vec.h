@@ -1,5 +1,7 @@
-/* vec.h — 3-vectors of floats, the only geometry type of pathlab.
- * Everything is static inline so that hot paths (traversal, sampling) stay call-free. */
+/* vec.h — 3-vectors of floats (the renderer's geometry; math/dvec.h has the double ones), the
+ * orthonormal frame about a normal (local coordinates where cos theta = z), PI, and the Rec. 709
+ * luminance of a colour. Everything is static inline so that hot paths (traversal, sampling) stay
+ * call-free. */
 #ifndef PATHLAB_VEC_H
 #define PATHLAB_VEC_H
 #include <math.h>

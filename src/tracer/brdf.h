@@ -5,6 +5,7 @@
 #define PATHLAB_BRDF_H
 #include "scene/mesh.h"
 
+/* f(wo, wi) per channel, per steradian. */
 vec3 brdf_eval(const material *m, vec3 wo, vec3 wi);
 
 /* Probability of choosing the glossy lobe when sampling the BRDF: mean(Ks) / (mean(Kd) + mean(Ks)). */

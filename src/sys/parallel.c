@@ -16,13 +16,14 @@ typedef struct { loop *l; int thread; } worker_arg;
 static void run_chunks(loop *l, int thread)
 {
     for (;;) {
-        int begin;
+        int begin, end;
         pthread_mutex_lock(&l->lock);
         begin = l->next;
-        if (begin < l->n) l->next += l->n - begin < l->grain ? l->n - begin : l->grain;
+        end = l->n - begin < l->grain ? l->n : begin + l->grain;
+        l->next = end;
         pthread_mutex_unlock(&l->lock);
-        if (begin >= l->n) return;
-        l->body(l->ctx, thread, begin, begin + (l->n - begin < l->grain ? l->n - begin : l->grain));
+        if (begin >= end) return;
+        l->body(l->ctx, thread, begin, end);
     }
 }
 
@@ -61,8 +62,8 @@ int parallel_threads(int requested)
 
 int parallel_default_threads(void)
 {
-    long n = sysconf(_SC_NPROCESSORS_ONLN);
-    return parallel_threads(n > 0 && n < PARALLEL_MAX_THREADS ? (int)n : n > 0 ? PARALLEL_MAX_THREADS : 1);
+    long n = sysconf(_SC_NPROCESSORS_ONLN);   /* -1 if unknown: parallel_threads makes it 1 */
+    return parallel_threads(n > PARALLEL_MAX_THREADS ? PARALLEL_MAX_THREADS : (int)n);
 }
 
 int parallel_even_grain(int n, int threads)

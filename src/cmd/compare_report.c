@@ -2,6 +2,7 @@
 #include "cmd/compare_report.h"
 #include <errno.h>
 #include <string.h>
+#include "util/textfile.h"
 
 /* The best efficiency, to which each row's is compared. */
 static double best_eff(const compare_row *rows, int n)
@@ -70,41 +71,20 @@ static void print_csv(FILE *f, const compare_row *rows, int n)
     }
 }
 
-/* path.tmp, to be renamed over path by close_atomic; NULL after printing why. */
-static FILE *open_atomic(const char *path, char *tmp, size_t cap)
-{
-    FILE *f;
-    snprintf(tmp, cap, "%s.tmp", path);
-    if (!(f = fopen(tmp, "w"))) fprintf(stderr, "%s: %s\n", tmp, strerror(errno));
-    return f;
-}
-
-static int close_atomic(FILE *f, const char *tmp, const char *path)
-{
-    int err = ferror(f);
-    err |= fclose(f) != 0;
-    if (err || rename(tmp, path)) {
-        fprintf(stderr, "%s: could not write\n", path);
-        remove(tmp);
-        return 1;
-    }
-    return 0;
-}
-
 int compare_write_md(const char *path, const compare_row *rows, int n, const char *notes)
 {
     char tmp[4200];
-    FILE *f = open_atomic(path, tmp, sizeof tmp);
+    FILE *f = textfile_open(path, tmp, sizeof tmp);
     if (!f) return 1;
     print_md(f, rows, n, notes);
-    return close_atomic(f, tmp, path);
+    return textfile_close(f, tmp, path);
 }
 
 int compare_write_csv(const char *path, const compare_row *rows, int n)
 {
     char tmp[4200];
-    FILE *f = open_atomic(path, tmp, sizeof tmp);
+    FILE *f = textfile_open(path, tmp, sizeof tmp);
     if (!f) return 1;
     print_csv(f, rows, n);
-    return close_atomic(f, tmp, path);
+    return textfile_close(f, tmp, path);
 }

@@ -9,12 +9,23 @@
  * picture (edges, shading), so what scatters is the noise of both renders. Averaging m pixels
  * divides the noise by sqrt(m) but leaves a bias as it is: that is what tells them apart.
  *
- * The image is cut into B x B blocks (B = max(8, min(w, h) / 16) unless --block; the last row and
- * column of blocks take the leftover pixels). Per block and channel: the mean d, the mean ref, the
- * sample variance s^2 of d. Then two tests, each per channel (R, G, B):
- *   blocks: t = mean d / sqrt(s'^2 / m), against Student's t with m - 1 degrees of freedom. Finds a
- *     bias confined to a region and says where. s'^2 is the larger of the block's own s^2 and s^2
- *     pooled over the 3 x 3 blocks around it (sum (m-1) s^2 / sum (m-1)); see "heavy tails".
+ * Exact pixels. Where the reference has no noise at all (its variance, REF_var.pfm, is 0: the
+ * background, an emitter without reflectance), every unbiased renderer gives the same value: those
+ * pixels are compared as numbers, |d| <= 1e-4 |ref| + 1e-6 x the reference's mean, and left out of
+ * the groups below. Without the variance, a pixel equal bit for bit to two of its four neighbours
+ * in the reference is taken as exact (flat regions; a noisy pixel never is).
+ *
+ * The noisy pixels form two families of groups, each tested per channel (R, G, B) with Student's
+ * t = mean d / sqrt(s'^2 / m), m - 1 degrees of freedom:
+ *   blocks: B x B pixels (B = max(8, min(w, h) / 16) unless --block; the last row and column of
+ *     blocks take the leftover pixels). Finds a bias confined to a region and says where. s'^2 is
+ *     the larger of the block's own s^2 and s^2 pooled over the 3 x 3 blocks around it (sum (m-1) s^2
+ *     / sum (m-1)); see "heavy tails".
+ *   levels: the pixels whose reference luminance lies in one octave [2^k, 2^(k+1)), wherever they
+ *     are. A bias that follows the picture (the lamp seen directly missing, highlights clamped)
+ *     is the same for every pixel of a level, so the level's scatter stays the noise's; in a block
+ *     that mixes the lamp and the ceiling it would be counted as noise, and a lamp of 20 pixels in
+ *     a 64x64 image would go unseen.
  *   whole image: d = eps * ref fitted to the block means by weighted least squares,
  *     eps = sum w mean_d / sum w mean_ref,  w = mean_ref / (noise of the block mean),
  *     var(eps) = sum w^2 noise / (sum w mean_ref)^2,  z = eps / sd(eps), normal (many blocks).
@@ -22,21 +33,20 @@
  *     measures it; a plain mean of d would weigh noisy pixels as much as clean ones, and finds a 2%
  *     bias at 64 spp on 64 x 64 pixels with z ~ 3 instead of ~ 9. The weight's noise comes from
  *     the neighbours only (s^2 pooled over the 3 x 3 blocks without the block itself), so that
- *     weight and mean d of a block are independent and E[z] = 0 without bias. Blocks whose
- *     neighbours are exact (no noise) get no weight: the block test judges them.
- * alpha (default 0.01) is split in two: alpha/2 for the 3 whole-image tests, alpha/2 for the
- * 3 x nblocks block tests, each family with Sidak's correction (per-test level
- * 1 - (1 - alpha/2)^(1/k)): an unbiased image fails with probability at most alpha.
- * Float rounding (a few ulps of the values, as in imgstat.c) is added to every standard error,
- * so that identical deterministic pixels (emitters seen directly) count as equal.
+ *     weight and mean d of a block are independent and E[z] = 0 without bias.
+ * alpha (default 0.01) is split in three: alpha/3 for the 3 whole-image tests, alpha/3 for the
+ * 3 x nblocks block tests, alpha/3 for the 3 x nlevels level tests, each family with Sidak's
+ * correction (per-test level 1 - (1 - alpha/3)^(1/k)): an unbiased image fails with probability at
+ * most alpha (the exact pixels, compared as numbers, never fail it). Float rounding (a few ulps of
+ * the values) is added to every standard error.
  *
  * Heavy tails. At 4 spp a few pixels hold rare large samples (paths that found the light after a
  * long walk): d is skewed. A block that drew none of them has a mean d below 0 and, with its own
  * s alone, looks precise: on 64 x 64 Cornell boxes at 4 spp, 3 of 20 unbiased renders failed that
  * way (a block "darker" with |t| up to 5.8). With s' >= s pooled over the neighbourhood, which
  * did draw large samples, the largest block |t| of 20 renders was 2.97 (limit 4.54). A block
- * that drew one keeps its own, larger, s: t stays small (self-normalised). Measured false alarms
- * and power are in tests/test_grade.sh.
+ * that drew one keeps its own, larger, s: t stays small (self-normalised). Levels hold hundreds
+ * of pixels, which draw their share. Measured false alarms and power: docs/grading.md.
  *
  * With --var REF_VAR.pfm (the reference's variance of the pixel mean, `render --variance`),
  * --spp N and --ref-spp M, a per-pixel Z-test is also run, z = d / sqrt(var_ref (1 + M/N)),
@@ -55,6 +65,25 @@
 #define GRADE_ROUNDING 4e-7
 #define GRADE_MIN_BLOCK 8
 #define GRADE_POOL 1           /* the noise of a block is pooled over (2 GRADE_POOL + 1)^2 blocks */
+#define GRADE_LEVELS 48        /* level 0: luminance <= 0; level k: [2^(k-25), 2^(k-24)), ends open */
+#define GRADE_EXACT_REL 1e-4   /* an exact pixel may differ by this much, relative... */
+#define GRADE_EXACT_ABS 1e-6   /* ... plus this much of the reference's mean */
+
+static int imin(int a, int b) { return a < b ? a : b; }
+static int imax(int a, int b) { return a > b ? a : b; }
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* The median of q[0..n), n >= 1 (q is reordered). */
+static double median(double *q, size_t n)
+{
+    qsort(q, n, sizeof *q, cmp_double);
+    return n % 2 ? q[n / 2] : 0.5 * (q[n / 2 - 1] + q[n / 2]);
+}
 
 /* mean / standard error, with rounding added to the error; 0/0 is 0 (identical values) */
 static double t_stat(double mean, double se2)
@@ -63,37 +92,161 @@ static double t_stat(double mean, double se2)
     return mean == 0.0 ? 0.0 : copysign(HUGE_VAL, mean);
 }
 
-static double d_at(const image *img, const image *ref, size_t i)
+static double ref_luminance(const image *ref, size_t p)
 {
-    double a = img->px[i];
-    return isfinite(a) ? a - ref->px[i] : 0.0;   /* NaN/inf pixels are counted apart */
+    return luminance(v3(ref->px[3 * p], ref->px[3 * p + 1], ref->px[3 * p + 2]));
 }
 
-/* Mean of d and of ref, sample variance of d and the rounding bound of the mean, over the pixels
- * [x0,x1) x [y0,y1) of one channel; two passes for accuracy. */
-static void block_stats(grade_block *b, const image *img, const image *ref, int ch)
+/* Exact pixels: the reference's variance is 0, or (without it) the reference equals two of the
+ * four neighbours bit for bit. */
+static int mark_exact(grade_report *r, const image *ref, const image *var)
 {
-    double sum = 0.0, rsum = 0.0, ss = 0.0, rounding = 0.0, mean, m;
-    int x, y;
-    m = (double)(b->x1 - b->x0) * (b->y1 - b->y0);
-    for (y = b->y0; y < b->y1; y++)
-        for (x = b->x0; x < b->x1; x++) {
-            size_t i = 3 * ((size_t)y * img->w + x) + ch;
-            sum += d_at(img, ref, i);
-            rsum += ref->px[i];
-            rounding += GRADE_ROUNDING * (fabs(ref->px[i]) + fabs(ref->px[i] + d_at(img, ref, i)));
+    int x, y, k;
+    static const int dx[4] = {1, -1, 0, 0}, dy[4] = {0, 0, 1, -1};
+    r->exact = calloc((size_t)r->w * r->h, 1);
+    if (!r->exact) return 1;
+    r->exact_from_var = var != NULL;
+    for (y = 0; y < r->h; y++)
+        for (x = 0; x < r->w; x++) {
+            size_t p = (size_t)y * r->w + x;
+            int same = 0;
+            if (var) {
+                r->exact[p] = var->px[3 * p] == 0.0f && var->px[3 * p + 1] == 0.0f && var->px[3 * p + 2] == 0.0f;
+                continue;
+            }
+            for (k = 0; k < 4; k++) {
+                int u = x + dx[k], v = y + dy[k];
+                if (u >= 0 && v >= 0 && u < r->w && v < r->h &&
+                    !memcmp(&ref->px[3 * p], &ref->px[3 * ((size_t)v * r->w + u)], 3 * sizeof(float))) same++;
+            }
+            r->exact[p] = same >= 2;
         }
-    mean = sum / m;
-    for (y = b->y0; y < b->y1; y++)
-        for (x = b->x0; x < b->x1; x++) {
-            double e = d_at(img, ref, 3 * ((size_t)y * img->w + x) + ch) - mean;
-            ss += e * e;
+    return 0;
+}
+
+/* Compares the exact pixels as numbers; keeps the worst miss (largest |d| relative to the limit). */
+static void test_exact(grade_report *r, const image *img, const image *ref)
+{
+    size_t p, n = (size_t)r->w * r->h;
+    double mean = 0.0, worst = 1.0;
+    int ch;
+    for (p = 0; p < 3 * n; p++) mean += fabs(ref->px[p]) / (3.0 * n);
+    for (p = 0; p < n; p++) {
+        double excess = 0.0;
+        if (!r->exact[p]) continue;
+        r->nexact++;
+        for (ch = 0; ch < 3; ch++) {
+            double a = img->px[3 * p + ch], b = ref->px[3 * p + ch];
+            excess = fmax(excess, fabs(a - b) / (GRADE_EXACT_REL * fabs(b) + GRADE_EXACT_ABS * mean + 1e-30));
         }
-    b->diff[ch] = mean;
-    b->ref[ch] = rsum / m;
-    b->var[ch] = m > 1 ? ss / (m - 1.0) : 0.0;
-    b->round[ch] = rounding / m;
-    b->df = (int)m - 1;
+        if (excess <= 1.0) continue;
+        r->exact_fail++;
+        if (excess <= worst) continue;
+        worst = excess;
+        r->exact_x = (int)(p % (size_t)r->w);
+        r->exact_y = (int)(p / (size_t)r->w);
+        for (ch = 0; ch < 3; ch++) { r->exact_img[ch] = img->px[3 * p + ch]; r->exact_ref[ch] = ref->px[3 * p + ch]; }
+    }
+}
+
+/* The noise floor's scale: the student's noise is taken to be at least k[ch] times the reference's
+ * variance at each pixel, k = median of d^2 / var_ref over the noisy pixels / 0.455 (the median of
+ * chi-square with 1 degree of freedom). The shape of the reference's variance says where noise is
+ * rare-event noise (the edge of the lamp in a pixel, light found by chance): a group there whose
+ * pixels all missed the rare event has a small scatter that would otherwise pass for precision.
+ * The median makes k small rather than large with heavy tails: the floor is a safeguard, not the
+ * estimate. */
+static int floor_scale(grade_report *r, const image *img, const image *ref, const image *var)
+{
+    size_t p, n = (size_t)r->w * r->h, m;
+    int ch;
+    double *q = malloc(n * sizeof *q);
+    if (!q) return 1;
+    for (ch = 0; ch < 3; ch++) {
+        for (p = 0, m = 0; p < n; p++) {
+            double d = (double)img->px[3 * p + ch] - ref->px[3 * p + ch], v = var->px[3 * p + ch];
+            if (!r->exact[p] && v > 0.0) q[m++] = d * d / v;
+        }
+        r->floor_k[ch] = m > 0 ? median(q, m) / 0.455 : 0.0;
+    }
+    free(q);
+    return 0;
+}
+
+/* Mean d, mean ref, the sample variance of d (two passes, for accuracy), the rounding bound of the
+ * mean and the noise floor (see floor_scale), for the groups g[0..ng) of the noisy pixels; id[p] is
+ * pixel p's group (-1: none). zero[k] counts the pixels where the image is 0 and the reference not. */
+static void group_stats(const grade_report *r, grade_block *g, int ng, const int *id, const image *img, const image *ref,
+                        const image *var)
+{
+    size_t p, n = (size_t)img->w * img->h;
+    int k, ch;
+    for (p = 0; p < n; p++) {
+        if (id[p] < 0) continue;
+        g[id[p]].n++;
+        g[id[p]].nzero += img->px[3 * p] == 0.0f && img->px[3 * p + 1] == 0.0f && img->px[3 * p + 2] == 0.0f &&
+                          ref_luminance(ref, p) > 0.0;
+        for (ch = 0; ch < 3; ch++) {
+            double a = img->px[3 * p + ch], b = ref->px[3 * p + ch];
+            g[id[p]].diff[ch] += a - b;
+            g[id[p]].ref[ch] += b;
+            g[id[p]].round[ch] += GRADE_ROUNDING * (fabs(a) + fabs(b));
+            if (var) g[id[p]].floor[ch] += r->floor_k[ch] * var->px[3 * p + ch];
+        }
+    }
+    for (k = 0; k < ng; k++)
+        for (ch = 0; ch < 3 && g[k].n > 0; ch++) {
+            g[k].diff[ch] /= g[k].n;
+            g[k].ref[ch] /= g[k].n;
+            g[k].round[ch] /= g[k].n;
+            g[k].floor[ch] /= (double)g[k].n * g[k].n;
+        }
+    for (p = 0; p < n; p++)
+        for (ch = 0; ch < 3 && id[p] >= 0; ch++) {
+            double e = img->px[3 * p + ch] - ref->px[3 * p + ch] - g[id[p]].diff[ch];
+            g[id[p]].var[ch] += e * e;
+        }
+    for (k = 0; k < ng; k++) {
+        for (ch = 0; ch < 3; ch++) g[k].var[ch] = g[k].n > 1 ? g[k].var[ch] / (g[k].n - 1.0) : 0.0;
+        g[k].df = g[k].n > 0 ? (int)g[k].n - 1 : 0;
+    }
+}
+
+/* Critical |t| at a level for df degrees of freedom, remembered for the last few df (a family
+ * has one level and few distinct df: full blocks, edge blocks). */
+typedef struct { int df[8]; double level, t[8]; int next; } tcrit_memo;
+
+static double tcrit_at(tcrit_memo *m, double level, int df)
+{
+    int k;
+    if (m->level != level) { memset(m, 0, sizeof *m); m->level = level; }
+    for (k = 0; k < 8; k++) if (m->df[k] == df) return m->t[k];
+    k = m->next;
+    m->next = (k + 1) % 8;
+    m->df[k] = df;
+    m->t[k] = t_critical(level, df);
+    return m->t[k];
+}
+
+/* The t of each channel of a group, its sign if one is beyond level (the largest |t| wins), and
+ * the largest |t| / critical |t| of the family so far in *excess. */
+static void judge_group(grade_block *g, double level, tcrit_memo *memo, double *tmax, double *excess)
+{
+    double tbest = 0.0, crit;
+    int ch;
+    g->sign = 0;
+    g->rare = 2 * g->nzero > g->n;   /* mostly black where the reference is not: rare-event noise */
+    if (g->df < 1 || g->rare) { g->t[0] = g->t[1] = g->t[2] = 0.0; return; }
+    crit = tcrit_at(memo, level, g->df);
+    for (ch = 0; ch < 3; ch++) {
+        g->t[ch] = t_stat(g->diff[ch], g->noise[ch]);
+        if (fabs(g->t[ch]) > *tmax) *tmax = fabs(g->t[ch]);
+        if (fabs(g->t[ch]) / crit > *excess) *excess = fabs(g->t[ch]) / crit;
+        if (fabs(g->t[ch]) > crit && fabs(g->t[ch]) > tbest) {
+            tbest = fabs(g->t[ch]);
+            g->sign = g->t[ch] > 0 ? 1 : -1;
+        }
+    }
 }
 
 /* The within-block variance of d pooled over the blocks around (bx, by): sum of (m - 1) s^2 over
@@ -118,13 +271,13 @@ static double block_noise(const grade_report *r, int bx, int by, int ch)
 {
     const grade_block *b = &r->blocks[by * r->nbx + bx];
     double var = fmax(b->var[ch], pooled_var(r, bx, by, ch, 1));
-    return var / (b->df + 1.0) + b->round[ch] * b->round[ch];
+    return b->n > 0 ? fmax(var / b->n, b->floor[ch]) + b->round[ch] * b->round[ch] : 0.0;
 }
 
-static void test_blocks(grade_report *r, const image *img, const image *ref)
+static void test_blocks(grade_report *r, const image *img, const image *ref, const image *var, int *id)
 {
-    int bx, by, ch;
-    r->block_level = sidak_level(r->alpha / 2.0, 3L * r->nblocks);
+    int bx, by, ch, x, y, full = 0;
+    tcrit_memo memo = {{0}, 0.0, {0}, 0};
     for (by = 0; by < r->nby; by++)
         for (bx = 0; bx < r->nbx; bx++) {
             grade_block *b = &r->blocks[by * r->nbx + bx];
@@ -132,57 +285,105 @@ static void test_blocks(grade_report *r, const image *img, const image *ref)
             b->y0 = by * r->block;
             b->x1 = bx == r->nbx - 1 ? r->w : b->x0 + r->block;
             b->y1 = by == r->nby - 1 ? r->h : b->y0 + r->block;
-            for (ch = 0; ch < 3; ch++) block_stats(b, img, ref, ch);
+            for (y = b->y0; y < b->y1; y++)
+                for (x = b->x0; x < b->x1; x++) {
+                    size_t p = (size_t)y * r->w + x;
+                    id[p] = r->exact[p] ? -1 : by * r->nbx + bx;
+                }
         }
-    r->block_tcrit = r->blocks[0].df >= 1 ? t_critical(r->block_level, r->blocks[0].df) : 0.0;   /* a full block */
+    group_stats(r, r->blocks, r->nblocks, id, img, ref, var);
+    r->block_level = sidak_level(r->alpha / 3.0, 3L * r->nblocks);
     for (by = 0; by < r->nby; by++)
         for (bx = 0; bx < r->nbx; bx++) {
             grade_block *b = &r->blocks[by * r->nbx + bx];
-            double tbest = 0.0;
-            for (ch = 0; ch < 3; ch++) {
-                b->noise[ch] = block_noise(r, bx, by, ch);
-                b->t[ch] = b->df >= 1 ? t_stat(b->diff[ch], b->noise[ch]) : 0.0;
-                if (fabs(b->t[ch]) > r->block_tmax) r->block_tmax = fabs(b->t[ch]);
-                if (b->df >= 1 && student_t_tail(b->t[ch], b->df) < r->block_level && fabs(b->t[ch]) > tbest) {
-                    tbest = fabs(b->t[ch]);
-                    b->sign = b->t[ch] > 0 ? 1 : -1;
-                }
-            }
+            for (ch = 0; ch < 3; ch++) b->noise[ch] = block_noise(r, bx, by, ch);
+            judge_group(b, r->block_level, &memo, &r->block_tmax, &r->block_excess);
             r->nbrighter += b->sign > 0;
             r->ndarker += b->sign < 0;
+            if (b->df > full) full = b->df;
         }
+    r->block_tcrit = full >= 1 ? t_critical(r->block_level, full) : 0.0;
+}
+
+/* The level of a reference luminance: one octave each (see GRADE_LEVELS). */
+static int level_of(double lum)
+{
+    int k;
+    if (!(lum > 0.0)) return 0;
+    k = (int)floor(log2(fmin(fmax(lum, 1e-12), 1e12))) + 25;
+    return k < 1 ? 1 : k >= GRADE_LEVELS ? GRADE_LEVELS - 1 : k;
+}
+
+static void test_levels(grade_report *r, const image *img, const image *ref, const image *var, int *id)
+{
+    size_t p, n = (size_t)r->w * r->h;
+    int k, ch;
+    tcrit_memo memo = {{0}, 0.0, {0}, 0};
+    for (k = 0; k < GRADE_LEVELS; k++) {
+        grade_block *g = &r->levels[k];
+        g->lum_lo = k == 0 ? 0.0 : ldexp(1.0, k - 25);
+        g->lum_hi = k == 0 ? 0.0 : ldexp(1.0, k - 24);
+        g->x0 = r->w; g->y0 = r->h;
+    }
+    for (p = 0; p < n; p++) {
+        grade_block *g;
+        id[p] = r->exact[p] ? -1 : level_of(ref_luminance(ref, p));
+        if (id[p] < 0) continue;
+        g = &r->levels[id[p]];
+        g->x0 = imin(g->x0, (int)(p % (size_t)r->w));
+        g->y0 = imin(g->y0, (int)(p / (size_t)r->w));
+        g->x1 = imax(g->x1, (int)(p % (size_t)r->w) + 1);
+        g->y1 = imax(g->y1, (int)(p / (size_t)r->w) + 1);
+    }
+    group_stats(r, r->levels, GRADE_LEVELS, id, img, ref, var);
+    for (k = 0; k < GRADE_LEVELS; k++) r->nlevels_tested += r->levels[k].df >= 1;
+    r->nlevels = GRADE_LEVELS;
+    r->level_level = sidak_level(r->alpha / 3.0, 3L * (r->nlevels_tested > 0 ? r->nlevels_tested : 1));
+    for (k = 0; k < GRADE_LEVELS; k++) {
+        grade_block *g = &r->levels[k];
+        for (ch = 0; ch < 3; ch++)
+            g->noise[ch] = g->n > 0 ? fmax(g->var[ch] / g->n, g->floor[ch]) + g->round[ch] * g->round[ch] : 0.0;
+        judge_group(g, r->level_level, &memo, &r->level_tmax, &r->level_excess);
+        r->level_brighter += g->sign > 0;
+        r->level_darker += g->sign < 0;
+    }
 }
 
 /* The weight of a block in the relative-bias fit, ref / (noise of its mean), the noise taken from
  * its neighbours only so that the weight does not depend on the block's own d. 0 for a block whose
- * neighbours are exact (noise within rounding): the block test judges those. */
+ * neighbours are exact (noise within rounding) or that has no noisy pixel. */
 static double fit_weight(const grade_report *r, int bx, int by, int ch)
 {
     const grade_block *b = &r->blocks[by * r->nbx + bx];
-    double m = b->df + 1.0, v = (r->nblocks > 1 ? pooled_var(r, bx, by, ch, 0) : b->var[ch]) / m;
+    double v;
+    if (b->n < 1) return 0.0;
+    v = (r->nblocks > 1 ? pooled_var(r, bx, by, ch, 0) : b->var[ch]) / b->n;
     return v > b->round[ch] * b->round[ch] ? b->ref[ch] / v : 0.0;
 }
 
 /* Whole image, per channel: the relative bias eps of d = eps * ref, fitted to the block means by
- * weighted least squares, eps = sum w d / sum w ref, with var(eps) = sum w^2 noise / (sum w ref)^2. */
-static void test_image(grade_report *r)
+ * weighted least squares, eps = sum w d / sum w ref, with var(eps) = sum w^2 noise / (sum w ref)^2.
+ * The plain means of d and ref are over every pixel (exact ones too). */
+static void test_image(grade_report *r, const image *img, const image *ref)
 {
     int bx, by, ch;
-    double area = (double)r->w * r->h;
-    r->image_level = sidak_level(r->alpha / 2.0, 3);
+    size_t p, n = (size_t)r->w * r->h;
+    r->image_level = sidak_level(r->alpha / 3.0, 3);
     r->image_zcrit = normal_quantile(1.0 - 0.5 * r->image_level);
+    for (p = 0; p < 3 * n; p++) {
+        r->image_diff[p % 3] += ((double)img->px[p] - ref->px[p]) / n;
+        r->image_ref[p % 3] += (double)ref->px[p] / n;
+    }
     for (ch = 0; ch < 3; ch++) {
         double wd = 0.0, wref = 0.0, wvar = 0.0;
         for (by = 0; by < r->nby; by++)
             for (bx = 0; bx < r->nbx; bx++) {
                 const grade_block *b = &r->blocks[by * r->nbx + bx];
-                double w = fit_weight(r, bx, by, ch), m = (double)(b->x1 - b->x0) * (b->y1 - b->y0);
+                double w = fit_weight(r, bx, by, ch);
                 r->image_nfit += w > 0.0;
                 wd += w * b->diff[ch];
                 wref += w * b->ref[ch];
                 wvar += w * w * b->noise[ch];
-                r->image_diff[ch] += m * b->diff[ch] / area;
-                r->image_ref[ch] += m * b->ref[ch] / area;
             }
         r->image_eps[ch] = wref > 0.0 ? wd / wref : 0.0;
         r->image_eps_se[ch] = wref > 0.0 ? sqrt(wvar) / wref : 0.0;
@@ -200,30 +401,44 @@ static void test_pixels(grade_report *r, const image *img, const image *ref, con
     r->pixel_n = (long)n;
     r->pixel_zcrit = sidak_zcrit(r->alpha, (long)n);
     for (i = 0; i < n; i++) {
-        double d = d_at(img, ref, i), rounding = GRADE_ROUNDING * (fabs(ref->px[i]) + fabs(ref->px[i] + d));
+        double d = (double)img->px[i] - ref->px[i], rounding = GRADE_ROUNDING * (fabs(ref->px[i]) + fabs(img->px[i]));
         if (fabs(t_stat(d, var->px[i] * k + rounding * rounding)) > r->pixel_zcrit) r->pixel_fail++;
     }
 }
 
+static void choose_blocks(grade_report *r, const grade_opts *o)
+{
+    r->block = o->block > 0 ? o->block : (r->w < r->h ? r->w : r->h) / 16;
+    if (r->block < GRADE_MIN_BLOCK && o->block <= 0) r->block = GRADE_MIN_BLOCK;
+    r->nbx = r->w / r->block > 0 ? r->w / r->block : 1;
+    r->nby = r->h / r->block > 0 ? r->h / r->block : 1;
+    r->nblocks = r->nbx * r->nby;
+}
+
 int grade_compute(grade_report *r, const image *img, const image *ref, const image *ref_var, const grade_opts *o)
 {
-    size_t i;
+    int *id;
     memset(r, 0, sizeof *r);
     if (img->w != ref->w || img->h != ref->h) return 1;
     if (ref_var && (ref_var->w != ref->w || ref_var->h != ref->h)) return 1;
     r->alpha = o->alpha;
     r->w = img->w;
     r->h = img->h;
-    r->block = o->block > 0 ? o->block : (img->w < img->h ? img->w : img->h) / 16;
-    if (r->block < GRADE_MIN_BLOCK && o->block <= 0) r->block = GRADE_MIN_BLOCK;
-    r->nbx = img->w / r->block > 0 ? img->w / r->block : 1;
-    r->nby = img->h / r->block > 0 ? img->h / r->block : 1;
-    r->nblocks = r->nbx * r->nby;
+    choose_blocks(r, o);
     r->blocks = calloc((size_t)r->nblocks, sizeof *r->blocks);
-    if (!r->blocks) return 1;
-    for (i = 0; i < 3 * (size_t)img->w * img->h; i++) r->nonfinite += !isfinite(img->px[i]);
-    test_blocks(r, img, ref);
-    test_image(r);
+    r->levels = calloc(GRADE_LEVELS, sizeof *r->levels);
+    id = malloc((size_t)r->w * r->h * sizeof *id);
+    if (!r->blocks || !r->levels || !id || mark_exact(r, ref, ref_var)) {
+        free(id);
+        grade_free(r);
+        return 1;
+    }
+    test_exact(r, img, ref);
+    if (ref_var && floor_scale(r, img, ref, ref_var)) { free(id); grade_free(r); return 1; }
+    test_blocks(r, img, ref, ref_var, id);
+    test_levels(r, img, ref, ref_var, id);
+    test_image(r, img, ref);
+    free(id);
     if (ref_var && o->spp > 0 && o->ref_spp > 0) test_pixels(r, img, ref, ref_var, o);
     return 0;
 }
@@ -231,12 +446,25 @@ int grade_compute(grade_report *r, const image *img, const image *ref, const ima
 void grade_free(grade_report *r)
 {
     free(r->blocks);
-    r->blocks = NULL;
+    free(r->levels);
+    free(r->exact);
+    r->blocks = r->levels = NULL;
+    r->exact = NULL;
 }
 
 int grade_failed(const grade_report *r)
 {
-    return r->image_fail || r->nbrighter > 0 || r->ndarker > 0 || r->nonfinite > 0;
+    return r->image_fail || r->nbrighter > 0 || r->ndarker > 0 || r->level_brighter > 0 || r->level_darker > 0 ||
+           r->exact_fail > 0;
+}
+
+double grade_excess(const grade_report *r)
+{
+    double e = fmax(r->block_excess, r->level_excess);
+    int ch;
+    if (r->exact_fail) return 1e9;
+    for (ch = 0; ch < 3; ch++) e = fmax(e, fabs(r->image_z[ch]) / r->image_zcrit);
+    return e;
 }
 
 int grade_heatmap(image *out, const grade_report *r, const image *ref)

@@ -1,0 +1,188 @@
+/* grade_class.c — a class's images read and checked, its lines and its report (see grade_class.h). */
+#include "cmd/grade_class.h"
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "util/textfile.h"
+
+/* The first NaN, infinite or negative value of im, or -1; *what names it. */
+static long first_bad(const image *im, int negative_too, const char **what)
+{
+    size_t i;
+    for (i = 0; i < 3 * (size_t)im->w * im->h; i++) {
+        float v = im->px[i];
+        if (isnan(v)) { *what = "NaN"; return (long)i; }
+        if (isinf(v)) { *what = "infinite"; return (long)i; }
+        if (negative_too && v < 0.0f) { *what = "negative"; return (long)i; }
+    }
+    return -1;
+}
+
+int grade_check_reference(const grade_refs *refs, const char *ref_path, const char *var_path)
+{
+    const char *what;
+    long i = first_bad(refs->ref, 0, &what);
+    if (i < 0 && refs->var) {
+        i = first_bad(refs->var, 1, &what);
+        ref_path = var_path;
+    }
+    if (i < 0) return 0;
+    fprintf(stderr, "pathlab grade: %s has a %s value at pixel x %ld, y %ld (y = 0 is the top row): not a reference\n",
+            ref_path, what, i / 3 % refs->ref->w, i / 3 / refs->ref->w);
+    return 2;
+}
+
+/* The command that made ref_path, from the MANIFEST.md beside it ("| name | ... `command` |"), into
+ * cmd[cap]; 0 if there is none. */
+static int manifest_command(char *cmd, size_t cap, const char *ref_path)
+{
+    const char *slash = strrchr(ref_path, '/'), *name = slash ? slash + 1 : ref_path;
+    char path[4200], line[8192], key[512];
+    FILE *f;
+    int found = 0;
+    snprintf(path, sizeof path, "%.*sMANIFEST.md", slash ? (int)(slash - ref_path + 1) : 0, ref_path);
+    snprintf(key, sizeof key, "| %s |", name);
+    if (!(f = fopen(path, "r"))) return 0;
+    while (!found && fgets(line, sizeof line, f)) {
+        char *a = strchr(line, '`'), *b = a ? strchr(a + 1, '`') : NULL;
+        if (strncmp(line, key, strlen(key)) || !b) continue;
+        snprintf(cmd, cap, "%.*s", (int)(b - a - 1), a + 1);
+        found = 1;
+    }
+    fclose(f);
+    return found;
+}
+
+/* The command's words with --size, -o and --variance made for a w x h reference named STEM-WxH. */
+static void resize_command(char *out, size_t cap, const char *cmd, const char *ref_path, int w, int h)
+{
+    char words[8192], stem[4200], *tok, *save = NULL;
+    size_t used = 0, n = strlen(ref_path) > 4 ? strlen(ref_path) - 4 : strlen(ref_path);
+    int skip = 0, sized = 0;
+    snprintf(words, sizeof words, "%s", cmd);
+    snprintf(stem, sizeof stem, "%.*s-%dx%d", (int)n, ref_path, w, h);
+    out[0] = '\0';
+    for (tok = strtok_r(words, " ", &save); tok && used < cap; tok = strtok_r(NULL, " ", &save)) {
+        const char *word = tok;
+        char buf[4300];
+        if (skip == 1) { snprintf(buf, sizeof buf, "%dx%d", w, h); word = buf; sized = 1; }
+        if (skip == 2) { snprintf(buf, sizeof buf, "%s.pfm", stem); word = buf; }
+        if (skip == 3) { snprintf(buf, sizeof buf, "%s_var.pfm", stem); word = buf; }
+        skip = !strcmp(tok, "--size") ? 1 : !strcmp(tok, "-o") ? 2 : !strcmp(tok, "--variance") ? 3 : 0;
+        used += (size_t)snprintf(out + used, cap - used, "%s%s", used ? " " : "", word);
+    }
+    if (!sized && used < cap) snprintf(out + used, cap - used, " --size %dx%d", w, h);
+}
+
+/* A wrong size: a fail, with the command that renders a reference at the image's size. */
+static int wrong_size(grade_row *row, const image *img, const grade_refs *refs, const char *ref_path)
+{
+    char cmd[8192] = "", fixed[8192];
+    int w = img->w, h = img->h, rw = refs->ref->w, rh = refs->ref->h;
+    int same_aspect = (long)w * rh == (long)h * rw;
+    if (manifest_command(cmd, sizeof cmd, ref_path)) resize_command(fixed, sizeof fixed, cmd, ref_path, w, h);
+    else snprintf(fixed, sizeof fixed, "pathlab render SCENE.obj --size %dx%d --spp 4096 -o REF-%dx%d.pfm --variance REF-%dx%d_var.pfm "
+                  "(the reference's scene, camera and flags)", w, h, w, h, w, h);
+    snprintf(row->mistake, sizeof row->mistake, "the wrong image size: %dx%d, the reference is %dx%d (%s); a reference at this size: %s",
+             w, h, rw, rh, same_aspect ? "same aspect, another resolution" : "another aspect ratio", fixed);
+    row->w = w;
+    row->h = h;
+    return row->status = 1;
+}
+
+int grade_read_image(image *img, grade_row *row, const grade_refs *refs, const char *ref_path)
+{
+    const char *what;
+    long i;
+    if (img_read_pfm(img, row->path)) {
+        snprintf(row->mistake, sizeof row->mistake, "cannot be read as a PFM (see the message above)");
+        return row->status = 2;
+    }
+    if (img->w != refs->ref->w || img->h != refs->ref->h) {
+        wrong_size(row, img, refs, ref_path);
+        img_free(img);
+        return 1;
+    }
+    i = first_bad(img, 1, &what);
+    if (i >= 0) {
+        snprintf(row->mistake, sizeof row->mistake, "a %s value at pixel x %ld, y %ld (y = 0 is the top row): radiance is finite and >= 0",
+                 what, i / 3 % img->w, i / 3 / img->w);
+        fprintf(stderr, "pathlab grade: %s: %s\n", row->path, row->mistake);
+        img_free(img);
+        return row->status = 2;
+    }
+    return 0;
+}
+
+void grade_print_class_header(const grade_opts *o, const char *ref_path, int nimages, const grade_refs *refs,
+                              const char *var_path, const char *layer_prefix)
+{
+    printf("pathlab grade: %d images against %s (%dx%d)", nimages, ref_path, refs->ref->w, refs->ref->h);
+    printf(var_path ? ", its variance %s" : ", no variance beside it (exact pixels guessed)", var_path);
+    if (refs->nlayers) printf(", layers %s_L0..L%d.pfm", layer_prefix, refs->nlayers - 1);
+    printf("\neach image is graded at family-wise level alpha %g: an unbiased image fails with probability at most %g, so %d "
+           "honest images give about %.2g false alarms in all\n", o->alpha, o->alpha, nimages, o->alpha * nimages);
+}
+
+void grade_print_summary(const grade_row *rows, int n, const grade_opts *o)
+{
+    int k, count[3] = {0, 0, 0};
+    for (k = 0; k < n; k++) count[rows[k].status]++;
+    printf("summary: %d images, %d pass, %d fail, %d could not be read (alpha %g per image)\n", n, count[0], count[1], count[2], o->alpha);
+}
+
+static const char *verdict_word(int status) { return status == 0 ? "PASS" : status == 1 ? "FAIL" : "UNREADABLE"; }
+
+/* s with " doubled, for a CSV field in quotes */
+static void csv_field(FILE *f, const char *s)
+{
+    fputc('"', f);
+    for (; *s; s++) { if (*s == '"') fputc('"', f); fputc(*s, f); }
+    fputc('"', f);
+}
+
+static void write_md(FILE *f, const grade_row *rows, int n, const grade_opts *o, const char *ref_path)
+{
+    int k;
+    fprintf(f, "# Grades against %s\n\nEach image graded at family-wise level alpha %g (`pathlab grade`; see docs/grading.md).\n\n",
+            ref_path, o->alpha);
+    fprintf(f, "| image | verdict | bias +- error | where | likely mistake |\n|---|---|---|---|---|\n");
+    for (k = 0; k < n; k++) {
+        const grade_row *r = &rows[k];
+        fprintf(f, "| %s | %s | ", r->path, verdict_word(r->status));
+        if (r->status < 2 && r->channel[0] && r->bias_se < 0.0) fprintf(f, "%+.2f%% (plain mean)", 100 * r->bias);
+        else if (r->status < 2 && r->channel[0]) fprintf(f, "%+.2f%% +- %.2f%% (%s)", 100 * r->bias, 100 * r->bias_se, r->channel);
+        fprintf(f, " | %s | %s |\n", r->where, r->mistake);
+    }
+}
+
+static void write_csv(FILE *f, const grade_row *rows, int n)
+{
+    int k;
+    fprintf(f, "image,verdict,bias_percent,error_percent,channel,where,likely_mistake\n");
+    for (k = 0; k < n; k++) {
+        const grade_row *r = &rows[k];
+        csv_field(f, r->path);
+        fprintf(f, ",%s,", verdict_word(r->status));
+        if (r->status < 2 && r->channel[0] && r->bias_se < 0.0) fprintf(f, "%.4f,,%s,", 100 * r->bias, r->channel);
+        else if (r->status < 2 && r->channel[0]) fprintf(f, "%.4f,%.4f,%s,", 100 * r->bias, 100 * r->bias_se, r->channel);
+        else fprintf(f, ",,,");
+        csv_field(f, r->where);
+        fputc(',', f);
+        csv_field(f, r->mistake);
+        fputc('\n', f);
+    }
+}
+
+int grade_write_report(const char *path, const grade_row *rows, int n, const grade_opts *o, const char *ref_path)
+{
+    char tmp[4200];
+    size_t len = strlen(path);
+    FILE *f = textfile_open(path, tmp, sizeof tmp);
+    if (!f) return 1;
+    if (len > 4 && !strcmp(path + len - 4, ".csv")) write_csv(f, rows, n);
+    else write_md(f, rows, n, o, ref_path);
+    if (textfile_close(f, tmp, path)) return 1;
+    printf("report: %s\n", path);
+    return 0;
+}

@@ -1,0 +1,314 @@
+/* grade_diagnose.c — the catalogue of likely mistakes (see grade_diagnose.h).
+ *
+ * A hypothesis is a mistake M with a way to undo it: either on the image (a flip, a factor: the
+ * image is turned back and graded against the reference) or on the reference (a curve, a clamp,
+ * bounces left out: the reference is made as M would make it and the image graded against it). The
+ * statistics are those of the verdict, same alpha: "grading the flipped image passes" is a claim
+ * with the verdict's false-alarm rate. Bounce hypotheses need the per-bounce layers of the reference
+ * (REF_split_L0.pfm, ... from `render --split`); their noise adds to the reference's, which the
+ * grading takes as part of the difference's scatter. */
+#include "cmd/grade_diagnose.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "math/vec.h"
+
+typedef struct {
+    const image *img;
+    const grade_refs *refs;
+    const grade_opts *o;
+    double excess0;
+    grade_hypothesis *out;
+    int max, n, oom;
+    image a, b;          /* scratch: a transformed image, a transformed reference */
+} diag;
+
+static size_t nvalues(const image *im) { return 3 * (size_t)im->w * im->h; }
+
+/* Keeps a hypothesis if it explains: passes, or brings the worst statistic well down. */
+static void keep(diag *d, const char *what, const char *evidence, double excess, int passes)
+{
+    grade_hypothesis *h;
+    int k;
+    for (k = 0; k < d->n; k++) if (!strcmp(d->out[k].what, what)) return;   /* told by the values already */
+    if (d->n >= d->max) return;
+    h = &d->out[d->n++];
+    snprintf(h->what, sizeof h->what, "%s", what);
+    snprintf(h->evidence, sizeof h->evidence, "%s", evidence);
+    h->excess = excess;
+    h->passes = passes;
+}
+
+/* Grades img against ref and keeps the hypothesis if it explains; `graded` names what was graded. */
+static void judge(diag *d, const image *img, const image *ref, const char *what, const char *graded)
+{
+    grade_report r;
+    char ev[200];
+    double e;
+    int passes;
+    if (grade_compute(&r, img, ref, d->refs->var, d->o)) { d->oom = 1; return; }
+    e = grade_excess(&r);
+    passes = !grade_failed(&r);
+    grade_free(&r);
+    if (passes)
+        snprintf(ev, sizeof ev, "grading %s passes (worst statistic %.2f of its limit; %.3g as it is)", graded, e, d->excess0);
+    else if (e < 0.1 * d->excess0 && e < 3.0)
+        snprintf(ev, sizeof ev, "grading %s nearly passes: the worst statistic falls from %.3g to %.2f times its limit",
+                 graded, d->excess0, e);
+    else return;
+    keep(d, what, ev, e, passes);
+}
+
+/* ---- hypotheses on the image: undo the mistake and grade against the reference ---- */
+
+/* out = the image mirrored: mode 1 top-bottom, 2 left-right, 3 both; 4 channels in BGR order. */
+static void remap(image *out, const image *in, int mode)
+{
+    int x, y, c;
+    for (y = 0; y < in->h; y++)
+        for (x = 0; x < in->w; x++) {
+            int sx = mode & 2 && mode != 4 ? in->w - 1 - x : x, sy = mode & 1 ? in->h - 1 - y : y;
+            for (c = 0; c < 3; c++)
+                out->px[3 * ((size_t)y * in->w + x) + c] = in->px[3 * ((size_t)sy * in->w + sx) + (mode == 4 ? 2 - c : c)];
+        }
+}
+
+static void try_geometry(diag *d)
+{
+    remap(&d->a, d->img, 1);
+    judge(d, &d->a, d->refs->ref, "flipped vertically, upside down (rows written top to bottom? PFM stores the bottom row first)",
+          "the image flipped vertically");
+    remap(&d->a, d->img, 2);
+    judge(d, &d->a, d->refs->ref, "mirrored left-right (x axis or camera's right vector reversed?)", "the mirrored image");
+    remap(&d->a, d->img, 3);
+    judge(d, &d->a, d->refs->ref, "turned by 180 degrees (both axes reversed)", "the image turned by 180 degrees");
+    remap(&d->a, d->img, 4);
+    judge(d, &d->a, d->refs->ref, "red and blue swapped (channels written as BGR)", "the image with red and blue swapped");
+}
+
+static void scale_into(image *out, const image *in, double f)
+{
+    size_t i;
+    for (i = 0; i < nvalues(in); i++) out->px[i] = (float)(in->px[i] * f);
+}
+
+/* The named factors a student's formula can be off by, then the fitted one. */
+static void try_factors(diag *d, double fitted)
+{
+    static const struct { double f; const char *name, *why; } F[] = {
+        {PI, "pi", "a 1/pi missing? (the diffuse BRDF is Kd/pi)"},
+        {1.0 / PI, "1/pi", "divided by pi once too often? (Kd/pi with a cosine pdf cos/pi: the pis cancel)"},
+        {2.0, "2", "a factor 2 (a pdf of one hemisphere used for the whole sphere, or two estimators added without weights?)"},
+        {0.5, "1/2", "half (a pdf of the whole sphere for a hemisphere, or two estimators each weighted 1/2 but one missing?)"},
+        {2.0 * PI, "2 pi", "a 1/(2 pi) missing (the uniform hemisphere pdf)"},
+        {1.0 / (2.0 * PI), "1/(2 pi)", "divided by 2 pi once too often"},
+        {4.0 * PI, "4 pi", "a 1/(4 pi) missing (the uniform sphere pdf)"}};
+    char what[160], graded[64];
+    size_t k;
+    int named = 0;
+    for (k = 0; k < sizeof F / sizeof F[0]; k++) {
+        int before = d->n;
+        scale_into(&d->a, d->img, 1.0 / F[k].f);
+        snprintf(what, sizeof what, "%s times the reference: %s", F[k].name, F[k].why);
+        snprintf(graded, sizeof graded, "the image divided by %s", F[k].name);
+        judge(d, &d->a, d->refs->ref, what, graded);
+        named += d->n > before;
+    }
+    if (named || !(fitted > 0.0) || fabs(fitted - 1.0) < 1e-3) return;
+    scale_into(&d->a, d->img, 1.0 / fitted);
+    snprintf(what, sizeof what, "a global factor: %.4g times the reference everywhere (fitted)", fitted);
+    snprintf(graded, sizeof graded, "the image divided by %.4g", fitted);
+    judge(d, &d->a, d->refs->ref, what, graded);
+}
+
+/* ---- hypotheses on the reference: make it as the mistake would, grade the image against it ---- */
+
+static float srgb_of(float v) { return srgb_encode(fminf(fmaxf(v, 0.0f), 1.0f)); }
+/* The curves are undone on the image, not applied to the reference: the student applied them to a
+ * noisy pixel, and a curve of the mean is not the mean of the curve (at 4 spp, far from it). */
+static float srgb_undo(float v) { return v <= 0.04045f ? v / 12.92f : powf((v + 0.055f) / 1.055f, 2.4f); }
+static float gamma_undo(float v) { return powf(fmaxf(v, 0.0f), 2.2f); }
+static float clamp1_of(float v) { return fminf(v, 1.0f); }
+
+static void map_into(image *out, const image *in, float (*f)(float))
+{
+    size_t i;
+    for (i = 0; i < nvalues(in); i++) out->px[i] = f(in->px[i]);
+}
+
+/* out = the reference in grey: mode 0 the mean of R, G, B; 1 the luminance. */
+static void grey_into(image *out, const image *in, int mode)
+{
+    size_t p;
+    for (p = 0; p < (size_t)in->w * in->h; p++) {
+        const float *v = &in->px[3 * p];
+        float g = mode ? luminance(v3(v[0], v[1], v[2])) : (v[0] + v[1] + v[2]) / 3.0f;
+        out->px[3 * p] = out->px[3 * p + 1] = out->px[3 * p + 2] = g;
+    }
+}
+
+static void try_curves(diag *d)
+{
+    const image *ref = d->refs->ref;
+    map_into(&d->a, d->img, srgb_undo);
+    map_into(&d->b, ref, clamp1_of);
+    judge(d, &d->a, &d->b, "the sRGB curve applied (and values cut at 1): a PFM holds linear radiance, write it before any display curve",
+          "the image decoded from sRGB, against the reference clamped at 1,");
+    map_into(&d->a, d->img, gamma_undo);
+    judge(d, &d->a, ref, "a gamma curve applied (x^(1/2.2)): a PFM holds linear radiance", "the image to the power 2.2");
+    judge(d, d->img, &d->b, "values clamped at 1 (radiance has no maximum: an emitter seen directly is far above 1)",
+          "against the reference clamped at 1");
+    grey_into(&d->b, ref, 0);
+    judge(d, d->img, &d->b, "grey instead of colour: each pixel is the mean of R, G, B", "against the reference's mean of R, G, B");
+    grey_into(&d->b, ref, 1);
+    judge(d, d->img, &d->b, "grey instead of colour: each pixel is the luminance", "against the reference's luminance");
+}
+
+/* out = sum of coef[k] layer k, plus whole times the reference. */
+static void layers_into(image *out, const grade_refs *refs, const double *coef, double whole)
+{
+    size_t i;
+    int k;
+    for (i = 0; i < nvalues(refs->ref); i++) {
+        double v = whole * refs->ref->px[i];
+        for (k = 0; k < refs->nlayers; k++) v += coef[k] * refs->layer[k]->px[i];
+        out->px[i] = (float)v;
+    }
+}
+
+static void try_bounces(diag *d)
+{
+    double c[GRADE_MAX_LAYERS];
+    char what[160], graded[96];
+    int k, j, n = d->refs->nlayers;
+    if (n < 2) return;
+    memset(c, 0, sizeof c);
+    c[0] = -1.0;
+    layers_into(&d->b, d->refs, c, 1.0);
+    judge(d, d->img, &d->b, "no L0: the emitters seen directly are black (add Le at the first hit)", "against the reference without L0");
+    for (k = 1; k < n; k++) {
+        for (j = 0; j < n; j++) c[j] = j <= k ? 1.0 : 0.0;
+        layers_into(&d->b, d->refs, c, 0.0);
+        if (k == 1) snprintf(what, sizeof what, "direct light only (L0 + L1): no indirect bounce");
+        else snprintf(what, sizeof what, "stopped after %d bounces (L0 .. L%d): the path ends too early (\"et on arrete quand ?\")", k, k);
+        snprintf(graded, sizeof graded, "against L0 + ... + L%d of the reference", k);
+        judge(d, d->img, &d->b, what, graded);
+    }
+    memset(c, 0, sizeof c);
+    c[0] = c[1] = -1.0;
+    layers_into(&d->b, d->refs, c, 1.0);
+    judge(d, d->img, &d->b, "indirect light only (L2 and beyond): L0 and L1 missing", "against the reference without L0 and L1");
+    for (k = 1; k < n; k++) {
+        memset(c, 0, sizeof c);
+        c[k] = -1.0;
+        layers_into(&d->b, d->refs, c, 1.0);
+        snprintf(what, sizeof what, k == 1 ? "L1 missing: no direct light (the light sample's contribution lost?)" : "L%d missing: one bounce lost", k);
+        snprintf(graded, sizeof graded, "against the reference without L%d", k);
+        judge(d, d->img, &d->b, what, graded);
+    }
+}
+
+/* ---- evidence from the values alone ---- */
+
+static int all_values(const image *im, int (*test)(float))
+{
+    size_t i;
+    for (i = 0; i < nvalues(im); i++) if (!test(im->px[i])) return 0;
+    return 1;
+}
+
+static int is_8bit(float v) { return v >= 0.0f && v <= 1.0f && fabsf(v * 255.0f - floorf(v * 255.0f + 0.5f)) < 1e-3f; }
+
+/* v = decode(k / 255) of the sRGB curve for some k: the linear value of an 8-bit sRGB byte */
+static int is_8bit_srgb(float v)
+{
+    float e = srgb_of(v) * 255.0f;
+    return v >= 0.0f && v <= 1.0f && fabsf(e - floorf(e + 0.5f)) < 2e-2f;
+}
+
+static int is_grey(const image *im, double tol)
+{
+    size_t p;
+    for (p = 0; p < (size_t)im->w * im->h; p++) {
+        const float *v = &im->px[3 * p];
+        double m = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
+        if (fabs(v[0] - v[1]) > tol * m || fabs(v[1] - v[2]) > tol * m) return 0;
+    }
+    return 1;
+}
+
+static float max_value(const image *im)
+{
+    size_t i;
+    float m = 0.0f;
+    for (i = 0; i < nvalues(im); i++) m = fmaxf(m, im->px[i]);
+    return m;
+}
+
+static void try_values(diag *d)
+{
+    const image *img = d->img, *ref = d->refs->ref;
+    char ev[200];
+    size_t i, ones = 0;
+    float rmax = max_value(ref);
+    if (all_values(img, is_8bit))
+        keep(d, "quantised to 8 bits: every value is a multiple of 1/255 (the image went through PNG/PPM or bytes before the PFM)",
+             "seen in the values", 0.0, 1);
+    else if (all_values(img, is_8bit_srgb))
+        keep(d, "quantised to 8 bits through the sRGB curve (an 8-bit image decoded back to linear)", "seen in the values", 0.0, 1);
+    if (is_grey(img, 1e-6) && !is_grey(ref, 1e-2))
+        keep(d, "grey instead of colour", "R = G = B in every pixel of the image, the reference is in colour", 0.0, 1);
+    for (i = 0; i < nvalues(img); i++) ones += img->px[i] == 1.0f;
+    if (max_value(img) <= 1.0f && rmax > 1.05f && ones > 0) {
+        snprintf(ev, sizeof ev, "no value above 1 and %zu at exactly 1, while the reference reaches %.3g", ones, rmax);
+        keep(d, "values clamped at 1 (radiance has no maximum: an emitter seen directly is far above 1)", ev, 0.0, 1);
+    }
+}
+
+/* ---- the catalogue ---- */
+
+static int by_strength(const void *pa, const void *pb)
+{
+    const grade_hypothesis *a = pa, *b = pb;
+    if (a->passes != b->passes) return b->passes - a->passes;
+    return (a->excess > b->excess) - (a->excess < b->excess);
+}
+
+/* The relative bias fitted to the whole image, channels averaged, as a factor (1 + eps). */
+static double fitted_factor(const image *img, const grade_refs *refs, const grade_opts *o, int *oom)
+{
+    grade_report r;
+    double f;
+    if (grade_compute(&r, img, refs->ref, refs->var, o)) { *oom = 1; return 1.0; }
+    f = 1.0 + (r.image_eps[0] + r.image_eps[1] + r.image_eps[2]) / 3.0;
+    grade_free(&r);
+    return f;
+}
+
+int grade_diagnose(const image *img, const grade_refs *refs, const grade_opts *o, double excess0,
+                   grade_hypothesis *out, int max)
+{
+    diag d;
+    memset(&d, 0, sizeof d);
+    d.img = img;
+    d.refs = refs;
+    d.o = o;
+    d.excess0 = excess0;
+    d.out = out;
+    d.max = max;
+    if (img_alloc(&d.a, img->w, img->h) || img_alloc(&d.b, img->w, img->h)) {
+        img_free(&d.a);
+        return -1;
+    }
+    try_values(&d);
+    try_geometry(&d);
+    try_curves(&d);
+    try_bounces(&d);
+    try_factors(&d, fitted_factor(img, refs, o, &d.oom));
+    img_free(&d.a);
+    img_free(&d.b);
+    if (d.oom) return -1;
+    qsort(out, (size_t)d.n, sizeof *out, by_strength);
+    return d.n;
+}

@@ -1,0 +1,202 @@
+/* grade_print.c — the verdict in words (see grade_print.h). Positions are in pixels with y = 0 the
+ * top row, as an image viewer shows them. */
+#include "cmd/grade_print.h"
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+static const char *const CHANNELS[3] = {"red", "green", "blue"};
+
+/* Channel-averaged relative difference over the groups of one sign (0: over the whole image). */
+static double relative_diff(const grade_report *r, const grade_block *g, int ng, int sign)
+{
+    double d = 0.0, ref = 0.0;
+    int k, ch;
+    if (sign == 0) {
+        ref = r->image_ref[0] + r->image_ref[1] + r->image_ref[2];
+        return ref != 0.0 ? (r->image_diff[0] + r->image_diff[1] + r->image_diff[2]) / ref : 0.0;
+    }
+    for (k = 0; k < ng; k++) {
+        if (g[k].sign != sign) continue;
+        for (ch = 0; ch < 3; ch++) { d += g[k].n * g[k].diff[ch]; ref += g[k].n * g[k].ref[ch]; }
+    }
+    return ref != 0.0 ? d / ref : 0.0;
+}
+
+/* Where a box [lo, hi) lies along a side of the given size: 0, 1, 2 for the thirds, -1 if it spans. */
+static int third(int lo, int hi, int size)
+{
+    if (3 * (hi - lo) > 2 * size) return -1;
+    return (int)(3L * (lo + hi) / (2L * size));
+}
+
+static void describe_box(char *s, size_t cap, int x0, int y0, int x1, int y1, int w, int h)
+{
+    static const char *rows[] = {"top", "middle", "bottom"}, *cols[] = {"left", "centre", "right"};
+    int tx = third(x0, x1, w), ty = third(y0, y1, h);
+    if (tx < 0 && ty < 0) snprintf(s, cap, "most of the image");
+    else if (tx < 0) snprintf(s, cap, ty == 1 ? "a band across the middle" : "the %s", rows[ty]);
+    else if (ty < 0) snprintf(s, cap, tx == 1 ? "a band down the centre" : "the %s side", cols[tx]);
+    else if (tx == 1 && ty == 1) snprintf(s, cap, "the centre");
+    else snprintf(s, cap, "the %s-%s", rows[ty], cols[tx]);
+}
+
+/* The box around the groups of one sign, its area in pixels and the number of groups; 0 if none. */
+static int sign_box(const grade_block *g, int ng, int sign, int box[4], long *area)
+{
+    int k, n = 0;
+    box[0] = box[1] = 1 << 30;
+    box[2] = box[3] = 0;
+    *area = 0;
+    for (k = 0; k < ng; k++) {
+        if (g[k].sign != sign) continue;
+        n++;
+        *area += g[k].n;
+        if (g[k].x0 < box[0]) box[0] = g[k].x0;
+        if (g[k].y0 < box[1]) box[1] = g[k].y0;
+        if (g[k].x1 > box[2]) box[2] = g[k].x1;
+        if (g[k].y1 > box[3]) box[3] = g[k].y1;
+    }
+    return n;
+}
+
+/* One line for the significant blocks of one sign: how many, where, by how much. */
+static void print_blocks(const grade_report *r, int sign)
+{
+    int b[4], n = sign_box(r->blocks, r->nblocks, sign, b, &(long){0});
+    char where[64];
+    if (n == 0) return;
+    describe_box(where, sizeof where, b[0], b[1], b[2], b[3], r->w, r->h);
+    printf("  %s in %d of %d blocks, within x %d..%d, y %d..%d (%s): %+.2f%% there\n", sign > 0 ? "brighter" : "darker", n,
+           r->nblocks, b[0], b[2] - 1, b[1], b[3] - 1, where, 100.0 * relative_diff(r, r->blocks, r->nblocks, sign));
+}
+
+/* One line per significant level: its luminance range, its pixels, where they are, by how much. */
+static void print_levels(const grade_report *r)
+{
+    int k;
+    char where[64];
+    for (k = 0; k < r->nlevels; k++) {
+        const grade_block *g = &r->levels[k];
+        double rel, ref = g->ref[0] + g->ref[1] + g->ref[2];
+        if (!g->sign) continue;
+        rel = ref != 0.0 ? (g->diff[0] + g->diff[1] + g->diff[2]) / ref : 0.0;
+        describe_box(where, sizeof where, g->x0, g->y0, g->x1, g->y1, r->w, r->h);
+        printf("  %s where the reference's luminance is %.3g to %.3g: %ld pixels (%.1f%% of the image) within x %d..%d, "
+               "y %d..%d (%s): %+.2f%% there\n", g->sign > 0 ? "brighter" : "darker", g->lum_lo, g->lum_hi, g->n,
+               100.0 * g->n / ((double)r->w * r->h), g->x0, g->x1 - 1, g->y0, g->y1 - 1, where, 100.0 * rel);
+    }
+}
+
+/* The whole-image line: the fitted relative bias per channel, and the plain mean difference. */
+static void print_image_test(const grade_report *r)
+{
+    int ch;
+    if (!r->image_nfit) {
+        printf("whole image: no relative-bias fit (no block has noise to weigh it)\n");
+    } else {
+        printf("whole image: relative bias fitted to the block means (weights ref / noise):");
+        for (ch = 0; ch < 3; ch++) printf(" %c %+.2f%% +- %.2f%%", "RGB"[ch], 100 * r->image_eps[ch], 100 * r->image_eps_se[ch]);
+        printf("; z %+.2f %+.2f %+.2f, limit |z| %.2f (level %.2g per channel)\n", r->image_z[0], r->image_z[1], r->image_z[2],
+               r->image_zcrit, r->image_level);
+    }
+    printf("             (plain mean of image - ref %+.4g %+.4g %+.4g, %+.2f%% of the reference's mean)\n",
+           r->image_diff[0], r->image_diff[1], r->image_diff[2], 100.0 * relative_diff(r, NULL, 0, 0));
+}
+
+static void print_tests(const grade_report *r, const char *image, const char *ref, const grade_opts *o)
+{
+    int full = r->blocks[0].x1 - r->blocks[0].x0;
+    printf("pathlab grade: %s against %s, %dx%d pixels", image, ref, r->w, r->h);
+    if (o->spp) printf(", %d spp", o->spp);
+    if (o->ref_spp) printf(" (reference %d spp)", o->ref_spp);
+    printf("\nalpha %g, family-wise over 3 families of tests, alpha/3 each, Sidak within each:\n", r->alpha);
+    print_image_test(r);
+    printf("blocks of %dx%d pixels: %d blocks x 3 channels, max |t| %.2f, limit |t| %.2f (Student, %d df, level %.2g per test): "
+           "%d brighter, %d darker\n", full, full, r->nblocks, r->block_tmax, r->block_tcrit, full * full - 1, r->block_level,
+           r->nbrighter, r->ndarker);
+    printf("levels (pixels grouped by the reference's luminance, one octave each): %d levels x 3 channels, largest |t| / limit "
+           "%.2f (level %.2g per test): %d brighter, %d darker\n", r->nlevels_tested, r->level_excess, r->level_level,
+           r->level_brighter, r->level_darker);
+    printf("exact pixels (the reference has no noise there%s): %ld, compared as numbers (|d| <= 1e-4 |ref| + 1e-6 mean): "
+           "%ld differ\n", r->exact_from_var ? ": its variance is 0" : ", guessed: no REF_var.pfm", r->nexact, r->exact_fail);
+    if (r->floor_k[0] > 0.0)
+        printf("noise floor: at least %.3g %.3g %.3g x the reference's variance per pixel (robust fit; guards rare-event noise)\n",
+               r->floor_k[0], r->floor_k[1], r->floor_k[2]);
+    if (r->pixel_test)
+        printf("pixels (information only, not in the verdict; assumes the reference's estimator at %d spp): "
+               "%ld of %ld pixel-channels beyond |z| %.2f\n", o->spp, r->pixel_fail, r->pixel_n, r->pixel_zcrit);
+}
+
+static void print_verdict(const grade_report *r)
+{
+    long n = 3L * r->w * r->h;
+    int ch, worst = 0;
+    if (!grade_failed(r)) {
+        printf("PASS: the difference is consistent with noise (alpha %g; %ld pixel-channels, %d block, %d level and 3 whole-image tests)\n",
+               r->alpha, n, 3 * r->nblocks, 3 * r->nlevels_tested);
+        return;
+    }
+    printf("FAIL: biased (alpha %g; %ld pixel-channels, %d block, %d level and 3 whole-image tests)\n", r->alpha, n,
+           3 * r->nblocks, 3 * r->nlevels_tested);
+    if (r->exact_fail)
+        printf("  %ld of %ld exact pixels differ; the worst at x %d, y %d: %.4g %.4g %.4g, the reference %.4g %.4g %.4g\n",
+               r->exact_fail, r->nexact, r->exact_x, r->exact_y, r->exact_img[0], r->exact_img[1], r->exact_img[2],
+               r->exact_ref[0], r->exact_ref[1], r->exact_ref[2]);
+    for (ch = 1; ch < 3; ch++) if (fabs(r->image_z[ch]) > fabs(r->image_z[worst])) worst = ch;
+    if (r->image_fail)
+        printf("  %s over the whole image: %+.2f%% +- %.2f%% in %s (|z| %.1f > %.2f)\n", r->image_z[worst] > 0 ? "brighter" : "darker",
+               100 * r->image_eps[worst], 100 * r->image_eps_se[worst], CHANNELS[worst], fabs(r->image_z[worst]), r->image_zcrit);
+    print_blocks(r, 1);
+    print_blocks(r, -1);
+    print_levels(r);
+    if (r->image_fail && !r->nbrighter && !r->ndarker && !r->level_brighter && !r->level_darker)
+        printf("  no block or level alone is significant: the bias is spread over the image\n");
+}
+
+void grade_print_report(const grade_report *r, const char *image, const char *ref, const grade_opts *o)
+{
+    print_tests(r, image, ref, o);
+    print_verdict(r);
+}
+
+void grade_print_hypotheses(const grade_hypothesis *h, int n)
+{
+    int k;
+    if (n == 0) printf("likely mistake: none of the catalogue explains the difference (docs/grading.md lists it)\n");
+    for (k = 0; k < n; k++) printf("likely mistake: %s\n    evidence: %s\n", h[k].what, h[k].evidence);
+}
+
+void grade_fill_row(grade_row *row, const grade_report *r)
+{
+    int ch, worst = 0, b[4];
+    long area;
+    row->w = r->w;
+    row->h = r->h;
+    for (ch = 1; ch < 3; ch++) if (fabs(r->image_z[ch]) > fabs(r->image_z[worst])) worst = ch;
+    row->bias = r->image_eps[worst];
+    row->bias_se = r->image_eps_se[worst];
+    snprintf(row->channel, sizeof row->channel, "%s", CHANNELS[worst]);
+    if (!r->image_fail && grade_failed(r)) {   /* the fit misses it (few pixels): the plain mean says how much */
+        row->bias = relative_diff(r, NULL, 0, 0);
+        row->bias_se = -1.0;
+        snprintf(row->channel, sizeof row->channel, "mean");
+    }
+    row->where[0] = '\0';
+    if (r->exact_fail) snprintf(row->where, sizeof row->where, "%ld exact pixels, worst at x %d y %d", r->exact_fail, r->exact_x, r->exact_y);
+    else if (sign_box(r->blocks, r->nblocks, -1, b, &area) || sign_box(r->blocks, r->nblocks, 1, b, &area) ||
+             sign_box(r->levels, r->nlevels, -1, b, &area) || sign_box(r->levels, r->nlevels, 1, b, &area))
+        describe_box(row->where, sizeof row->where, b[0], b[1], b[2], b[3], r->w, r->h);
+    else if (r->image_fail) snprintf(row->where, sizeof row->where, "spread over the image");
+}
+
+void grade_print_row(const grade_row *row)
+{
+    if (row->status == 2) { printf("%s: UNREADABLE, %s\n", row->path, row->mistake); return; }
+    if (row->status == 0) { printf("%s: PASS (%+.2f%% +- %.2f%% in %s)\n", row->path, 100 * row->bias, 100 * row->bias_se, row->channel); return; }
+    printf("%s: FAIL", row->path);
+    if (row->channel[0] && row->bias_se < 0.0) printf(", %+.2f%% on the image's mean", 100 * row->bias);
+    else if (row->channel[0]) printf(", %+.2f%% +- %.2f%% in %s", 100 * row->bias, 100 * row->bias_se, row->channel);
+    if (row->where[0]) printf(" (%s)", row->where);
+    printf("%s%s\n", row->mistake[0] ? "; likely: " : "", row->mistake);
+}

@@ -1,0 +1,28 @@
+/* grade_print.h — grade's words: the tests and the verdict of one image in full, and the one-line
+ * summary (a row) that the class report and the class's lines share. */
+#ifndef PATHLAB_GRADE_PRINT_H
+#define PATHLAB_GRADE_PRINT_H
+#include "cmd/grade.h"
+#include "cmd/grade_diagnose.h"
+
+/* One graded image, as a row of the class report. */
+typedef struct {
+    const char *path;
+    int status;              /* 0 pass, 1 fail, 2 could not be read */
+    int w, h;
+    double bias, bias_se;    /* relative bias of the channel furthest from 0 (whole-image fit), or when
+                                only blocks or levels fail, the plain mean's relative difference, se -1 */
+    char channel[8];         /* that channel's name, "mean" for the plain mean, "" for no figure */
+    char where[160];         /* where the significant groups are; "" if none */
+    char mistake[400];       /* the likely mistakes, "; " between them; the input error for status 2 */
+} grade_row;
+
+/* The tests that ran, their levels and counts, then the verdict with where and how much. */
+void grade_print_report(const grade_report *r, const char *image, const char *ref, const grade_opts *o);
+/* The likely mistakes, one per line ("likely: ..."), or a line saying none of the catalogue fits. */
+void grade_print_hypotheses(const grade_hypothesis *h, int n);
+/* Fills the row's bias and where from a report. */
+void grade_fill_row(grade_row *row, const grade_report *r);
+/* "A.pfm: FAIL, darker -54.4% +- 0.6% in green (the top-centre); likely: no L0 ..." */
+void grade_print_row(const grade_row *row);
+#endif

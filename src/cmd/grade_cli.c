@@ -112,10 +112,6 @@ static int check_outputs(const grade_args *a)
         fprintf(stderr, "pathlab grade: --report %s: use a name ending in .md (Markdown) or .csv\n", a->report);
         return 1;
     }
-    if ((a->o.spp > 0) != (a->o.ref_spp > 0)) {
-        fprintf(stderr, "pathlab grade: the per-pixel test needs both --spp N (the image's samples per pixel) and --ref-spp M\n");
-        return 1;
-    }
     return 0;
 }
 
@@ -227,6 +223,7 @@ static int grade_one(grade_row *row, const reference *R, const grade_args *a, in
     memset(row, 0, sizeof *row);
     row->path = a->images[0];
     rc = grade_read_image(&img, row, &R->refs, a->ref);
+    if (rc && loud && a->nimages == 1) grade_print_row(row);
     if (rc) return row->status = rc;
     if (grade_compute(&r, &img, &R->ref, R->refs.var, &a->o)) {
         fprintf(stderr, "pathlab grade: out of memory\n");

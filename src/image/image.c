@@ -353,19 +353,20 @@ static long bytes_left(FILE *f)
     return end - here;
 }
 
-/* "2 x 2 x 3 x 4 = 48 bytes (width x height x channels x 4)" */
+/* "2 x 2 x 3 x 4 = 48 bytes" */
 static void size_text(char *buf, size_t n, const pfm_header *hd, size_t need)
 {
-    snprintf(buf, n, "%ld x %ld x %d x 4 = %zu bytes (width x height x channels x 4)", hd->w, hd->h,
-             hd->channels, need);
+    snprintf(buf, n, "%ld x %ld x %d x 4 = %zu bytes", hd->w, hd->h, hd->channels, need);
 }
 
 static int truncated_error(const char *path, const pfm_header *hd, size_t need, size_t found)
 {
     char s[160];
+    size_t missing = need - found, pixel = 4 * (size_t)hd->channels;
     size_text(s, sizeof s, hd, need);
-    fprintf(stderr, "%s: truncated: expected %s of pixels, found %zu: %zu bytes (%.4g pixels) missing\n",
-            path, s, found, need - found, (double)(need - found) / (4.0 * hd->channels));
+    fprintf(stderr, "%s: truncated: expected %s of pixels (width x height x channels x 4), found %zu: "
+            "%zu bytes missing (%.*f pixel%s)\n", path, s, found, missing, missing % pixel ? 2 : 0,
+            (double)missing / (double)pixel, missing == pixel ? "" : "s");
     return 1;
 }
 
@@ -374,7 +375,7 @@ static int trailing_error(const char *path, const pfm_header *hd, size_t need, l
 {
     char s[160];
     size_text(s, sizeof s, hd, need);
-    fprintf(stderr, "%s: %ld byte%s after the pixel data: expected exactly %s; a second image or a "
+    fprintf(stderr, "%s: %ld byte%s after the pixel data: expected exactly %s (width x height x channels x 4); a second image or a "
             "header written twice?%s\n", path, extra, extra == 1 ? "" : "s", s,
             extra < 4 && HDR_SPACE(first) ? " (or the data starts with a whitespace byte: a space before "
             "the header's last line feed? after the scale, PFM allows exactly one whitespace character)" : "");

@@ -2,6 +2,7 @@
  * byte orders and greyscale, hostile inputs, the sRGB curve, atomic writes, and (when installed)
  * agreement with OpenImageIO's oiiotool, an independent PFM reader. Works in a fresh /tmp folder. */
 #include "image/image.h"
+#include "image/radiance.h"
 #include "check.h"
 #include <dirent.h>
 #include <math.h>
@@ -88,7 +89,7 @@ static void capture_begin(void)
 }
 static const char *capture_end(void)
 {
-    static char text[1024];
+    static char text[4096];
     size_t n;
     FILE *f;
     fflush(stderr);
@@ -215,9 +216,10 @@ static void test_foreign(void)
     ok = img_read_pfm(&im, in_dir("grey-big.pfm")) == 0;
     check(ok && im.px[0] == 0.25f && im.px[2] == 0.25f, "pfm_read_greyscale_big_endian", NULL);
     if (ok) img_free(&im);
-    build_pfm(in_dir("spaced.pfm"), " \n\tPF \t 2\r\n\n 2 \n -1.0\n", v, 12, 0);
+    build_pfm(in_dir("spaced.pfm"), "PF \t\n2\n 2\t\n-1.0\n", v, 12, 0);
     ok = img_read_pfm(&im, in_dir("spaced.pfm")) == 0;
-    check(ok && im.px[0] == 7 && im.px[11] == 6, "pfm_read_loose_whitespace", "extra spaces, tabs, CR, blank lines");
+    check(ok && im.px[0] == 7 && im.px[11] == 6, "pfm_read_loose_whitespace",
+          "spaces and tabs, width and height on two lines");
     if (ok) img_free(&im);
 }
 
@@ -265,11 +267,15 @@ static void test_bad_files(void)
     build_pfm(in_dir("scalenan.pfm"), "PF\n2 2\nnan\n", v, 12, 0);
     expect_read_error("pfm_nan_scale", in_dir("scalenan.pfm"), "bad scale");
     build_pfm(in_dir("short.pfm"), "PF\n2 2\n-1.0\n", v, 5, 0);
-    expect_read_error("pfm_truncated_pixels", in_dir("short.pfm"), "truncated (expected 48 bytes of pixels, found 20)");
+    expect_read_error("pfm_truncated_pixels", in_dir("short.pfm"),
+                      "truncated: expected 2 x 2 x 3 x 4 = 48 bytes of pixels (width x height x channels x 4), "
+                      "found 20: 28 bytes missing (2.33 pixels)");
     build_pfm(in_dir("shortgrey.pfm"), "Pf\n4 4\n-1.0\n", v, 3, 0);
-    expect_read_error("pfm_truncated_greyscale", in_dir("shortgrey.pfm"), "expected 64 bytes of pixels, found 12");
+    expect_read_error("pfm_truncated_greyscale", in_dir("shortgrey.pfm"),
+                      "4 x 4 x 1 x 4 = 64 bytes of pixels (width x height x channels x 4), found 12: 52 bytes missing (13 pixels)");
     build_pfm(in_dir("big1.pfm"), "PF\n1000 1000\n-1.0\n", v, 12, 0);
-    expect_read_error("pfm_lying_header_no_big_alloc", in_dir("big1.pfm"), "expected 12000000 bytes of pixels, found 48");
+    expect_read_error("pfm_lying_header_no_big_alloc", in_dir("big1.pfm"),
+                      "1000 x 1000 x 3 x 4 = 12000000 bytes of pixels (width x height x channels x 4), found 48");
     expect_read_error("pfm_directory", dir, "cannot read: Is a directory");
 
     /* Fuzz: random bytes, and a valid file with random bytes changed or cut short. Success is
@@ -484,6 +490,164 @@ static void test_extension(void)
           "img_format_of: .pfm, .ppm, .png in any case; nothing else", NULL);
 }
 
+/* n values of a plausible radiance image: zeros and ordinary values with arbitrary mantissas. */
+static void radiance_values(float *v, int n)
+{
+    int i;
+    for (i = 0; i < n; i++) v[i] = i % 7 == 0 ? 0.0f : (float)(rng() % 100000) / 3000.0f;
+}
+
+/* The header's mistakes: text-mode line ends, blank and comment lines, no whitespace after the scale. */
+static void test_header_mistakes(void)
+{
+    float v[36];
+    radiance_values(v, 36);
+    build_pfm(in_dir("crlf.pfm"), "PF\r\n4 3\r\n-1.0\r\n", v, 36, 0);
+    expect_read_error("pfm_crlf_header", in_dir("crlf.pfm"),
+                      "the header's lines end with CR LF (a file written in text mode on Windows?): PFM headers "
+                      "end lines with LF only, and the data is shifted by a byte; open the file in binary mode (\"wb\")");
+    build_pfm(in_dir("crlast.pfm"), "PF\n4 3\n-1.0\r\n", v, 36, 0);
+    expect_read_error("pfm_cr_after_scale", in_dir("crlast.pfm"), "the header's lines end with CR LF");
+    build_pfm(in_dir("crmid.pfm"), "PF\n4 3\r\n-1.0\n", v, 36, 0);
+    expect_read_error("pfm_cr_after_height", in_dir("crmid.pfm"), "the header's lines end with CR LF");
+    build_pfm(in_dir("blank.pfm"), "PF\n4 3\n\n-1.0\n", v, 36, 0);
+    expect_read_error("pfm_blank_header_line", in_dir("blank.pfm"), "the header has a blank line");
+    build_pfm(in_dir("blank2.pfm"), "PF\n \n4 3\n-1.0\n", v, 36, 0);
+    expect_read_error("pfm_blank_line_with_a_space", in_dir("blank2.pfm"), "the header has a blank line");
+    build_pfm(in_dir("comment.pfm"), "PF\n# written by my renderer\n4 3\n-1.0\n", v, 36, 0);
+    expect_read_error("pfm_comment_in_header", in_dir("comment.pfm"), "the header has a comment ('#'): PFM headers have none");
+    build_pfm(in_dir("leading.pfm"), "\nPF\n4 3\n-1.0\n", v, 36, 0);
+    expect_read_error("pfm_magic_not_first", in_dir("leading.pfm"), "not a PFM file (it must begin with \"PF\" or \"Pf\")");
+    v[0] = 0.0f;   /* the data starts with a 0 byte */
+    build_pfm(in_dir("nolf.pfm"), "PF\n4 3\n-1.0", v, 36, 0);
+    expect_read_error("pfm_no_whitespace_after_scale", in_dir("nolf.pfm"),
+                      "no line feed after the scale '-1.0': the pixel data must follow the scale and exactly one "
+                      "whitespace character (a line feed)");
+}
+
+/* The data's mistakes: bytes after the pixels, and a scale whose sign gives the wrong byte order. */
+static void test_data_mistakes(void)
+{
+    float v[40], one[12] = { 1, 1, 1, 0.5f, 0.5f, 0.5f, 2, 2, 2, 0.25f, 0.25f, 0.25f };
+    unsigned char junk[12 + 16 * 16 * 12];
+    size_t i;
+    radiance_values(v, 40);
+    build_pfm(in_dir("trail.pfm"), "PF\n4 3\n-1.0\n", v, 39, 0);
+    expect_read_error("pfm_trailing_bytes", in_dir("trail.pfm"),
+                      "12 bytes after the pixel data: expected exactly 4 x 3 x 3 x 4 = 144 bytes (width x height x "
+                      "channels x 4); a second image or a header written twice?");
+    build_pfm(in_dir("trailgrey.pfm"), "Pf\n4 3\n-1\n", v, 36, 0);
+    expect_read_error("pfm_trailing_bytes_greyscale", in_dir("trailgrey.pfm"),
+                      "96 bytes after the pixel data: expected exactly 4 x 3 x 1 x 4 = 48 bytes");
+    v[0] = 0.0f;
+    build_pfm(in_dir("space.pfm"), "PF\n4 3\n-1.0 \n", v, 36, 0);
+    expect_read_error("pfm_space_before_last_line_feed", in_dir("space.pfm"),
+                      "1 byte after the pixel data: expected exactly 4 x 3 x 3 x 4 = 144 bytes");
+    expect_read_error("pfm_space_before_last_line_feed_hint", in_dir("space.pfm"),
+                      "a space before the header's last line feed? after the scale, PFM allows exactly one whitespace");
+    radiance_values(v, 36);
+    build_pfm(in_dir("le-said-be.pfm"), "PF\n4 3\n1.0\n", v, 36, 0);
+    expect_read_error("pfm_byte_order_little_said_big", in_dir("le-said-be.pfm"),
+                      "the header's scale +1.0 says big-endian, but read so the values are absurd (up to ");
+    expect_read_error("pfm_byte_order_little_said_big_advice", in_dir("le-said-be.pfm"),
+                      "; read little-endian they are ordinary (0 to 3");
+    expect_read_error("pfm_byte_order_little_said_big_fix", in_dir("le-said-be.pfm"),
+                      ": write the scale as -1.0 for little-endian data");
+    build_pfm(in_dir("be-said-le.pfm"), "PF\n4 3\n-1\n", v, 36, 1);
+    expect_read_error("pfm_byte_order_big_said_little", in_dir("be-said-le.pfm"),
+                      "the header's scale -1 says little-endian, but read so the values are absurd");
+    expect_read_error("pfm_byte_order_big_said_little_fix", in_dir("be-said-le.pfm"),
+                      "read big-endian they are ordinary (0 to 3");
+    build_pfm(in_dir("round-said-be.pfm"), "Pf\n4 3\n2.0\n", one, 12, 0);
+    expect_read_error("pfm_byte_order_exact_values_denormal", in_dir("round-said-be.pfm"),
+                      "12 of the 12 nonzero values are NaN, infinite, denormal or beyond 1e20); read little-endian "
+                      "they are ordinary (0.25 to 2)");
+    memcpy(junk, "PF\n16 16\n-1\n", 12);
+    for (i = 12; i < sizeof junk; i++) junk[i] = (unsigned char)rng();
+    spit(in_dir("random.pfm"), junk, sizeof junk);
+    expect_read_error("pfm_random_data_not_radiance", in_dir("random.pfm"),
+                      "the pixel data is not float radiance: read little-endian (as the header's scale -1 says), ");
+}
+
+/* img_read_pfm_info: the header's facts; and every PFM of ref/ reads, as clean radiance. */
+static void test_info_and_refs(void)
+{
+    float g[6] = { 0.25f, 1.5f, 3e10f, 7, 8, 9 };
+    img_pfm_info info = { 0, 0, 0.0 };
+    image im;
+    DIR *d;
+    struct dirent *e;
+    char path[300];
+    int ok, n = 0, bad = 0;
+    build_pfm(in_dir("info.pfm"), "Pf\n3 2\n2.5\n", g, 6, 1);
+    ok = img_read_pfm_info(&im, in_dir("info.pfm"), &info) == 0;
+    check(ok && info.channels == 1 && info.big_endian == 1 && info.scale == 2.5 && im.px[0] == 7,
+          "pfm_info_greyscale_big_endian", "channels %d, big_endian %d, scale %g", info.channels, info.big_endian, info.scale);
+    if (ok) img_free(&im);
+    ok = img_read_pfm_info(&im, "ref/cornell.pfm", &info) == 0;
+    check(ok && info.channels == 3 && info.big_endian == 0 && info.scale == -1.0 && im.w == 64,
+          "pfm_info_colour_little_endian", "ref/cornell.pfm: channels %d, big_endian %d, scale %g",
+          info.channels, info.big_endian, info.scale);
+    if (ok) img_free(&im);
+    d = opendir("ref");
+    while (d && (e = readdir(d))) {
+        size_t len = strlen(e->d_name);
+        if (len < 5 || strcmp(e->d_name + len - 4, ".pfm") != 0) continue;
+        snprintf(path, sizeof path, "ref/%s", e->d_name);
+        n++;
+        if (img_read_pfm_info(&im, path, &info) != 0 || info.channels != 3) { bad++; continue; }
+        if (img_check_radiance(&im, path, 3) != 0) bad++;
+        img_free(&im);
+    }
+    if (d) closedir(d);
+    check(n >= 10 && bad == 0, "pfm_every_ref_reads", "%d files in ref/, %d refused or not clean radiance", n, bad);
+}
+
+/* img_check_radiance on an image of 0.5 with one mistake each; msg must contain want. */
+static void expect_radiance(const char *name, const image *im, int max_listed, int want_rc, const char *want)
+{
+    const char *msg;
+    int r;
+    capture_begin();
+    r = img_check_radiance(im, "x.pfm", max_listed);
+    msg = capture_end();
+    check((r != 0) == want_rc && (want ? strstr(msg, want) != NULL : msg[0] == '\0'), name,
+          "returned %d; message: %.*s", r, (int)strcspn(msg, "\n"), msg);
+}
+
+static void test_radiance(void)
+{
+    image im;
+    int i;
+    img_alloc(&im, 4, 3);
+    for (i = 0; i < 36; i++) im.px[i] = 0.5f;
+    im.px[5] = -0.0f;
+    expect_radiance("radiance_clean_silent", &im, 3, 0, NULL);
+    im.px[3 * 1 + 1] = NAN;    /* x 1, y 0, green */
+    im.px[3 * 4 + 0] = NAN;    /* x 0, y 1, red */
+    im.px[3 * 5 + 2] = NAN;    /* x 1, y 1, blue */
+    im.px[3 * 6 + 0] = NAN;    /* x 2, y 1, red */
+    expect_radiance("radiance_nan_positions", &im, 3, 1,
+                    "x.pfm: 4 pixel-channels are NaN, first at x 1, y 0 (green), x 0, y 1 (red), x 1, y 1 (blue), "
+                    "...; y = 0 is the top row\n");
+    expect_radiance("radiance_nan_all_listed", &im, 4, 1, "x 1, y 1 (blue), x 2, y 1 (red); y = 0 is the top row\n");
+    im.px[3 * 11 + 2] = INFINITY;
+    im.px[0] = -INFINITY;
+    expect_radiance("radiance_plus_inf", &im, 3, 1, "x.pfm: 1 pixel-channel is +Inf, at x 3, y 2 (blue); y = 0 is the top row\n");
+    expect_radiance("radiance_minus_inf", &im, 3, 1, "x.pfm: 1 pixel-channel is -Inf, at x 0, y 0 (red); y = 0 is the top row\n");
+    expect_radiance("radiance_error_hint", &im, 3, 1, "x.pfm: radiance is a finite number >= 0 in every pixel-channel");
+    for (i = 0; i < 36; i++) im.px[i] = 0.5f;
+    im.px[7] = -0.25f;           /* x 2, y 0, green */
+    expect_radiance("radiance_negative", &im, 3, 1, "x.pfm: 1 pixel-channel is negative (below -1e-06 x the mean 0.493, "
+                    "down to -0.25), at x 2, y 0 (green -0.25); y = 0 is the top row\n");
+    im.px[7] = -6e-7f;           /* beyond 1e-6 x the mean (about 0.5) */
+    expect_radiance("radiance_small_negative_beyond_tolerance", &im, 3, 1, "1 pixel-channel is negative");
+    im.px[7] = -4e-7f;           /* within the tolerance: a warning, no error */
+    expect_radiance("radiance_tiny_negative_warning", &im, 3, 0, "x.pfm: warning: 1 pixel-channel is slightly negative "
+                    "(down to -4e-07, within 1e-06 x the mean 0.486: float rounding?), at x 2, y 0 (green -4e-07)");
+    img_free(&im);
+}
+
 int main(void)
 {
     strcpy(dir, "/tmp/test_image.XXXXXX");
@@ -495,6 +659,10 @@ int main(void)
     test_layout();
     test_foreign();
     test_bad_files();
+    test_header_mistakes();
+    test_data_mistakes();
+    test_info_and_refs();
+    test_radiance();
     test_srgb_ppm();
     test_atomic();
     test_oiiotool();

@@ -3,6 +3,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include "image/radiance.h"
 #include "util/cli.h"
 
 int diff_compute(diff_stats *s, const image *a, const image *ref)
@@ -65,6 +66,28 @@ static void print_stats(const diff_stats *s)
            s->rmse, s->relmse, s->mae, s->max, s->psnr, s->mean, s->mean_se);
 }
 
+static const char *kind_of(const img_pfm_info *info)
+{
+    return info->channels == 1 ? "greyscale (\"Pf\", 1 channel)" : "colour (\"PF\", 3 channels)";
+}
+
+/* Reads A and REF, refusing a greyscale image against a colour one (or the other way round) and
+ * an A that is not radiance (NaN, infinite or negative values: image/radiance.h). 0 or 1. */
+static int read_pair(image im[2], const char *const path[2])
+{
+    img_pfm_info info[2];
+    if (img_read_pfm_info(&im[0], path[0], &info[0])) return 1;
+    if (img_read_pfm_info(&im[1], path[1], &info[1])) { img_free(&im[0]); return 1; }
+    if (info[0].channels != info[1].channels)
+        fprintf(stderr, "pathlab diff: %s is %s but %s is %s: compare images of the same kind\n", path[0],
+                kind_of(&info[0]), path[1], kind_of(&info[1]));
+    else if (img_check_radiance(&im[0], path[0], 5) == 0)
+        return 0;
+    img_free(&im[0]);
+    img_free(&im[1]);
+    return 1;
+}
+
 int diff_main(int argc, char **argv)
 {
     const char *path[2], *heat = NULL;
@@ -82,8 +105,7 @@ int diff_main(int argc, char **argv)
         fprintf(stderr, "pathlab diff: --heatmap %s: unknown image format (use .pfm, .ppm or .png)\n", heat);
         return 2;
     }
-    if (img_read_pfm(&im[0], path[0])) return 2;
-    if (img_read_pfm(&im[1], path[1])) { img_free(&im[0]); return 2; }
+    if (read_pair(im, path)) return 2;
     if (diff_compute(&s, &im[0], &im[1])) {
         fprintf(stderr, "pathlab diff: %s is %dx%d but %s is %dx%d\n", path[0], im[0].w, im[0].h, path[1], im[1].w, im[1].h);
         rc = 2;

@@ -16,6 +16,7 @@
 #include "image/image.h"
 #include <ctype.h>
 #include <errno.h>
+#include <float.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -201,21 +202,70 @@ int img_write_pfm(const image *im, const char *path)
     return write_rows(im, path, "PF\n%d %d\n-1.0\n", 12, 1, encode_pfm_row, 1.0f);
 }
 
-/* Reads one whitespace-separated header token into tok (at most size-1 chars).
- * Returns 0 on success, -1 at end of file, -2 when the token is too long. */
-static int read_token(FILE *f, char *tok, size_t size)
+/* The PFM header is read strictly, because a file that is almost right would otherwise be read
+ * with its pixels shifted by a byte or in the wrong byte order, and graded as garbage:
+ *   "PF" or "Pf" at the very start of the file, then the width, the height and the scale, separated
+ *   by spaces, tabs or single line feeds (no blank line, no '#' comment, no CR), then exactly ONE
+ *   whitespace character, then exactly w*h*channels*4 bytes of pixels and nothing after them. */
+#define HDR_SPACE(c) ((c) == ' ' || (c) == '\t' || (c) == '\n' || (c) == '\r' || (c) == '\v' || (c) == '\f')
+
+typedef struct {
+    int channels, big_endian;
+    long w, h;
+    double scale;
+    char scale_text[64];   /* the scale as written in the header */
+} pfm_header;
+
+/* Reads one header token (at most size-1 printable characters) and, into *end, the character that
+ * ended it (whitespace or EOF). Returns 0; -1 at the end of the file before any character; -2 when
+ * the token is too long; -3 at a byte that is neither printable nor whitespace (binary data). */
+static int read_token(FILE *f, char *tok, size_t size, int *end)
 {
     size_t n = 0;
-    int c;
-    do c = getc(f); while (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f');
+    int c = getc(f);
+    tok[0] = '\0';
+    *end = c;
     if (c == EOF) return -1;
-    while (c != EOF && !(c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f')) {
+    while (c != EOF && !HDR_SPACE(c)) {
+        *end = c;
+        if (c < 0x21 || c > 0x7e) return -3;
         if (n + 1 >= size) return -2;
         tok[n++] = (char)c;
+        tok[n] = '\0';
         c = getc(f);
     }
-    tok[n] = '\0';
-    /* The single whitespace after the last token was consumed here: pixel data starts next. */
+    *end = c;
+    return 0;
+}
+
+static int crlf_error(const char *path)
+{
+    fprintf(stderr, "%s: the header's lines end with CR LF (a file written in text mode on Windows?): "
+            "PFM headers end lines with LF only, and the data is shifted by a byte; open the file in "
+            "binary mode (\"wb\")\n", path);
+    return 1;
+}
+
+/* Skips the whitespace between two header tokens, from c, the character that ended the previous
+ * token. A CR, a blank line or a '#' comment is an error: printed, and 1 returned. */
+static int skip_separator(FILE *f, const char *path, int c)
+{
+    int newlines = 0;
+    while (c != EOF && HDR_SPACE(c)) {
+        if (c == '\r') return crlf_error(path);
+        if (c == '\n' && ++newlines == 2) {
+            fprintf(stderr, "%s: the header has a blank line: a PFM header is \"PF\" (or \"Pf\"), "
+                    "\"WIDTH HEIGHT\" and the scale, one per line, with nothing between them\n", path);
+            return 1;
+        }
+        c = getc(f);
+    }
+    if (c == '#') {
+        fprintf(stderr, "%s: the header has a comment ('#'): PFM headers have none, only \"PF\" (or "
+                "\"Pf\"), \"WIDTH HEIGHT\" and the scale, one per line\n", path);
+        return 1;
+    }
+    if (c != EOF) ungetc(c, f);
     return 0;
 }
 
@@ -228,24 +278,60 @@ static int parse_long(const char *tok, long *v)
     return end != tok && *end == '\0' && errno == 0;
 }
 
-typedef struct { int channels, big_endian; long w, h; } pfm_header;
-
-/* Reads "PF"/"Pf", width, height and scale. Returns 0 or prints the error and returns 1. */
-static int read_pfm_header(FILE *f, const char *path, pfm_header *hd)
+/* "PF" (colour) or "Pf" (greyscale), at the start of the file; *end: the character after it. */
+static int read_magic(FILE *f, const char *path, pfm_header *hd, int *end)
 {
-    char magic[8], ws[32], hs[32], ss[64], *end;
-    double scale;
-    int r = read_token(f, magic, sizeof magic);
+    char magic[8];
+    int r = read_token(f, magic, sizeof magic, end);
     if (r == -1 && ferror(f)) {                 /* e.g. a directory */
         fprintf(stderr, "%s: cannot read: %s\n", path, strerror(errno));
         return 1;
     }
     if (r != 0 || (strcmp(magic, "PF") != 0 && strcmp(magic, "Pf") != 0)) {
-        fprintf(stderr, "%s: not a PFM file\n", path);
+        fprintf(stderr, "%s: not a PFM file (it must begin with \"PF\" or \"Pf\")\n", path);
         return 1;
     }
     hd->channels = magic[1] == 'F' ? 3 : 1;
-    if (read_token(f, ws, sizeof ws) || read_token(f, hs, sizeof hs) || read_token(f, ss, sizeof ss)) {
+    return 0;
+}
+
+/* The scale, then exactly one whitespace character: the pixels start right after it. */
+static int read_scale(FILE *f, const char *path, pfm_header *hd)
+{
+    char *num_end;
+    int end, r = read_token(f, hd->scale_text, sizeof hd->scale_text, &end);
+    if (r == -1) {
+        fprintf(stderr, "%s: truncated or malformed PFM header\n", path);
+        return 1;
+    }
+    hd->scale = strtod(hd->scale_text, &num_end);
+    if (r == -3 && num_end != hd->scale_text && *num_end == '\0') {
+        fprintf(stderr, "%s: no line feed after the scale '%s': the pixel data must follow the scale "
+                "and exactly one whitespace character (a line feed)\n", path, hd->scale_text);
+        return 1;
+    }
+    if (r != 0 || num_end == hd->scale_text || *num_end != '\0' || !(hd->scale - hd->scale == 0.0)
+        || hd->scale == 0.0) {
+        fprintf(stderr, "%s: bad scale '%s' (a nonzero number; negative means little-endian)\n", path,
+                hd->scale_text);
+        return 1;
+    }
+    if (end == '\r') return crlf_error(path);
+    hd->big_endian = hd->scale > 0.0;
+    return 0;
+}
+
+/* Reads "PF"/"Pf", width, height and scale. Returns 0 or prints the error and returns 1. */
+static int read_pfm_header(FILE *f, const char *path, pfm_header *hd)
+{
+    char ws[32], hs[32];
+    int end, r;
+    if (read_magic(f, path, hd, &end) || skip_separator(f, path, end)) return 1;
+    r = read_token(f, ws, sizeof ws, &end);
+    if (r == 0 && skip_separator(f, path, end)) return 1;
+    if (r == 0) r = read_token(f, hs, sizeof hs, &end);
+    if (r == 0 && skip_separator(f, path, end)) return 1;
+    if (r != 0) {
         fprintf(stderr, "%s: truncated or malformed PFM header\n", path);
         return 1;
     }
@@ -254,13 +340,7 @@ static int read_pfm_header(FILE *f, const char *path, pfm_header *hd)
                 path, ws, hs, IMG_MAX_SIDE, IMG_MAX_PIXELS);
         return 1;
     }
-    scale = strtod(ss, &end);
-    if (end == ss || *end != '\0' || !(scale == scale) || scale == 0.0) {
-        fprintf(stderr, "%s: bad scale '%s' (a nonzero number; negative means little-endian)\n", path, ss);
-        return 1;
-    }
-    hd->big_endian = scale > 0.0;
-    return 0;
+    return read_scale(f, path, hd);
 }
 
 /* Bytes left in f from the current position, or -1 when f cannot seek (a pipe). */
@@ -271,6 +351,109 @@ static long bytes_left(FILE *f)
     end = ftell(f);
     if (end < 0 || fseek(f, here, SEEK_SET) != 0) return -1;
     return end - here;
+}
+
+/* "2 x 2 x 3 x 4 = 48 bytes" */
+static void size_text(char *buf, size_t n, const pfm_header *hd, size_t need)
+{
+    snprintf(buf, n, "%ld x %ld x %d x 4 = %zu bytes", hd->w, hd->h, hd->channels, need);
+}
+
+static int truncated_error(const char *path, const pfm_header *hd, size_t need, size_t found)
+{
+    char s[160];
+    size_t missing = need - found, pixel = 4 * (size_t)hd->channels;
+    size_text(s, sizeof s, hd, need);
+    fprintf(stderr, "%s: truncated: expected %s of pixels (width x height x channels x 4), found %zu: "
+            "%zu bytes missing (%.*f pixel%s)\n", path, s, found, missing, missing % pixel ? 2 : 0,
+            (double)missing / (double)pixel, missing == pixel ? "" : "s");
+    return 1;
+}
+
+/* first: the first byte of the pixel data, which hints at one whitespace too many after the scale. */
+static int trailing_error(const char *path, const pfm_header *hd, size_t need, long extra, int first)
+{
+    char s[160];
+    size_text(s, sizeof s, hd, need);
+    fprintf(stderr, "%s: %ld byte%s after the pixel data: expected exactly %s (width x height x channels x 4); a second image or a "
+            "header written twice?%s\n", path, extra, extra == 1 ? "" : "s", s,
+            extra < 4 && HDR_SPACE(first) ? " (or the data starts with a whitespace byte: a space before "
+            "the header's last line feed? after the scale, PFM allows exactly one whitespace character)" : "");
+    return 1;
+}
+
+/* Reads the need bytes of pixels (left: the bytes after the header, -1 if unknown) and makes sure
+ * nothing follows them. Returns 0 or prints the error and returns 1. */
+static int read_pixels(FILE *f, const char *path, const pfm_header *hd, size_t need, long left,
+                       unsigned char *data)
+{
+    size_t got = fread(data, 1, need, f);
+    long extra = 0;
+    if (got < need) {
+        if (ferror(f)) fprintf(stderr, "%s: read error: %s\n", path, strerror(errno));
+        else truncated_error(path, hd, need, got);
+        return 1;
+    }
+    if (left >= 0) extra = left - (long)need;
+    else
+        while (getc(f) != EOF) extra++;
+    if (extra > 0) return trailing_error(path, hd, need, extra, data[0]);
+    return 0;
+}
+
+/* The values of the pixel data read in one byte order: how many are nonzero, how many of those
+ * are NaN or infinite, and how many are absurd for radiance (denormal, or beyond 1e20 in size). */
+typedef struct { size_t nonzero, nonfinite, absurd; double max_abs, lo, hi; } order_stats;
+
+static void order_stats_of(const unsigned char *data, size_t n, int big_endian, order_stats *s)
+{
+    size_t i;
+    s->nonzero = s->nonfinite = s->absurd = 0;
+    s->max_abs = 0.0;
+    s->lo = FLT_MAX;
+    s->hi = -FLT_MAX;
+    for (i = 0; i < n; i++) {
+        float v = get_f32(data + 4 * i, big_endian);
+        double a = v < 0.0f ? -(double)v : (double)v;
+        if (!(v - v == 0.0f)) { s->nonzero++; s->nonfinite++; continue; }
+        if (v < s->lo) s->lo = v;
+        if (v > s->hi) s->hi = v;
+        if (v == 0.0f) continue;
+        s->nonzero++;
+        if (a > 1e20 || a < FLT_MIN) s->absurd++;
+        if (a > s->max_abs) s->max_abs = a;
+    }
+}
+
+/* The header's byte order is wrong when over 1% of the nonzero values read in it are NaN,
+ * infinite or absurd, and at most 1% are absurd read in the other order. When over 10% are absurd
+ * in both orders, the data is not float radiance. Otherwise the values are left to the caller
+ * (image/radiance.h finds NaN, infinite and negative values). Returns 0 or prints and returns 1. */
+static int check_byte_order(const unsigned char *data, size_t n, const pfm_header *hd, const char *path)
+{
+    static const char *const order[2] = { "little", "big" };
+    const char *sign = hd->scale_text[0] == '-' || hd->scale_text[0] == '+' ? "" : "+";
+    order_stats as, other;
+    order_stats_of(data, n, hd->big_endian, &as);
+    if ((as.absurd + as.nonfinite) * 100 <= as.nonzero) return 0;
+    order_stats_of(data, n, !hd->big_endian, &other);
+    if (other.absurd * 100 <= other.nonzero) {
+        fprintf(stderr, "%s: the header's scale %s%s says %s-endian, but read so the values are absurd "
+                "(up to %.2g; %zu of the %zu nonzero values are NaN, infinite, denormal or beyond 1e20); "
+                "read %s-endian they are ordinary (%.3g to %.3g): write the scale as %s for %s-endian data\n",
+                path, sign, hd->scale_text, order[hd->big_endian], as.max_abs, as.absurd + as.nonfinite,
+                as.nonzero, order[!hd->big_endian], other.lo, other.hi, hd->big_endian ? "-1.0" : "1.0",
+                order[!hd->big_endian]);
+        return 1;
+    }
+    if (as.absurd * 10 > as.nonzero) {
+        fprintf(stderr, "%s: the pixel data is not float radiance: read %s-endian (as the header's scale "
+                "%s%s says), %zu of the %zu nonzero values are NaN, infinite, denormal or beyond 1e20, and "
+                "read %s-endian %zu are\n", path, order[hd->big_endian], sign, hd->scale_text,
+                as.absurd + as.nonfinite, as.nonzero, order[!hd->big_endian], other.absurd + other.nonfinite);
+        return 1;
+    }
+    return 0;
 }
 
 static void decode_pfm(image *im, const unsigned char *data, const pfm_header *hd)
@@ -286,11 +469,11 @@ static void decode_pfm(image *im, const unsigned char *data, const pfm_header *h
     }
 }
 
-int img_read_pfm(image *im, const char *path)
+int img_read_pfm_info(image *im, const char *path, img_pfm_info *info)
 {
     pfm_header hd;
     unsigned char *data = NULL;
-    size_t need, got;
+    size_t need;
     long left;
     int err = 1;
     FILE *f;
@@ -306,7 +489,7 @@ int img_read_pfm(image *im, const char *path)
     /* Check the size before allocating, so a lying header cannot make us allocate gigabytes. */
     left = bytes_left(f);
     if (left >= 0 && (size_t)left < need) {
-        fprintf(stderr, "%s: truncated (expected %zu bytes of pixels, found %ld)\n", path, need, left);
+        truncated_error(path, &hd, need, (size_t)left);
         goto out;
     }
     data = malloc(need);
@@ -314,19 +497,24 @@ int img_read_pfm(image *im, const char *path)
         fprintf(stderr, "%s: out of memory\n", path);
         goto out;
     }
-    got = fread(data, 1, need, f);
-    if (got < need) {
-        if (ferror(f)) fprintf(stderr, "%s: read error: %s\n", path, strerror(errno));
-        else fprintf(stderr, "%s: truncated (expected %zu bytes of pixels, found %zu)\n", path, need, got);
-        goto out;
-    }
+    if (read_pixels(f, path, &hd, need, left, data) || check_byte_order(data, need / 4, &hd, path)) goto out;
     decode_pfm(im, data, &hd);
+    if (info) {
+        info->channels = hd.channels;
+        info->big_endian = hd.big_endian;
+        info->scale = hd.scale;
+    }
     err = 0;
 out:
     if (err) img_free(im);
     free(data);
     fclose(f);
     return err;
+}
+
+int img_read_pfm(image *im, const char *path)
+{
+    return img_read_pfm_info(im, path, NULL);
 }
 
 /* ---- PPM ---- */

@@ -21,8 +21,19 @@ int img_write(const image *im, const char *path, float exposure);
 int img_write_pfm(const image *im, const char *path);
 int img_write_ppm(const image *im, const char *path, float exposure);
 int img_write_png(const image *im, const char *path, float exposure);
-/* Reads a PFM (PF or Pf, either endianness); on error prints "path: reason" and returns nonzero. */
-int img_read_pfm(image *im, const char *path);
+/* Reads a PFM (PF or Pf, either byte order; Pf is replicated into R, G and B); on error prints
+ * "path: reason" and returns nonzero, with im empty. The reader is strict, and names the cause of
+ * the usual mistakes: a header with CR LF line ends, a blank line, a comment or no single whitespace
+ * after the scale; pixel data cut short or followed by more bytes (exactly w*h*channels*4 bytes);
+ * a scale whose sign gives the wrong byte order (the values read in it are absurd, the other order
+ * gives ordinary ones). img_read_pfm_info also reports the header's facts into *info (may be NULL). */
+typedef struct {
+    int channels;     /* 3 for "PF" (colour), 1 for "Pf" (greyscale) */
+    int big_endian;   /* the scale is positive */
+    double scale;     /* as written in the header */
+} img_pfm_info;
+int img_read_pfm_info(image *im, const char *path, img_pfm_info *info);
+int img_read_pfm(image *im, const char *path);   /* img_read_pfm_info(im, path, NULL) */
 /* Linear [0,1] -> sRGB-encoded [0,1]. */
 float srgb_encode(float linear);
 #endif

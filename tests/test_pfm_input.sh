@@ -71,14 +71,15 @@ expect_status "diff: the reference against itself" 0 $PATHLAB diff "$REF" "$REF"
 $PATHLAB convert "$REF" "$TMP/copy.pfm" 2> "$TMP/err"
 expect_status "convert: pathlab's own PFM reads back" 0 $PATHLAB diff "$TMP/copy.pfm" "$REF"
 
-# pathlab grade (from the grade that has --report on): the same input errors, exit 2
-if $PATHLAB grade --help 2>&1 | grep -q -- '--report'; then
-    for c in "byteorder:$BYTEORDER" "byteorder-be:$BYTEORDER_BE" "crlf:$CRLF" "blank:$BLANK" "comment:$COMMENT" \
+# pathlab grade: the same input errors, exit 2, never a bias percentage
+for c in "byteorder:$BYTEORDER" "byteorder-be:$BYTEORDER_BE" "crlf:$CRLF" "blank:$BLANK" "comment:$COMMENT" \
              "nolf:$NOLF" "truncated:$TRUNC" "trailing:$TRAIL" "nan:$NAN" "negative:$NEG" "grey:greyscale"; do
-        kind=${c%%:*}; pat=${c#*:}
-        check "$kind" "$pat" grade $PATHLAB grade "$TMP/$kind.pfm" --ref "$REF"
-    done
-else
-    pass "grade: input errors (skipped until pathlab grade has --report)"
-fi
+    kind=${c%%:*}; pat=${c#*:}
+    check "$kind" "$pat" grade $PATHLAB grade "$TMP/$kind.pfm" --ref "$REF"
+done
+# ... and in a class, the readable images are graded and the report names the unreadable ones
+$PATHLAB grade "$REF" "$TMP/nan.pfm" "$TMP/crlf.pfm" --ref "$REF" --report "$TMP/class.csv" > "$TMP/out" 2> "$TMP/err"; rc=$?
+if [ $rc -eq 2 ] && grep -q '^"[^"]*nan.pfm",UNREADABLE' "$TMP/class.csv" && grep -q '^"[^"]*crlf.pfm",UNREADABLE' "$TMP/class.csv" \
+   && grep -q "^summary: 3 images, 1 pass, 0 fail, 2 could not be read" "$TMP/out"; then pass "grade: a class with two unreadable images: exit 2, each named in the report"
+else fail "grade: a class with two unreadable images: exit $rc, $(cat "$TMP/out" "$TMP/class.csv" | head -c 400)"; fi
 exit 0

@@ -3,6 +3,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include "image/radiance.h"
 #include "util/textfile.h"
 
 /* The first NaN, infinite or negative value of im, or -1; *what names it. */
@@ -92,10 +93,19 @@ static int wrong_size(grade_row *row, const image *img, const grade_refs *refs, 
 
 int grade_read_image(image *img, grade_row *row, const grade_refs *refs, const char *ref_path)
 {
-    const char *what;
-    long i;
-    if (img_read_pfm(img, row->path)) {
-        snprintf(row->mistake, sizeof row->mistake, "cannot be read as a PFM (see the message above)");
+    img_pfm_info info;
+    if (img_read_pfm_info(img, row->path, &info)) {
+        snprintf(row->mistake, sizeof row->mistake, "not a readable PFM: missing, byte order, header line ends, truncated or "
+                 "trailing bytes (pathlab's message on stderr says which)");
+        return row->status = 2;
+    }
+    if (info.channels != refs->channels) {
+        snprintf(row->mistake, sizeof row->mistake, "%s (\"%s\", %d channel%s) against a %s reference: write %s",
+                 info.channels == 1 ? "greyscale" : "colour", info.channels == 1 ? "Pf" : "PF", info.channels,
+                 info.channels == 1 ? "" : "s", refs->channels == 1 ? "greyscale" : "colour",
+                 refs->channels == 1 ? "one channel (Pf)" : "the three channels R, G, B (PF)");
+        fprintf(stderr, "pathlab grade: %s: %s\n", row->path, row->mistake);
+        img_free(img);
         return row->status = 2;
     }
     if (img->w != refs->ref->w || img->h != refs->ref->h) {
@@ -103,11 +113,8 @@ int grade_read_image(image *img, grade_row *row, const grade_refs *refs, const c
         img_free(img);
         return 1;
     }
-    i = first_bad(img, 1, &what);
-    if (i >= 0) {
-        snprintf(row->mistake, sizeof row->mistake, "a %s value at pixel x %ld, y %ld (y = 0 is the top row): radiance is finite and >= 0",
-                 what, i / 3 % img->w, i / 3 / img->w);
-        fprintf(stderr, "pathlab grade: %s: %s\n", row->path, row->mistake);
+    if (img_check_radiance(img, row->path, 4)) {
+        snprintf(row->mistake, sizeof row->mistake, "NaN, infinite or negative values (positions on stderr): radiance is finite and >= 0");
         img_free(img);
         return row->status = 2;
     }

@@ -153,9 +153,11 @@ static int read_reference(reference *R, const grade_args *a)
     static char var_path[4096];
     size_t stem = ends_with(a->ref, ".pfm") ? strlen(a->ref) - 4 : strlen(a->ref);
     int k;
+    img_pfm_info info;
     memset(R, 0, sizeof *R);
-    if (img_read_pfm(&R->ref, a->ref)) return 2;
+    if (img_read_pfm_info(&R->ref, a->ref, &info)) return 2;
     R->refs.ref = &R->ref;
+    R->refs.channels = info.channels;
     snprintf(var_path, sizeof var_path, "%.*s_var.pfm", (int)stem, a->ref);
     R->var_path = a->var ? a->var : (access_ok(var_path) ? var_path : NULL);
     if (R->var_path) {

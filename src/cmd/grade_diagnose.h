@@ -14,6 +14,7 @@ typedef struct {
     const image *ref, *var;               /* var: REF_var.pfm, or NULL */
     const image *layer[GRADE_MAX_LAYERS]; /* L0, L1, ... of the same view (--split), or NULL */
     int nlayers;                          /* layers 0..nlayers-1 are all present */
+    int channels;                         /* of the reference's file: 3 (PF) or 1 (Pf) */
 } grade_refs;
 
 typedef struct {

@@ -2,6 +2,7 @@
 #include "cmd/diff.h"
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include "image/radiance.h"
 #include "util/cli.h"
@@ -57,7 +58,8 @@ int diff_heatmap(image *out, const image *a, const image *ref, double scale)
     return 0;
 }
 
-#define DIFF_USAGE "usage: pathlab diff A.pfm REF.pfm [--heatmap OUT.ppm|OUT.png] [--scale S]\n"
+#define DIFF_USAGE "usage: pathlab diff A.pfm REF.pfm [--heatmap OUT.ppm|OUT.png] [--scale S]\n" \
+                   "       pathlab diff A.pfm [B.pfm ...] --ref REF.pfm   (the arguments as grade takes them)\n"
 
 /* The metrics of diff.h, one per line. */
 static void print_stats(const diff_stats *s)
@@ -88,23 +90,16 @@ static int read_pair(image im[2], const char *const path[2])
     return 1;
 }
 
-int diff_main(int argc, char **argv)
+/* One image against the reference: the metrics and, if asked, the heatmap; 0, 1 (heatmap not
+ * written) or 2 (bad input). */
+static int diff_one(const char *image_path, const char *ref_path, const char *heat, float scale)
 {
-    const char *path[2], *heat = NULL;
-    float scale = 0.0f;
-    const cli_flag flags[] = {{"--heatmap", CLI_STRING, &heat, 0, 0, NULL, NULL, NULL},
-                              {"--scale", CLI_FLOAT, &scale, 0, 0, NULL, NULL, NULL},
-                              {NULL, CLI_SWITCH, NULL, 0, 0, NULL, NULL, NULL}};
-    const cli_flag *tables[] = {flags, NULL};
+    const char *path[2];
     image im[2], hm;
     diff_stats s;
-    int n, rc = 0;
-    if (cli_parse("diff", argc, argv, tables, NULL, path, 2, &n)) return 2;
-    if (n != 2) { fprintf(stderr, "pathlab diff: needs an image and a reference\n" DIFF_USAGE); return 2; }
-    if (heat && img_format_of(heat) == IMG_UNKNOWN) {
-        fprintf(stderr, "pathlab diff: --heatmap %s: unknown image format (use .pfm, .ppm or .png)\n", heat);
-        return 2;
-    }
+    int rc = 0;
+    path[0] = image_path;
+    path[1] = ref_path;
     if (read_pair(im, path)) return 2;
     if (diff_compute(&s, &im[0], &im[1])) {
         fprintf(stderr, "pathlab diff: %s is %dx%d but %s is %dx%d\n", path[0], im[0].w, im[0].h, path[1], im[1].w, im[1].h);
@@ -119,5 +114,40 @@ int diff_main(int argc, char **argv)
     }
     img_free(&im[0]);
     img_free(&im[1]);
+    return rc;
+}
+
+/* `diff A.pfm REF.pfm`, or as grade takes them: `diff A.pfm [B.pfm ...] --ref REF.pfm`. */
+int diff_main(int argc, char **argv)
+{
+    const char *ref = NULL, *heat = NULL, **words = calloc((size_t)argc + 1, sizeof *words);
+    float scale = 0.0f;
+    const cli_flag flags[] = {{"--heatmap", CLI_STRING, &heat, 0, 0, NULL, NULL, NULL},
+                              {"--scale", CLI_FLOAT, &scale, 0, 0, NULL, NULL, NULL},
+                              {"--ref", CLI_STRING, &ref, 0, 0, NULL, NULL, NULL},
+                              {NULL, CLI_SWITCH, NULL, 0, 0, NULL, NULL, NULL}};
+    const cli_flag *tables[] = {flags, NULL};
+    int n, k, rc = 0;
+    if (!words || cli_parse("diff", argc, argv, tables, NULL, words, argc, &n)) { free(words); return 2; }
+    if (!ref && n == 2) ref = words[--n];
+    if (!ref && n > 2) {
+        fprintf(stderr, "pathlab diff: %d images and no --ref: which one is the reference?\n" DIFF_USAGE, n);
+        free(words);
+        return 2;
+    }
+    if (!ref || n < 1) { fprintf(stderr, "pathlab diff: needs an image and a reference\n" DIFF_USAGE); free(words); return 2; }
+    if (heat && (img_format_of(heat) == IMG_UNKNOWN || n > 1)) {
+        fprintf(stderr, n > 1 ? "pathlab diff: --heatmap %s: with one image only\n"
+                              : "pathlab diff: --heatmap %s: unknown image format (use .pfm, .ppm or .png)\n", heat);
+        free(words);
+        return 2;
+    }
+    for (k = 0; k < n; k++) {
+        int one;
+        if (n > 1) printf("%s%s:\n", k ? "\n" : "", words[k]);
+        one = diff_one(words[k], ref, heat, scale);
+        if (one > rc) rc = one;
+    }
+    free(words);
     return rc;
 }

@@ -18,11 +18,12 @@ static const char *USAGE =
     "  pathlab render SCENE.obj [flags] -o FILE.pfm|FILE.ppm|FILE.png\n"
     "  pathlab bench-rays MESH.obj [-r RES] [-t THREADS]\n"
     "  pathlab check-sampling [--samples N] [--seed S] [--threads T] [--quiet]\n"
-    "  pathlab diff A.pfm REF.pfm [--heatmap OUT.ppm|OUT.png] [--scale S]\n"
+    "  pathlab diff A.pfm REF.pfm [--heatmap OUT.ppm|OUT.png] [--scale S]   (or A.pfm [B.pfm ...] --ref REF.pfm)\n"
     "                heatmap of |A - REF|: black 0 to white S (default: the largest difference, so\n"
     "                give the same --scale to compare two heatmaps)\n"
-    "  pathlab grade IMAGE.pfm --ref REF.pfm [--alpha A] [--block B] [--heatmap OUT.ppm|OUT.png]\n"
-    "                [--spp N] [--var REF_VAR.pfm --ref-spp M]   is IMAGE - REF noise or bias? (below)\n"
+    "  pathlab grade IMAGE.pfm... | FOLDER --ref REF.pfm [--alpha A] [--report FILE.md|FILE.csv]\n"
+    "                [--heatmap OUT.png|FOLDER] [--block B] [--var REF_VAR.pfm] [--layers PREFIX] [--details]\n"
+    "                is each IMAGE - REF noise or bias, and if bias, the likely mistake (below; docs/grading.md)\n"
     COMPARE_USAGE
     "  pathlab convert IN.pfm OUT.png|OUT.ppm|OUT.pfm [--exposure STOPS]   view a PFM (e.g. a --split layer);\n"
     "                prints the size and each channel's mean, min and max\n"
@@ -50,13 +51,18 @@ static const char *USAGE =
 
 /* C99 compilers need only take string literals of 4095 characters: the help is in two parts. */
 static const char *USAGE_TOOLS =
-    "grade (exit 0 pass, 1 fail, 2 bad input), on d = IMAGE - REF per pixel-channel, at family-wise level alpha\n"
-    "(default 0.01; alpha/2 to each family, Sidak within it); the noise is estimated from the scatter of d:\n"
-    "  whole image  z of the mean of d, per channel: catches a bias spread everywhere (all 2 percent too bright)\n"
-    "  blocks       Student t of the mean of d over each B x B block (default max(8, min(w,h)/16)), per channel:\n"
-    "               averaging shrinks noise, not bias; prints where the significant blocks are, brighter or darker\n"
-    "  --var        with --spp and --ref-spp, a per-pixel Z-test assuming the reference's estimator (information only)\n"
+    "grade (exit 0 all pass, 1 a fail, 2 an input error), on d = IMAGE - REF per pixel-channel, at family-wise level\n"
+    "alpha per image (default 0.01; alpha/3 to each family below, Sidak within it); the noise is measured on d:\n"
+    "  exact pixels where REF_var.pfm (found beside REF) is 0, e.g. the background: compared as numbers\n"
+    "  whole image  relative bias fitted to the block means, per channel: a bias spread everywhere (2 percent too bright)\n"
+    "  blocks       Student t of the mean of d over each B x B block (default max(8, min(w,h)/16)): a bias in a region\n"
+    "  levels       the same over the pixels of one octave of the reference's luminance: the lamp seen directly, highlights\n"
+    "  likely mistake  a failing image is graded again with each mistake of a catalogue undone (flipped, grey, sRGB,\n"
+    "               clamped, 8 bits, a factor pi, no L0, direct only, stopped after k bounces...: layers REF_split_L0.pfm...)\n"
+    "  several images or a FOLDER: one line each, a summary; --report writes them as a Markdown or CSV table;\n"
+    "               --details prints each image's tests in full; --heatmap FOLDER writes one heatmap per image\n"
     "  --heatmap    the reference in grey, significantly brighter blocks red, darker blue\n"
+    "  --spp N --ref-spp M (with the variance) a per-pixel Z-test assuming the reference's estimator (information only)\n"
     COMPARE_HELP;
 
 /* The commands, by name. */

@@ -1,7 +1,7 @@
 /* test_grade_stats.c — the statistics of `pathlab grade` on synthetic images, where the truth is
  * known: Student's t tails against tables; false alarms on many unbiased images with heavy-tailed
  * (firefly) noise; the fitted relative bias and its standard error calibrated on images 2% too
- * bright; a bias in one quadrant found there, with its sign. */
+ * bright; a bias in one quadrant found there, with its sign; a small lamp missing found by its level. */
 #include <math.h>
 #include <stdlib.h>
 #include "check.h"
@@ -136,6 +136,43 @@ static void quadrant(double gain, int sign)
     img_free(&ref);
 }
 
+/* The lamp seen directly: 20 bright pixels in a 64x64 image whose blocks mix them with darker ones.
+ * Honest (the lamp's value with 1% noise) passes; the lamp missing (1% of its value left, "no L0")
+ * fails, found by the level of the lamp's luminance and not by the blocks; also with the
+ * reference's variance given (noise floor on). */
+static void lamp(void)
+{
+    grade_opts o = {0.01, 0, 0, 0};
+    image ref, im, var;
+    grade_report r;
+    pcg32 rng;
+    int x, y, c, missing, with_var;
+    make_ref(&ref, 64, 64);
+    img_alloc(&var, 64, 64);
+    for (y = 8; y < 10; y++)
+        for (x = 27; x < 37; x++)
+            for (c = 0; c < 3; c++) ref.px[3 * (y * 64 + x) + c] = 20.0f + 0.01f * x;   /* not flat: a flat region is exact */
+    for (x = 0; x < 3 * 64 * 64; x++) var.px[x] = 1e-4f * ref.px[x] * ref.px[x];
+    for (with_var = 0; with_var < 2; with_var++)
+        for (missing = 0; missing < 2; missing++) {
+            pcg32_init(&rng, 17, 2);
+            make_image(&im, &ref, 64, 0.5, 1.0, 0, &rng);
+            for (y = 8; y < 10; y++)
+                for (x = 27; x < 37; x++)
+                    for (c = 0; c < 3; c++)
+                        im.px[3 * (y * 64 + x) + c] = (float)(ref.px[3 * (y * 64 + x) + c] * (missing ? 0.01 : 1.0) * (1.0 + 0.01 * (pcg32_double(&rng) - 0.5)));
+            grade_compute(&r, &im, &ref, with_var ? &var : NULL, &o);
+            check(grade_failed(&r) == missing && (!missing || r.level_darker >= 1), missing ? "lamp_missing_found" : "lamp_honest_passes",
+                  "%s, %s the reference's variance: %s; %d level(s) darker, %d block(s) darker, largest level |t|/limit %.1f",
+                  missing ? "the lamp missing" : "the lamp honest", with_var ? "with" : "without",
+                  grade_failed(&r) ? "FAIL" : "PASS", r.level_darker, r.ndarker, r.level_excess);
+            grade_free(&r);
+            img_free(&im);
+        }
+    img_free(&var);
+    img_free(&ref);
+}
+
 int main(void)
 {
     t_table();
@@ -144,5 +181,6 @@ int main(void)
     two_percent(60);
     quadrant(1.2, 1);
     quadrant(0.8, -1);
+    lamp();
     return check_summary();
 }

@@ -155,7 +155,7 @@ int student_check_run(const sample_file *s, const student_pdf *p, double alpha, 
 }
 
 int student_domain_pass(const student_report *r) { return r->below == 0 || r->below_allowed; }
-int student_chi2_pass(const student_report *r) { return r->chi2.chi2.p >= r->alpha_each; }
+int student_chi2_pass(const student_report *r) { return r->chi2.chi2.dof >= 1 && r->chi2.chi2.p >= r->alpha_each; }
 int student_integral_pass(const student_report *r) { return fabs(r->integral - 1.0) < STUDENT_INTEGRAL_TOL; }
 
 int student_norm_pass(const student_report *r)

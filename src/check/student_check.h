@@ -16,7 +16,7 @@
 #include "check/sample_file.h"
 #include "check/student_pdf.h"
 
-#define STUDENT_MIN_SAMPLES 1000      /* fewer: the chi-square has too few cells to see much */
+#define STUDENT_MIN_SAMPLES 2000      /* fewer: under 5 expected in each of the 320 cells, they pool into few */
 #define STUDENT_INTEGRAL_TOL 1e-3     /* absolute, on the quadrature of the named density */
 #define STUDENT_NORM_TOL 1e-3         /* added to the z-test of the column's normalisation */
 

@@ -101,10 +101,12 @@ static int print_directions(const student_report *r, const student_pdf *p)
              r->chi2.chi2.chi2, r->chi2.chi2.dof, r->chi2.chi2.p, r->alpha_each, r->chi2.rings, SPHERE_SECTORS,
              p->kind == SPDF_BLINN ? "_h" : "", p->kind == SPDF_BLINN ? " + below the surface" : "");
     failed += verdict("1. chi-square", student_chi2_pass(r), line);
+    if (r->chi2.chi2.dof < 1)
+        printf("%-16s       -> too few samples: the cells pooled into one (each needs 5 expected); write 100000\n", "");
     if (r->K >= 0.0)
         printf("%-16s       the lobe: mean cos theta%s fits cos^K with K = %.3f +- %.3f (claimed %g)\n", "",
                p->kind == SPDF_BLINN ? "_h" : "", r->K, r->K_se, p->m);
-    if (failed) print_diagnosis(student_diagnose_directions(r, p, why, sizeof why), why);
+    if (failed && r->chi2.chi2.dof >= 1) print_diagnosis(student_diagnose_directions(r, p, why, sizeof why), why);
     return failed;
 }
 
@@ -164,7 +166,8 @@ int check_sampler_main(int argc, char **argv)
     printf("alpha %g for the whole check: %.3g for each of its %d statistical tests (Sidak); seed %llu\n", o.alpha,
            r.alpha_each, s.pdf ? 2 : 1, (unsigned long long)o.seed);
     if (s.n < STUDENT_MIN_SAMPLES)
-        printf("warning: only %ld samples: the chi-square sees only gross errors; write 100000 or more\n", s.n);
+        printf("warning: only %ld samples: under %d the chi-square's cells pool into few; write 100000\n", s.n,
+               STUDENT_MIN_SAMPLES);
     if (o.pdf.kind == SPDF_BLINN) name[strcspn(name, " ")] = 0;
     failed = print_directions(&r, &o.pdf);
     failed += print_integrals(&s, &r, &o.pdf, name);

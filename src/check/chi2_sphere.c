@@ -124,9 +124,15 @@ static int ring_bounds(const sphere_domain *d, sphere_draw_fn draw, void *ctx, d
 sphere_chi2 chi2_directions(const sphere_domain *d, sphere_draw_fn draw, void *ctx, double tmax,
                             double p_discard, long n, pcg32 rng, pcg32 pilot)
 {
+    return chi2_directions_piloted(d, draw, ctx, draw, ctx, tmax, p_discard, n, rng, pilot);
+}
+
+sphere_chi2 chi2_directions_piloted(const sphere_domain *d, sphere_draw_fn draw, void *ctx, sphere_draw_fn pilot_draw,
+                                    void *pilot_ctx, double tmax, double p_discard, long n, pcg32 rng, pcg32 pilot)
+{
     enum { MAXCELLS = SPHERE_RINGS * SPHERE_SECTORS + 1 };
     double tb[SPHERE_RINGS + 1], obs[MAXCELLS], expct[MAXCELLS];
-    int nr = ring_bounds(d, draw, ctx, tmax, n, &pilot, tb), r, s, ncell = nr * SPHERE_SECTORS;
+    int nr = ring_bounds(d, pilot_draw, pilot_ctx, tmax, n, &pilot, tb), r, s, ncell = nr * SPHERE_SECTORS;
     sphere_chi2 out;
     long i;
     memset(obs, 0, sizeof obs);

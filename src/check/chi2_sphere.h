@@ -44,4 +44,9 @@ typedef struct {
  * [0, tmax], and compares their counts with the pdf d->f. */
 sphere_chi2 chi2_directions(const sphere_domain *d, sphere_draw_fn draw, void *ctx, double tmax,
                             double p_discard, long n, pcg32 rng, pcg32 pilot);
+/* The same with the ring bounds from another sampler (pilot_draw): a sample read from a file cannot
+ * give its own cells without making them depend on it, so the pilot is a reference sampler of the
+ * pdf (check/student_check.c). */
+sphere_chi2 chi2_directions_piloted(const sphere_domain *d, sphere_draw_fn draw, void *ctx, sphere_draw_fn pilot_draw,
+                                    void *pilot_ctx, double tmax, double p_discard, long n, pcg32 rng, pcg32 pilot);
 #endif

@@ -1,7 +1,9 @@
 /* main.c — pathlab's command line: the help text, and each command handed to its own file
- * (render_cmd.c, convert.c, diff.c, grade_cli.c, compare.c, bench_rays.c, check_sampling.c). */
+ * (render_cmd.c, convert.c, diff.c, grade_cli.c, compare.c, bench_rays.c, check_sampling.c,
+ * check_sampler.c). */
 #include <stdio.h>
 #include <string.h>
+#include "cmd/check_sampler.h"
 #include "cmd/check_sampling.h"
 #include "cmd/bench_rays.h"
 #include "cmd/compare.h"
@@ -18,6 +20,7 @@ static const char *USAGE =
     "  pathlab render SCENE.obj [flags] -o FILE.pfm|FILE.ppm|FILE.png\n"
     "  pathlab bench-rays MESH.obj [-r RES] [-t THREADS]\n"
     "  pathlab check-sampling [--samples N] [--seed S] [--threads T] [--quiet]\n"
+    CHECK_SAMPLER_USAGE
     "  pathlab diff A.pfm REF.pfm [--heatmap OUT.ppm|OUT.png] [--scale S]   (or A.pfm [B.pfm ...] --ref REF.pfm)\n"
     "                heatmap of |A - REF|: black 0 to white S (default: the largest difference, so\n"
     "                give the same --scale to compare two heatmaps)\n"
@@ -73,6 +76,7 @@ typedef struct {
 
 static const command COMMANDS[] = {
     {"render", render_main}, {"bench-rays", bench_rays_main}, {"check-sampling", check_sampling_main},
+    {"check-sampler", check_sampler_main},
     {"diff", diff_main}, {"grade", grade_main}, {"compare", compare_main}, {"convert", convert_main},
     {NULL, NULL}};
 

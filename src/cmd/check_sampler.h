@@ -1,0 +1,14 @@
+/* check_sampler.h — `pathlab check-sampler FILE.txt --pdf NAME [--wo X,Y,Z] [--alpha A] [--seed S]`:
+ * a student's directions (and the pdf their code returned) from a text file, checked against the
+ * density they claim; the checks and diagnoses are check/student_check.h and student_diagnosis.h,
+ * this file reads the flags and prints. docs/check-sampler.md is the student's guide. */
+#ifndef PATHLAB_CMD_CHECK_SAMPLER_H
+#define PATHLAB_CMD_CHECK_SAMPLER_H
+
+#define CHECK_SAMPLER_USAGE \
+    "  pathlab check-sampler FILE.txt --pdf uniform|hemisphere|cosine|cosm:M|blinn:M [--wo X,Y,Z] [--alpha A] [--seed S]\n" \
+    "                does a student's sampler draw the pdf it claims? FILE: 'x y z [pdf]' per line (check-sampler --help)\n"
+
+/* argv[0] = "check-sampler". 0 when every check passes, 1 if one fails, 2 on bad flags or a bad file. */
+int check_sampler_main(int argc, char **argv);
+#endif

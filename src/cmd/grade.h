@@ -19,6 +19,7 @@ typedef struct {
     long n;                  /* noisy pixels in the group */
     double diff[3], ref[3];  /* mean of image - ref and mean of ref, per channel */
     double var[3], round[3]; /* sample variance of d over the group; rounding bound of its mean */
+    double skew[3];          /* sample skewness of d over the group (see skewed_limit in grade.c) */
     double floor[3];         /* the least variance of its mean d: k x the reference's (see grade.c) */
     double noise[3];         /* the variance of its mean d used by the tests */
     long nzero;              /* pixels black in the image where the reference is not */
@@ -26,6 +27,7 @@ typedef struct {
     double t[3];             /* Student's t of the mean difference, per channel */
     int df;                  /* its degrees of freedom: n - 1 */
     int sign;                /* +1 significantly brighter, -1 darker, 0 consistent with noise */
+    int channel;             /* the channel that decided the sign */
 } grade_block;
 
 typedef struct {
@@ -37,7 +39,7 @@ typedef struct {
     int nbrighter, ndarker;
     grade_block *levels;                 /* nlevels groups by the reference's luminance */
     int nlevels, nlevels_tested, level_brighter, level_darker;
-    double level_level, level_tmax;
+    double level_level, level_tmax, level_min_lum;  /* levels hold the pixels above the mean luminance */
     double image_diff[3], image_ref[3];  /* plain means of d and of ref */
     double image_eps[3], image_eps_se[3], image_z[3], image_level, image_zcrit;  /* relative-bias fit */
     int image_fail, image_nfit;          /* image_nfit: block-channels with a weight in the fit */

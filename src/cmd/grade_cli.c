@@ -79,7 +79,27 @@ static int ends_with(const char *name, const char *suffix)
 
 static int by_name(const void *a, const void *b) { return strcmp(*(const char *const *)a, *(const char *const *)b); }
 
-/* Appends the .pfm files of a folder (not variances, not layers), sorted by name; 0 or 1 (error said). */
+/* 1 if the two paths name the same file or folder */
+static int same_file(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    return stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+/* 1 if dir/name is the reference or a file made beside it (REF-64x64.pfm, REF_split.pfm, ...). */
+static int is_reference(const char *dir, const char *name, const char *ref)
+{
+    const char *slash = strrchr(ref, '/'), *base = slash ? slash + 1 : ref;
+    char path[4200], ref_dir[4200];
+    size_t stem = ends_with(base, ".pfm") ? strlen(base) - 4 : strlen(base);
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    snprintf(ref_dir, sizeof ref_dir, "%.*s", slash ? (int)(slash - ref) : 1, slash ? ref : ".");
+    if (same_file(path, ref)) return 1;
+    return same_file(dir, ref_dir) && !strncmp(name, base, stem) && (name[stem] == '_' || name[stem] == '-');
+}
+
+/* Appends the .pfm files of a folder (not variances, not layers, not the reference), sorted by
+ * name; 0 or 1 (error said). */
 static int add_folder(grade_args *a, const char *dir, int cap)
 {
     DIR *d = opendir(dir);
@@ -88,7 +108,8 @@ static int add_folder(grade_args *a, const char *dir, int cap)
     if (!d) { fprintf(stderr, "pathlab grade: cannot open the folder %s\n", dir); return 1; }
     while ((e = readdir(d)) != NULL) {
         char *path;
-        if (!ends_with(e->d_name, ".pfm") || ends_with(e->d_name, "_var.pfm") || strstr(e->d_name, "_split_L")) continue;
+        if (!ends_with(e->d_name, ".pfm") || ends_with(e->d_name, "_var.pfm") || strstr(e->d_name, "_split_L") ||
+            is_reference(dir, e->d_name, a->ref)) continue;
         if (a->nimages >= cap) { fprintf(stderr, "pathlab grade: more than %d images\n", cap); closedir(d); return 1; }
         path = malloc(strlen(dir) + strlen(e->d_name) + 2);
         if (!path) { closedir(d); return 1; }
@@ -211,6 +232,10 @@ static int diagnose(grade_row *row, const image *img, const reference *R, const 
     size_t used = 0;
     if (n < 0) { fprintf(stderr, "pathlab grade: out of memory\n"); return 2; }
     if (loud) grade_print_hypotheses(h, n);
+    if (n == 0) snprintf(row->mistake, sizeof row->mistake, "none of the catalogue%s", R->refs.nlayers ? "" :
+                         " (no layers REF_split_L0.pfm ... beside the reference: the bounce mistakes were not tried)");
+    if (loud && n == 0 && !R->refs.nlayers)
+        printf("    (no layers %s_L0.pfm ... beside the reference: the bounce mistakes were not tried; docs/grading.md)\n", R->layer_prefix);
     for (k = 0; k < n && k < 3 && used < sizeof row->mistake; k++)
         used += (size_t)snprintf(row->mistake + used, sizeof row->mistake - used, "%s%s", k ? "; " : "", h[k].what);
     return 0;

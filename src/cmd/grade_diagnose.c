@@ -160,9 +160,9 @@ static void try_curves(diag *d)
     judge(d, d->img, &d->b, "values clamped at 1 (radiance has no maximum: an emitter seen directly is far above 1)",
           "against the reference clamped at 1");
     grey_into(&d->b, ref, 0);
-    judge(d, d->img, &d->b, "grey instead of colour: each pixel is the mean of R, G, B", "against the reference's mean of R, G, B");
+    judge(d, d->img, &d->b, "grey instead of colour", "against the reference's mean of R, G, B");
     grey_into(&d->b, ref, 1);
-    judge(d, d->img, &d->b, "grey instead of colour: each pixel is the luminance", "against the reference's luminance");
+    judge(d, d->img, &d->b, "grey instead of colour", "against the reference's luminance");
 }
 
 /* out = sum of coef[k] layer k, plus whole times the reference. */

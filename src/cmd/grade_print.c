@@ -78,13 +78,13 @@ static void print_levels(const grade_report *r)
     char where[64];
     for (k = 0; k < r->nlevels; k++) {
         const grade_block *g = &r->levels[k];
-        double rel, ref = g->ref[0] + g->ref[1] + g->ref[2];
+        double rel;
         if (!g->sign) continue;
-        rel = ref != 0.0 ? (g->diff[0] + g->diff[1] + g->diff[2]) / ref : 0.0;
+        rel = g->ref[g->channel] != 0.0 ? g->diff[g->channel] / g->ref[g->channel] : 0.0;
         describe_box(where, sizeof where, g->x0, g->y0, g->x1, g->y1, r->w, r->h);
         printf("  %s where the reference's luminance is %.3g to %.3g: %ld pixels (%.1f%% of the image) within x %d..%d, "
-               "y %d..%d (%s): %+.2f%% there\n", g->sign > 0 ? "brighter" : "darker", g->lum_lo, g->lum_hi, g->n,
-               100.0 * g->n / ((double)r->w * r->h), g->x0, g->x1 - 1, g->y0, g->y1 - 1, where, 100.0 * rel);
+               "y %d..%d (%s): %+.2f%% in %s there\n", g->sign > 0 ? "brighter" : "darker", g->lum_lo, g->lum_hi, g->n,
+               100.0 * g->n / ((double)r->w * r->h), g->x0, g->x1 - 1, g->y0, g->y1 - 1, where, 100.0 * rel, CHANNELS[g->channel]);
     }
 }
 
@@ -115,9 +115,9 @@ static void print_tests(const grade_report *r, const char *image, const char *re
     printf("blocks of %dx%d pixels: %d blocks x 3 channels, max |t| %.2f, limit |t| %.2f (Student, %d df, level %.2g per test): "
            "%d brighter, %d darker\n", full, full, r->nblocks, r->block_tmax, r->block_tcrit, full * full - 1, r->block_level,
            r->nbrighter, r->ndarker);
-    printf("levels (pixels grouped by the reference's luminance, one octave each): %d levels x 3 channels, largest |t| / limit "
-           "%.2f (level %.2g per test): %d brighter, %d darker\n", r->nlevels_tested, r->level_excess, r->level_level,
-           r->level_brighter, r->level_darker);
+    printf("levels (the pixels brighter than the mean %.3g, grouped by the reference's luminance, one octave each): %d levels "
+           "x 3 channels, largest |t| / limit %.2f (level %.2g per test): %d brighter, %d darker\n", r->level_min_lum,
+           r->nlevels_tested, r->level_excess, r->level_level, r->level_brighter, r->level_darker);
     printf("exact pixels (the reference has no noise there%s): %ld, compared as numbers (|d| <= 1e-4 |ref| + 1e-6 mean): "
            "%ld differ\n", r->exact_from_var ? ": its variance is 0" : ", guessed: no REF_var.pfm", r->nexact, r->exact_fail);
     if (r->floor_k[0] > 0.0)

@@ -9,11 +9,12 @@
  * picture (edges, shading), so what scatters is the noise of both renders. Averaging m pixels
  * divides the noise by sqrt(m) but leaves a bias as it is: that is what tells them apart.
  *
- * Exact pixels. Where the reference has no noise at all (its variance, REF_var.pfm, is 0: the
- * background, an emitter without reflectance), every unbiased renderer gives the same value: those
- * pixels are compared as numbers, |d| <= 1e-4 |ref| + 1e-6 x the reference's mean, and left out of
- * the groups below. Without the variance, a pixel equal bit for bit to two of its four neighbours
- * in the reference is taken as exact (flat regions; a noisy pixel never is).
+ * Exact pixels. Where the reference has no noise at all (the interior of the background, of an
+ * emitter without reflectance: the pixel and its 8 neighbours equal bit for bit and, with
+ * REF_var.pfm, of variance 0), every unbiased renderer gives the same value: those pixels are
+ * compared as numbers, |d| <= 1e-4 |ref| + 1e-6 x the reference's mean, and left out of the groups
+ * below. (A noisy pixel is never equal to its 8 neighbours, but a pixel where the reference drew
+ * only zeros can be: a reference needs enough samples that its dark pixels are lit.)
  *
  * The noisy pixels form two families of groups, each tested per channel (R, G, B) with Student's
  * t = mean d / sqrt(s'^2 / m), m - 1 degrees of freedom:
@@ -101,29 +102,33 @@ static double ref_luminance(const image *ref, size_t p)
     return luminance(v3(ref->px[3 * p], ref->px[3 * p + 1], ref->px[3 * p + 2]));
 }
 
-/* Exact pixels: the reference's variance is 0, or (without it) the reference equals two of the
- * four neighbours bit for bit. */
+static int zero_variance(const image *var, size_t p)
+{
+    return var->px[3 * p] == 0.0f && var->px[3 * p + 1] == 0.0f && var->px[3 * p + 2] == 0.0f;
+}
+
+/* Exact pixels: inside a flat region of the reference, the pixel and its 8 neighbours equal bit for
+ * bit and (with the variance) each of variance 0. A variance of 0 alone is not enough: where light
+ * is rare, a reference can draw only zeros in a pixel (at 16 spp, thousands of them) and an honest
+ * image that found the light there would fail. In the interior of the background or of an emitter
+ * without reflectance, every unbiased renderer gives the same value. */
 static int mark_exact(grade_report *r, const image *ref, const image *var)
 {
-    int x, y, k;
-    static const int dx[4] = {1, -1, 0, 0}, dy[4] = {0, 0, 1, -1};
+    int x, y, u, v;
     r->exact = calloc((size_t)r->w * r->h, 1);
     if (!r->exact) return 1;
     r->exact_from_var = var != NULL;
     for (y = 0; y < r->h; y++)
         for (x = 0; x < r->w; x++) {
             size_t p = (size_t)y * r->w + x;
-            int same = 0;
-            if (var) {
-                r->exact[p] = var->px[3 * p] == 0.0f && var->px[3 * p + 1] == 0.0f && var->px[3 * p + 2] == 0.0f;
-                continue;
-            }
-            for (k = 0; k < 4; k++) {
-                int u = x + dx[k], v = y + dy[k];
-                if (u >= 0 && v >= 0 && u < r->w && v < r->h &&
-                    !memcmp(&ref->px[3 * p], &ref->px[3 * ((size_t)v * r->w + u)], 3 * sizeof(float))) same++;
-            }
-            r->exact[p] = same >= 2;
+            int flat = !var || zero_variance(var, p);
+            for (v = y - 1; v <= y + 1 && flat; v++)
+                for (u = x - 1; u <= x + 1 && flat; u++) {
+                    size_t q = (size_t)v * r->w + u;
+                    if (u < 0 || v < 0 || u >= r->w || v >= r->h) continue;
+                    flat = !memcmp(&ref->px[3 * p], &ref->px[3 * q], 3 * sizeof(float)) && (!var || zero_variance(var, q));
+                }
+            r->exact[p] = (unsigned char)flat;
         }
     return 0;
 }

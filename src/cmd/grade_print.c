@@ -118,8 +118,8 @@ static void print_tests(const grade_report *r, const char *image, const char *re
     printf("levels (the pixels brighter than the mean %.3g, grouped by the reference's luminance, one octave each): %d levels "
            "x 3 channels, largest |t| / limit %.2f (level %.2g per test): %d brighter, %d darker\n", r->level_min_lum,
            r->nlevels_tested, r->level_excess, r->level_level, r->level_brighter, r->level_darker);
-    printf("exact pixels (the reference has no noise there%s): %ld, compared as numbers (|d| <= 1e-4 |ref| + 1e-6 mean): "
-           "%ld differ\n", r->exact_from_var ? ": its variance is 0" : ", guessed: no REF_var.pfm", r->nexact, r->exact_fail);
+    printf("exact pixels (flat in the reference: equal to their 8 neighbours%s): %ld, compared as numbers (|d| <= 1e-4 |ref| "
+           "+ 1e-6 mean): %ld differ\n", r->exact_from_var ? ", variance 0" : "; no REF_var.pfm", r->nexact, r->exact_fail);
     if (r->floor_k[0] > 0.0)
         printf("noise floor: at least %.3g %.3g %.3g x the reference's variance per pixel (robust fit; guards rare-event noise)\n",
                r->floor_k[0], r->floor_k[1], r->floor_k[2]);

@@ -28,6 +28,14 @@ KIND, on IN (pixel coordinates X Y count from the top-left pixel, as pathlab's i
                                largest: the emitter seen directly), sparse (one pixel in 16, every 4th
                                column of every 4th row)
 
+Batches (python starts slowly; one process for many files):
+    python3 tests/mistakes.py all IN.pfm OUTDIR X Y
+        every KIND above but region into OUTDIR/KIND.pfm (scale: scale_F.pfm for F = pi, 1/pi, 2, 0.5,
+        1.3; nan, inf, negative at pixel X Y)
+    python3 tests/mistakes.py regions REF.pfm OUTDIR NAME1,NAME2,... B1,B2,... IN1.pfm IN2.pfm ...
+        each region NAME with each bias B into OUTDIR/NAME_B_I.pfm for the I-th input (counting from 0):
+        times 1 + B for even I, 1 - B for odd I
+
 PFM: "PF\\n<w> <h>\\n<scale>\\n" then float32 rows from the bottom row to the top one; a negative scale
 means little-endian. Written files are little-endian with scale -1 (as pathlab writes them).
 Exit status 0, or 2 on bad arguments or an unreadable input.
@@ -185,36 +193,24 @@ def region_pixels(img, name, ref):
     fail("unknown region '%s' (whole, quarter, bright, sparse)" % name)
 
 
-def main(argv):
-    if len(argv) < 2:
-        sys.stderr.write(__doc__)
-        sys.exit(2)
-    kind = argv[1]
-    if kind in ("sub", "add"):
-        if len(argv) < 5 or (kind == "sub" and len(argv) != 5):
-            fail("%s A.pfm B.pfm%s OUT.pfm" % (kind, "" if kind == "sub" else " [C.pfm...]"))
-        imgs = [read_pfm(p) for p in argv[2:-1]]
-        out = imgs[0]
-        for other in imgs[1:]:
-            if (other.w, other.h) != (out.w, out.h):
-                fail("sizes differ: %dx%d and %dx%d" % (out.w, out.h, other.w, other.h))
-            sign = -1.0 if kind == "sub" else 1.0
-            for i in range(len(out.px)):
-                out.px[i] += sign * other.px[i]
-        write(argv[-1], pfm_bytes(out))
-        return
-    if len(argv) < 4:
-        fail("usage: mistakes.py KIND IN.pfm OUT.pfm [args] (see the head of the file)")
-    src, dst, args = argv[2], argv[3], argv[4:]
+SINGLE = ["flip-v", "flip-h", "rotate-180", "grey", "grey-pf", "srgb", "gamma", "clamp1", "quant8",
+          "quant8-srgb", "scale", "big-endian-header", "crlf", "truncated", "trailing", "nan", "inf",
+          "negative", "region"]
+SCALES = ["3.14159265", "0.318309886", "2", "0.5", "1.3"]
+
+
+def make(kind, src, args, cache):
+    """The bytes of mistake KIND made from the file src. cache: path -> Image, read once."""
     if kind in ("truncated", "trailing"):   # byte-level: the honest file as it is
         try:
             with open(src, "rb") as f:
                 data = f.read()
         except OSError as e:
             fail("%s: %s" % (src, e))
-        write(dst, data[:-100] if kind == "truncated" else data + bytes(12))
-        return
-    img = read_pfm(src)
+        return data[:-100] if kind == "truncated" else data + bytes(12)
+    if src not in cache:
+        cache[src] = read_pfm(src)
+    img = Image(cache[src].w, cache[src].h, array("f", cache[src].px))   # a copy
     channels, header = 3, None
     if kind == "flip-v":
         img = flip(img, False, True)
@@ -255,7 +251,11 @@ def main(argv):
         if len(args) not in (2, 3):
             fail("region needs NAME B [REF.pfm]")
         f = 1.0 + float(args[1])
-        ref = read_pfm(args[2]) if len(args) == 3 else None
+        ref = None
+        if len(args) == 3:
+            if args[2] not in cache:
+                cache[args[2]] = read_pfm(args[2])
+            ref = cache[args[2]]
         px = img.px
         for i in region_pixels(img, args[0], ref):
             px[i] *= f
@@ -263,7 +263,54 @@ def main(argv):
             px[i + 2] *= f
     else:
         fail("unknown kind '%s'" % kind)
-    write(dst, pfm_bytes(img, channels, header))
+    return pfm_bytes(img, channels, header)
+
+
+def main(argv):
+    if len(argv) < 2:
+        sys.stderr.write(__doc__)
+        sys.exit(2)
+    kind = argv[1]
+    cache = {}
+    if kind in ("sub", "add"):
+        if len(argv) < 5 or (kind == "sub" and len(argv) != 5):
+            fail("%s A.pfm B.pfm%s OUT.pfm" % (kind, "" if kind == "sub" else " [C.pfm...]"))
+        imgs = [read_pfm(p) for p in argv[2:-1]]
+        out = imgs[0]
+        for other in imgs[1:]:
+            if (other.w, other.h) != (out.w, out.h):
+                fail("sizes differ: %dx%d and %dx%d" % (out.w, out.h, other.w, other.h))
+            sign = -1.0 if kind == "sub" else 1.0
+            for i in range(len(out.px)):
+                out.px[i] += sign * other.px[i]
+        write(argv[-1], pfm_bytes(out))
+        return
+    if kind == "all":   # every single-input mistake of IN into OUTDIR, one process (python starts slowly)
+        if len(argv) != 6:
+            fail("all IN.pfm OUTDIR X Y")
+        src, outdir, xy = argv[2], argv[3], argv[4:6]
+        for k in SINGLE:
+            if k == "region":
+                continue
+            if k == "scale":
+                for f in SCALES:
+                    write("%s/scale_%s.pfm" % (outdir, f), make(k, src, [f], cache))
+            else:
+                write("%s/%s.pfm" % (outdir, k), make(k, src, xy if k in ("nan", "inf", "negative") else [], cache))
+        return
+    if kind == "regions":   # the power sweep of tests/grade_calibration.sh, one process
+        if len(argv) < 8:
+            fail("regions REF.pfm OUTDIR NAME1,... B1,B2,... IN1.pfm [IN2.pfm...]")
+        ref, outdir, names, biases, ins = argv[2], argv[3], argv[4].split(","), argv[5].split(","), argv[6:]
+        for name in names:
+            for b in biases:
+                for i, src in enumerate(ins):
+                    sb = b if i % 2 == 0 else "-" + b
+                    write("%s/%s_%s_%d.pfm" % (outdir, name, b, i), make("region", src, [name, sb, ref], cache))
+        return
+    if len(argv) < 4:
+        fail("usage: mistakes.py KIND IN.pfm OUT.pfm [args] (see the head of the file)")
+    write(argv[3], make(kind, argv[2], argv[4:], cache))
 
 
 if __name__ == "__main__":

@@ -4,18 +4,20 @@
 # known answers and on unbiased estimators agreeing.
 #
 #   ref/make_refs.sh              # every group (what `make refs` runs)
-#   ref/make_refs.sh scenes       # only the named groups: est, scenes (or REF_GROUPS="est scenes")
+#   ref/make_refs.sh scenes       # only the named groups: est, scenes, big (or REF_GROUPS="est scenes")
 #
 # Groups: `est` = cornell_L01 (tests/test_render.sh) and the 24x24 references of
 # tests/test_estimators.sh; `scenes` = every scene of scenes/ at 64x64, full transport and L0..L3
 # (SCENE.pfm, SCENE_split_L0.pfm .. SCENE_split_L3.pfm)
-# (tests/test_refs.sh, `make bench`). The manifest keeps the rows of the groups not regenerated, so
+# (tests/test_refs.sh, `make bench`); `big` = the Cornell box at 128x128, full transport and L0..L3
+# (cornell-128.pfm, cornell-128_split_L0.pfm .. _L3.pfm; tests/grade_calibration.sh,
+# tests/test_grade_mistakes.sh). The manifest keeps the rows of the groups not regenerated, so
 # it always lists every file; each row names the revision that made it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 PATHLAB=${PATHLAB:-./pathlab}
-groups=${*:-${REF_GROUPS:-est scenes}}
-for g in $groups; do case $g in est|scenes) ;; *) echo "make_refs.sh: unknown group '$g' (est, scenes)" >&2; exit 2 ;; esac; done
+groups=${*:-${REF_GROUPS:-est scenes big}}
+for g in $groups; do case $g in est|scenes|big) ;; *) echo "make_refs.sh: unknown group '$g' (est, scenes, big)" >&2; exit 2 ;; esac; done
 wants() { case " $groups " in *" $1 "*) return 0 ;; *) return 1 ;; esac; }
 rev=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
 [ -z "$(git status --porcelain src 2>/dev/null)" ] || rev="$rev+changes"
@@ -97,6 +99,13 @@ for s in cornell:4096: cornell-glossy:4096: furnace:4096: quad-light:8192:solid-
     # shellcheck disable=SC2086
     split_ref "$name" "scenes/$name.obj" "$spp" $((seed + 1)) $flags
 done
+
+# The Cornell box at 128x128 as students render it (default estimators, full transport), for grading
+# at a second size: the same samples per pixel as the 64x64 one, 4 times the pixels (about a minute
+# on 2 cores each). 4096 spp is >= 4 times the 1024 spp that tests/grade_calibration.sh grades.
+group=big
+ref cornell-128 scenes/cornell.obj 4096 3100 --size 128x128
+split_ref cornell-128 scenes/cornell.obj 4096 3101 --size 128x128
 
 # The manifest: every file of every group, its new row if just made, else its old row.
 {

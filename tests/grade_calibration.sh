@@ -1,0 +1,229 @@
+#!/usr/bin/env bash
+# tests/grade_calibration.sh [OUT.md] — how far `pathlab grade` can be trusted (`make grade-calibration`;
+# not part of `make test`). Prints a Markdown report and, given OUT.md, writes it there too.
+#
+# (a) False alarms: honest images (pathlab's estimators standing in for different students'
+#     renderers: --direct, --light, --dir and --rr varied; 1 to 1024 spp, powers of 2; 64x64 against
+#     ref/cornell.pfm and 128x128 against ref/cornell-128.pfm; full transport as the references;
+#     distinct seeds), each graded at the default alpha 0.01. Failures per spp, per estimator and
+#     overall, with the one-sided 95% Clopper-Pearson upper bound of the rate.
+# (b) Power: for sizes 64 and 128, spp 4, 64 and 1024 and four regions -- whole (every pixel),
+#     quarter (the top-left quarter), bright (the 1% of pixels where the reference is brightest: the
+#     emitter seen directly), sparse (one pixel in 16, a thin spread over the image) -- the smallest
+#     relative bias b of 0.2% 0.5% 1% 2% 5% 10% 20% 50% for which >= 90% of the images fail. The bias
+#     is put on honest renders (default estimators) by tests/mistakes.py regions: the region's pixels
+#     times 1 + b on even images and 1 - b on odd ones (brighter and darker both).
+#
+# Honest renders are cached in $CALIB_DIR (default /tmp/pathlab-calib), named by size, spp,
+# estimator and seed: a rerun after a change to grade only re-grades. CALIB_FAST=1: a smoke test
+# (fewer spp, estimators and images; about 2 minutes on 2 cores with an empty cache).
+# Full run with an empty cache: see bench/grade_calibration_before.md for the measured time.
+set -uo pipefail
+cd "$(dirname "$0")/.."
+PATHLAB=${PATHLAB:-./pathlab}
+DIR=${CALIB_DIR:-/tmp/pathlab-calib}
+FAST=${CALIB_FAST:-0}
+OUT=${1:-}
+MISTAKES="python3 tests/mistakes.py"
+mkdir -p "$DIR/honest" || exit 2
+WORK=$(mktemp -d); trap 'rm -rf "$WORK"' EXIT
+for r in ref/cornell.pfm ref/cornell-128.pfm; do
+    [ -f "$r" ] || { echo "grade_calibration.sh: $r missing (ref/make_refs.sh scenes big)" >&2; exit 2; }
+done
+[ -x "$PATHLAB" ] || { echo "grade_calibration.sh: $PATHLAB missing (make)" >&2; exit 2; }
+t_start=$(date +%s)
+: > "$WORK/render_times"
+
+# Estimators, label=flags (the label names the cache files)
+ESTIMATORS=(
+    "default="
+    "light=--direct light"
+    "brdf=--direct brdf"
+    "mis-balance=--direct mis-balance"
+    "light-sa=--direct light --light solid-angle"
+    "solid-angle=--light solid-angle"
+    "triangle=--light triangle"
+    "power=--light power"
+    "cosine=--dir cosine"
+    "uniform=--dir uniform"
+    "rr-off=--rr off"
+    "rr1-light-sa-cos=--rr 1 --direct light --light solid-angle --dir cosine"
+)
+if [ "$FAST" != 0 ]; then
+    FA_SPP="1 4 16 64 256"; FA_NEST=4; FA_NEST_BIG=4
+    PW_SPP="4 64"; PW_N=6; PW_N_BIG=6
+else
+    FA_SPP="1 2 4 8 16 32 64 128 256 512 1024"; FA_NEST=12; FA_NEST_BIG=6   # 128x128 at 1024 spp: 6
+    PW_SPP="4 64 1024"; PW_N=10; PW_N_BIG=10
+fi
+BIASES="0.002 0.005 0.01 0.02 0.05 0.1 0.2 0.5"
+
+ref_of() { if [ "$1" = 64 ]; then echo ref/cornell.pfm; else echo ref/cornell-128.pfm; fi; }
+
+# honest SIZE SPP LABEL SEED FLAGS...: the cached render's path on stdout (rendered if missing)
+honest() {
+    local size=$1 spp=$2 label=$3 seed=$4; shift 4
+    local f="$DIR/honest/s${size}_spp${spp}_${label}_seed${seed}.pfm"
+    if [ ! -s "$f" ]; then
+        local t0; t0=$(date +%s.%N)
+        # shellcheck disable=SC2068
+        if ! $PATHLAB render scenes/cornell.obj --quiet --size "${size}x${size}" --spp "$spp" --seed "$seed" $@ -o "$f" >&2; then
+            echo "grade_calibration.sh: render failed: $size $spp $label $seed $*" >&2; exit 2
+        fi
+        awk -v t0="$t0" -v t1="$(date +%s.%N)" 'BEGIN { print t1 - t0 }' >> "$WORK/render_times"
+    fi
+    echo "$f"
+}
+
+# grade IMAGE REF: "rc<TAB>verdict" (the verdict line and the reason lines, joined with ;)
+grade() {
+    local out rc
+    out=$($PATHLAB grade "$1" --ref "$2" 2>&1); rc=$?
+    printf '%s\t%s\n' "$rc" "$(echo "$out" | grep -E '^(PASS|FAIL)|^  |rror|has a|differ' | sed 's/^ *//' | paste -sd ';' - | cut -c1-200)"
+}
+
+# ---- (a) false alarms -------------------------------------------------------------------------
+FA="$WORK/fa.tsv"     # size spp label seed rc verdict
+seed=200000
+for size in 64 128; do
+    ref=$(ref_of $size)
+    for spp in $FA_SPP; do
+        nest=$FA_NEST
+        [ "$size" = 128 ] && [ "$spp" -ge 1024 ] && nest=$FA_NEST_BIG
+        for ((e = 0; e < nest; e++)); do
+            label=${ESTIMATORS[$e]%%=*} flags=${ESTIMATORS[$e]#*=}
+            seed=$((seed + 1))
+            # shellcheck disable=SC2086
+            img=$(honest "$size" "$spp" "$label" "$seed" $flags) || exit 2
+            printf '%s\t%s\t%s\t%s\t%s\n' "$size" "$spp" "$label" "$seed" "$(grade "$img" "$ref")" >> "$FA"
+        done
+    done
+    echo "false alarms: ${size}x$size graded ($(($(date +%s) - t_start)) s so far)" >&2
+done
+
+# ---- (b) power --------------------------------------------------------------------------------
+PW="$WORK/power.tsv"  # size spp region bias fails n
+PWSUM="$WORK/power_summary.tsv"   # size spp region smallest-bias n
+seed=300000
+for size in 64 128; do
+    ref=$(ref_of $size)
+    for spp in $PW_SPP; do
+        n=$PW_N
+        [ "$size" = 128 ] && [ "$spp" -ge 1024 ] && n=$PW_N_BIG
+        need=$(( (9 * n + 9) / 10 ))     # >= 90% of n
+        seed=$((seed + 100))              # distinct seeds per size and spp
+        imgs=()
+        for ((i = 0; i < n; i++)); do
+            img=$(honest "$size" "$spp" power "$((seed + i))") || exit 2
+            imgs+=("$img")
+        done
+        rm -f "$WORK"/b/*.pfm; mkdir -p "$WORK/b"
+        $MISTAKES regions "$ref" "$WORK/b" whole,quarter,bright,sparse "${BIASES// /,}" "${imgs[@]}" || exit 2
+        for region in whole quarter bright sparse; do
+            found=""
+            for b in $BIASES; do
+                fails=0
+                for ((i = 0; i < n; i++)); do
+                    rc=$($PATHLAB grade "$WORK/b/${region}_${b}_$i.pfm" --ref "$ref" > /dev/null 2>&1; echo $?)
+                    [ "$rc" != 0 ] && fails=$((fails + 1))
+                done
+                printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$size" "$spp" "$region" "$b" "$fails" "$n" >> "$PW"
+                [ -z "$found" ] && [ "$fails" -ge "$need" ] && found=$b
+            done
+            printf '%s\t%s\t%s\t%s\t%s\n' "$size" "$spp" "$region" "${found:-none}" "$n" >> "$PWSUM"
+        done
+        echo "power: ${size}x$size at $spp spp done ($(($(date +%s) - t_start)) s so far)" >&2
+    done
+done
+t_total=$(($(date +%s) - t_start))
+t_render=$(awk '{ s += $1 } END { printf "%.0f", s }' "$WORK/render_times")
+
+# ---- the report -------------------------------------------------------------------------------
+python3 - "$FA" "$PW" "$PWSUM" "$t_total" "$t_render" "$FAST" "$(git rev-parse --short HEAD 2>/dev/null || echo unknown)" \
+    "$(nproc)" > "$WORK/report.md" <<'EOF'
+import math, sys, collections
+fa_path, pw_path, sum_path, t_total, t_render, fast, rev, cores = sys.argv[1:9]
+
+def binom_cdf(k, n, p):
+    if p <= 0.0: return 1.0
+    if p >= 1.0: return 1.0 if k >= n else 0.0
+    return sum(math.exp(math.lgamma(n + 1) - math.lgamma(i + 1) - math.lgamma(n - i + 1)
+                        + i * math.log(p) + (n - i) * math.log1p(-p)) for i in range(k + 1))
+
+def upper95(k, n):
+    """One-sided 95% Clopper-Pearson upper bound of a binomial rate, k of n."""
+    if k >= n: return 1.0
+    lo, hi = 0.0, 1.0
+    for _ in range(60):
+        mid = (lo + hi) / 2
+        if binom_cdf(k, n, mid) > 0.05: lo = mid
+        else: hi = mid
+    return hi
+
+rows = [l.rstrip("\n").split("\t") for l in open(fa_path) if l.strip()]
+print("# pathlab grade: calibration%s" % (" (CALIB_FAST=1: smoke test, few images)" if fast != "0" else ""))
+print()
+print("tests/grade_calibration.sh at revision %s, %s cores; %s s in all, %.0f s of it rendering (cached renders"
+      " are not re-rendered). Default alpha 0.01: an honest image should fail at most 1%% of the time."
+      % (rev, cores, t_total, float(t_render)))
+print()
+print("## False alarms (honest images, Cornell box, full transport)")
+print()
+n = len(rows); k = sum(1 for r in rows if r[4] != "0"); bad = sum(1 for r in rows if r[4] == "2")
+print("**Overall: %d of %d honest images failed (%.1f%%); 95%% upper bound %.1f%%.**%s"
+      % (k, n, 100.0 * k / max(n, 1), 100.0 * upper95(k, n), " (%d of them exit 2: bad input)" % bad if bad else ""))
+print()
+def table(key, title):
+    groups = collections.OrderedDict()
+    for r in rows:
+        groups.setdefault(key(r), []).append(r)
+    print("| %s | 64x64 failed | 128x128 failed | both | rate | 95%% upper |" % title)
+    print("|---|---|---|---|---|---|")
+    for g, rs in groups.items():
+        cell = []
+        for size in ("64", "128"):
+            s = [r for r in rs if r[0] == size]
+            cell.append("%d / %d" % (sum(1 for r in s if r[4] != "0"), len(s)))
+        kk = sum(1 for r in rs if r[4] != "0")
+        print("| %s | %s | %s | %d / %d | %.1f%% | %.1f%% |" % (g, cell[0], cell[1], kk, len(rs), 100.0 * kk / len(rs), 100.0 * upper95(kk, len(rs))))
+    print()
+table(lambda r: r[1], "spp")
+table(lambda r: r[2], "estimator")
+fails = [r for r in rows if r[4] != "0"]
+if fails:
+    print("Failed honest images:")
+    print()
+    for r in fails:
+        print("- %sx%s, %s spp, %s, seed %s: exit %s: %s" % (r[0], r[0], r[1], r[2], r[3], r[4], r[5]))
+    print()
+print("Estimators: default = --direct mis-power --light area --dir brdf --rr 3; light, brdf, mis-balance = --direct X;"
+      " light-sa = --direct light --light solid-angle; solid-angle, triangle, power = --light X; cosine, uniform = --dir X;"
+      " rr-off = --rr off; rr1-light-sa-cos = --rr 1 --direct light --light solid-angle --dir cosine.")
+print()
+print("## Power: the smallest relative bias that >= 90% of the images fail")
+print()
+summ = [l.rstrip("\n").split("\t") for l in open(sum_path) if l.strip()]
+pw = [l.rstrip("\n").split("\t") for l in open(pw_path) if l.strip()]
+regions = ["whole", "quarter", "bright", "sparse"]
+print("| size | spp | images | whole | quarter | bright (top 1%) | sparse (1 px in 16) |")
+print("|---|---|---|---|---|---|---|")
+cells = collections.OrderedDict()
+for size, spp, region, b, nimg in summ:
+    cells.setdefault((size, spp, nimg), {})[region] = b
+def pct(b):
+    return "not found (> 50%)" if b == "none" else "%g%%" % (100 * float(b))
+for (size, spp, nimg), c in cells.items():
+    print("| %sx%s | %s | %s | %s |" % (size, size, spp, nimg, " | ".join(pct(c.get(r, "none")) for r in regions)))
+print()
+print("Biases tried: 0.2% 0.5% 1% 2% 5% 10% 20% 50%, all of them (a larger bias is not always found more often); the region's"
+      " pixels times 1 + b on even images, 1 - b on odd ones. Failures per bias tried (size spp region: bias fails/n):")
+print()
+per = collections.OrderedDict()
+for size, spp, region, b, f, nimg in pw:
+    per.setdefault((size, spp, region), []).append("%g%% %s/%s" % (100 * float(b), f, nimg))
+for (size, spp, region), l in per.items():
+    print("- %sx%s %s spp %s: %s" % (size, size, spp, region, ", ".join(l)))
+EOF
+cat "$WORK/report.md"
+[ -n "$OUT" ] && cp "$WORK/report.md" "$OUT"
+exit 0

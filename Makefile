@@ -93,7 +93,7 @@ bench-portable:
 
 # How far `pathlab grade` can be trusted (tests/grade_calibration.sh): false alarms on >= 200 honest
 # renders of every estimator at 1 to 1024 spp, and the smallest bias found per size, spp and region.
-# About 25 minutes on 2 cores (renders cached in CALIB_DIR, default /tmp/pathlab-calib; a rerun only
+# About 13 minutes on 2 cores (renders cached in CALIB_DIR, default /tmp/pathlab-calib; a rerun only
 # re-grades); CALIB_FAST=1 for a 2-minute smoke test. Not part of `make test`.
 grade-calibration: $(PROG)
 	PATHLAB=./$(PROG) tests/grade_calibration.sh $(CALIB_OUT)

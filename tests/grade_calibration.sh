@@ -16,8 +16,10 @@
 #
 # Honest renders are cached in $CALIB_DIR (default /tmp/pathlab-calib), named by size, spp,
 # estimator and seed: a rerun after a change to grade only re-grades. CALIB_FAST=1: a smoke test
-# (fewer spp, estimators and images; about 2 minutes on 2 cores with an empty cache).
-# Full run with an empty cache: see bench/grade_calibration_before.md for the measured time.
+# (fewer spp, estimators and images; 40 images; about 1.5 minutes on 2 cores with an empty cache,
+# 30 s cached). Full run with an empty cache, measured on 2 shared cores: about 13 minutes (of it
+# ~12 rendering; 128x128 at 1024 spp, 13-30 s an image, is over a third of it); cached: ~1.5 minutes.
+# FA_NEST_BIG and PW_N_BIG below set the images at 128x128 and 1024 spp if that is too slow.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 PATHLAB=${PATHLAB:-./pathlab}
@@ -53,7 +55,7 @@ if [ "$FAST" != 0 ]; then
     FA_SPP="1 4 16 64 256"; FA_NEST=4; FA_NEST_BIG=4
     PW_SPP="4 64"; PW_N=6; PW_N_BIG=6
 else
-    FA_SPP="1 2 4 8 16 32 64 128 256 512 1024"; FA_NEST=12; FA_NEST_BIG=6   # 128x128 at 1024 spp: 6
+    FA_SPP="1 2 4 8 16 32 64 128 256 512 1024"; FA_NEST=12; FA_NEST_BIG=12  # 264 images
     PW_SPP="4 64 1024"; PW_N=10; PW_N_BIG=10
 fi
 BIASES="0.002 0.005 0.01 0.02 0.05 0.1 0.2 0.5"

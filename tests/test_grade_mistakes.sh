@@ -8,7 +8,8 @@
 # images of both sizes, both seeds (8 bases): flipped, rotated, grey (PF and Pf), sRGB or gamma
 # encoded, clamped, quantised to 8 bits, scaled (pi, 1/pi, 2, 0.5, 1.3), a big-endian header on
 # little-endian data, CRLF header, truncated, trailing bytes, one NaN / inf / negative pixel, no L0
-# (full - L0), direct light only (L0 + L1), at most 3 bounces (--bounces 0:3), the wrong size.
+# (--bounces 1:inf), direct light only (0:1), at most 3 bounces (0:3), indirect only (2:inf), the wrong
+# size; each must be named (the likely mistake on stdout, or the input error on stderr). A class.
 # One line per case with grade's verdict. About 40 s on 2 cores (python starts in ~0.8 s here:
 # tests/mistakes.py makes all the single-image mistakes of a base in one process). PATHLAB_FAST (the
 # sanitizer build): 64x64 only, one seed.
@@ -45,39 +46,79 @@ done
 if [ "$false_alarms" -le 1 ]; then pass "honest images: $false_alarms false alarm(s) of $honest_n (at most 1)"
 else fail "honest images: $false_alarms false alarms of $honest_n (at most 1)"; fi
 
-# 2. the mistakes, on each base image (16 and 64 spp, both sizes, both seeds)
-mistake() {   # mistake NAME BASE_LABEL IMAGE REF: wants exit 1 or 2
-    local name=$1 label=$2 img=$3 ref=$4
-    [ -s "$img" ] || { fail "$name ($label): $img was not made"; return; }   # else exit 2 would pass
+# 2. the mistakes, on each base image (16 and 64 spp, both sizes, both seeds): each must fail
+# (exit 1) with its likely mistake named, or be refused (exit 2) with its cause on stderr
+expect_mistake() {   # expect_mistake NAME LABEL IMAGE REF WANT PATTERN: exit WANT, PATTERN in stdout (1) or stderr (2)
+    local name=$1 label=$2 img=$3 ref=$4 want=$5 pattern=$6 where
     grade_case "$img" "$ref"
-    if [ "$rc" = 1 ] || [ "$rc" = 2 ]; then pass "$name ($label): exit $rc [$(verdict)]"
-    else fail "$name ($label): exit $rc, wanted 1 or 2 [$(verdict)]"; fi
+    where=$TMP/g.out; [ "$want" = 2 ] && where=$TMP/g.err
+    if [ "$rc" != "$want" ]; then fail "$name ($label): exit $rc, wanted $want [$(verdict)]"
+    elif ! grep -qE -- "$pattern" "$where"; then
+        fail "$name ($label): exit $rc but not named ('$pattern'): $(grep -E '^likely|^/' "$TMP/g.out" | head -3 | paste -sd '|' - | cut -c1-300) $(head -c 200 "$TMP/g.err")"
+    else pass "$name ($label): exit $rc, named [$(grep -E -m1 -- "$pattern" "$where" | sed 's/^ *//' | cut -c1-120)]"; fi
 }
+SEEDS="11 12"; SIZES="64 128"
+[ "${PATHLAB_FAST:-0}" != 0 ] && SEEDS=11 SIZES=64     # the sanitizer build: one base per spp
 for size in $SIZES; do
     ref=$REF64 other=$REF128; [ $size = 128 ] && ref=$REF128 other=$REF64
     for spp in 16 64; do
         for seed in $SEEDS; do
             base=$TMP/h_${size}_${spp}_$seed.pfm label="${size}x$size $spp spp seed $seed"
-            m=$TMP/m.pfm
             rm -rf "$TMP/all"; mkdir "$TMP/all"
             $M all "$base" "$TMP/all" $((size / 3)) $((size / 2)) ||   # nan, inf, negative at that pixel
                 fail "mistakes.py all $base: exit $?"
-            for k in flip-v flip-h rotate-180 grey grey-pf srgb gamma clamp1 quant8 quant8-srgb \
-                     big-endian-header crlf truncated trailing; do
-                mistake "$k" "$label" "$TMP/all/$k.pfm" "$ref"
+            while read -r k want pattern; do
+                expect_mistake "$k" "$label" "$TMP/all/$k.pfm" "$ref" "$want" "$pattern"
+            done <<'TABLE'
+flip-v 1 ^likely mistake: flipped vertically
+flip-h 1 ^likely mistake: mirrored left-right
+rotate-180 1 ^likely mistake: turned by 180 degrees
+grey 1 ^likely mistake: grey instead of colour
+srgb 1 ^likely mistake: the sRGB curve applied
+gamma 1 ^likely mistake: a gamma curve applied
+clamp1 1 ^likely mistake: values clamped at 1
+quant8 1 ^likely mistake: quantised to 8 bits: every value is a multiple of 1/255
+quant8-srgb 1 ^likely mistake: quantised to 8 bits through the sRGB curve
+scale_3.14159265 1 ^likely mistake: pi times the reference
+scale_0.318309886 1 ^likely mistake: 1/pi times the reference
+scale_2 1 ^likely mistake: 2 times the reference
+scale_0.5 1 ^likely mistake: 1/2 times the reference
+scale_1.3 1 ^likely mistake: a global factor: 1\.(2[6-9]|3[0-4])[0-9]* times
+grey-pf 2 greyscale \("Pf", 1 channel\) against a colour reference
+big-endian-header 2 says big-endian, but read so the values are absurd
+crlf 2 lines end with CR LF
+truncated 2 truncated: expected
+trailing 2 bytes after the pixel data
+nan 2 are NaN, first at x
+inf 2 infinite|[+-]Inf
+negative 2 are negative
+TABLE
+            # bounces left out: renders of the other bounces (a student's --bounces, in effect)
+            for b in "no-L0 1:inf ^likely mistake: no L0" "direct-only 0:1 ^likely mistake: direct light only" \
+                     "stopped-after-3 0:3 ^likely mistake: stopped after 3 bounces" "indirect-only 2:inf ^likely mistake: indirect light only"; do
+                set -- $b
+                $R --size ${size}x$size --spp $spp --seed $((seed + 5000 + spp)) --bounces "$2" -o "$TMP/b.pfm"
+                expect_mistake "$1 (--bounces $2)" "$label" "$TMP/b.pfm" "$ref" 1 "$3 $4 $5 $6"
             done
-            for f in 3.14159265 0.318309886 2 0.5 1.3; do
-                mistake "scale $f" "$label" "$TMP/all/scale_$f.pfm" "$ref"
-            done
-            for k in nan inf negative; do
-                mistake "$k pixel" "$label" "$TMP/all/$k.pfm" "$ref"
-            done
-            # layers from a --bounces 0:3 --split render of the same spp (another seed)
-            $R --size ${size}x$size --spp $spp --seed $((seed + 5000 + spp)) --bounces 0:3 --split -o "$TMP/sp.pfm"
-            rm -f "$m"; $M sub "$base" "$TMP/sp_L0.pfm" "$m"; mistake "no L0 (full - L0)" "$label" "$m" "$ref"
-            rm -f "$m"; $M add "$TMP/sp_L0.pfm" "$TMP/sp_L1.pfm" "$m"; mistake "direct only (L0 + L1)" "$label" "$m" "$ref"
-            mistake "at most 3 bounces (--bounces 0:3)" "$label" "$TMP/sp.pfm" "$ref"
-            mistake "wrong size" "$label" "$base" "$other"
+            expect_mistake "wrong size" "$label" "$base" "$other" 1 "the wrong image size: $size.$size, the reference is .*pathlab render scenes/cornell.obj .*--size ${size}x$size"
         done
     done
 done
+
+# 3. a class of mixed images: the right lines, summary, report and exit status
+mkdir -p "$TMP/class"
+cp "$TMP/h_64_16_11.pfm" "$TMP/class/alice.pfm"; cp "$TMP/h_64_64_12.pfm" "$TMP/class/bruno.pfm"
+$M flip-v "$TMP/h_64_16_12.pfm" "$TMP/class/chloe.pfm"
+$M crlf "$TMP/h_64_64_11.pfm" "$TMP/class/david.pfm"
+$R --size 64x64 --spp 16 --seed 77 --bounces 0:1 -o "$TMP/class/emma.pfm"
+$PATHLAB grade "$TMP/class" --ref "$REF64" --report "$TMP/class.csv" > "$TMP/g.out" 2> "$TMP/g.err"; rc=$?
+csv=$(cut -d, -f1,2 "$TMP/class.csv" | sed 's|"[^"]*/||; s|"||g' | paste -sd ' ' -)
+if [ $rc = 2 ] && grep -q "^summary: 5 images, 2 pass, 2 fail, 1 could not be read" "$TMP/g.out" \
+   && [ "$csv" = "image,verdict alice.pfm,PASS bruno.pfm,PASS chloe.pfm,FAIL david.pfm,UNREADABLE emma.pfm,FAIL" ] \
+   && grep -q '^"[^"]*chloe.pfm",FAIL,.*flipped vertically' "$TMP/class.csv" && grep -q '^"[^"]*emma.pfm",FAIL,.*direct light only' "$TMP/class.csv"; then
+    pass "a class of 5 (2 honest, flipped, CR LF, direct only): exit 2, the summary, each row and its mistake in the report"
+else fail "a class of 5: exit $rc, rows '$csv', $(grep summary "$TMP/g.out")"; fi
+rm "$TMP/class/david.pfm"
+$PATHLAB grade "$TMP/class" --ref "$REF64" --report "$TMP/class.md" > "$TMP/g.out" 2> "$TMP/g.err"; rc=$?
+if [ $rc = 1 ] && grep -q "^| [^|]*emma.pfm | FAIL | .* | direct light only" "$TMP/class.md"; then pass "the class without its unreadable image: exit 1, Markdown report"
+else fail "the class without its unreadable image: exit $rc, $(head -c 300 "$TMP/class.md")"; fi

@@ -39,9 +39,11 @@
  *     bias at 64 spp on 64 x 64 pixels with z ~ 3 instead of ~ 9. The weight's noise comes from
  *     the neighbours only (s^2 pooled over the 3 x 3 blocks without the block itself), so that
  *     weight and mean d of a block are independent and E[z] = 0 without bias.
+ * The blocks are tested at several scales: B, 2B, 4B... as long as the image holds 2 x 2 of them (a
+ * bias over a quarter of the image is too thin for 8x8 blocks, too local for the whole image).
  * alpha (default 0.01) is split in three: alpha/3 for the 3 whole-image tests, alpha/3 for the
- * 3 x nblocks block tests, alpha/3 for the 3 x nlevels level tests, each family with Sidak's
- * correction (per-test level 1 - (1 - alpha/3)^(1/k)): an unbiased image fails with probability at
+ * blocks (shared equally by the scales, 3 x nblocks tests each), alpha/3 for the 3 x nlevels
+ * level tests, each family with Sidak's correction (per-test level 1 - (1 - alpha/3)^(1/k)): an unbiased image fails with probability at
  * most alpha (the exact pixels, compared as numbers, never fail it). Float rounding (a few ulps of
  * the values) is added to every standard error.
  *
@@ -278,20 +280,25 @@ static void judge_group(grade_block *g, double level, tcrit_memo *memo, double *
     }
 }
 
-/* The within-block variance of d pooled over the blocks around (bx, by): sum of (m - 1) s^2 over
- * sum of (m - 1), with or without the block itself. */
-static double pooled_var(const grade_report *r, int bx, int by, int ch, int self)
+/* The within-block variance of d pooled over the blocks around (bx, by) of a grid of nbx x nby
+ * blocks: sum of (m - 1) s^2 over sum of (m - 1), with or without the block itself. */
+static double pooled_in(const grade_block *g, int nbx, int nby, int bx, int by, int ch, int self)
 {
     double ss = 0.0, df = 0.0;
     int x, y;
     for (y = by - GRADE_POOL; y <= by + GRADE_POOL; y++)
         for (x = bx - GRADE_POOL; x <= bx + GRADE_POOL; x++)
-            if (x >= 0 && y >= 0 && x < r->nbx && y < r->nby && (self || x != bx || y != by)) {
-                const grade_block *b = &r->blocks[y * r->nbx + x];
+            if (x >= 0 && y >= 0 && x < nbx && y < nby && (self || x != bx || y != by)) {
+                const grade_block *b = &g[y * nbx + x];
                 ss += b->df * b->var[ch];
                 df += b->df;
             }
     return df > 0.0 ? ss / df : 0.0;
+}
+
+static double pooled_var(const grade_report *r, int bx, int by, int ch, int self)
+{
+    return pooled_in(r->blocks, r->nbx, r->nby, bx, by, ch, self);
 }
 
 /* The variance of a block's mean d: the larger of its own and its neighbourhood's pixel variance,
@@ -321,7 +328,7 @@ static void test_blocks(grade_report *r, const image *img, const image *ref, con
                 }
         }
     group_stats(r, r->blocks, r->nblocks, id, img, ref, var);
-    r->block_level = sidak_level(r->alpha / 3.0, 3L * r->nblocks);
+    r->block_level = sidak_level(r->alpha / 3.0 / (1 + r->ncoarse), 3L * r->nblocks);
     for (by = 0; by < r->nby; by++)
         for (bx = 0; bx < r->nbx; bx++) {
             grade_block *b = &r->blocks[by * r->nbx + bx];
@@ -351,6 +358,42 @@ static double neighbours_luminance(const grade_report *r, const image *ref, size
                 n++;
             }
     return n ? sum / n : ref_luminance(ref, p);
+}
+
+/* The blocks of the coarser scales, each scale its own family of alpha/3 / (1 + ncoarse): a bias
+ * over a quarter of the image is too thin in any 8x8 block and too local for the whole-image fit.
+ * Their noise is as the finest blocks': the larger of their own scatter and their neighbours'. */
+static void test_coarse(grade_report *r, const image *img, const image *ref, const image *var, int *id)
+{
+    size_t p, n = (size_t)r->w * r->h;
+    int k, b, ch;
+    tcrit_memo memo = {{0}, 0.0, {0}, 0};
+    for (k = 0; k < r->ncoarse; k++) {
+        grade_scale *s = &r->coarse[k];
+        for (b = 0; b < s->nblocks; b++) {
+            grade_block *g = &s->blocks[b];
+            g->x0 = b % s->nbx * s->side;
+            g->y0 = b / s->nbx * s->side;
+            g->x1 = b % s->nbx == s->nbx - 1 ? r->w : g->x0 + s->side;
+            g->y1 = b / s->nbx == s->nby - 1 ? r->h : g->y0 + s->side;
+        }
+        for (p = 0; p < n; p++) {
+            int bx = imin((int)(p % (size_t)r->w) / s->side, s->nbx - 1), by = imin((int)(p / (size_t)r->w) / s->side, s->nby - 1);
+            id[p] = r->exact[p] ? -1 : by * s->nbx + bx;
+        }
+        group_stats(r, s->blocks, s->nblocks, id, img, ref, var);
+        s->level = sidak_level(r->alpha / 3.0 / (1 + r->ncoarse), 3L * s->nblocks);
+        for (b = 0; b < s->nblocks; b++) {
+            grade_block *g = &s->blocks[b];
+            for (ch = 0; ch < 3; ch++) {
+                double v = fmax(g->var[ch], pooled_in(s->blocks, s->nbx, s->nby, b % s->nbx, b / s->nbx, ch, 1));
+                g->noise[ch] = g->n > 0 ? fmax(v / g->n, g->floor[ch]) + g->round[ch] * g->round[ch] : 0.0;
+            }
+            judge_group(g, s->level, &memo, &(double){0.0}, &s->excess);
+            s->brighter += g->sign > 0;
+            s->darker += g->sign < 0;
+        }
+    }
 }
 
 /* The level of a reference luminance: one octave each (see GRADE_LEVELS). */
@@ -460,16 +503,24 @@ static void test_pixels(grade_report *r, const image *img, const image *ref, con
 
 static void choose_blocks(grade_report *r, const grade_opts *o)
 {
+    int side;
     r->block = o->block > 0 ? o->block : (r->w < r->h ? r->w : r->h) / 16;
     if (r->block < GRADE_MIN_BLOCK && o->block <= 0) r->block = GRADE_MIN_BLOCK;
     r->nbx = r->w / r->block > 0 ? r->w / r->block : 1;
     r->nby = r->h / r->block > 0 ? r->h / r->block : 1;
     r->nblocks = r->nbx * r->nby;
+    for (side = 2 * r->block; r->ncoarse < GRADE_MAX_COARSE && r->w / side >= 2 && r->h / side >= 2; side *= 2) {
+        grade_scale *s = &r->coarse[r->ncoarse++];
+        s->side = side;
+        s->nbx = r->w / side;
+        s->nby = r->h / side;
+        s->nblocks = s->nbx * s->nby;
+    }
 }
 
 int grade_compute(grade_report *r, const image *img, const image *ref, const image *ref_var, const grade_opts *o)
 {
-    int *id;
+    int *id, k, oom = 0;
     memset(r, 0, sizeof *r);
     if (img->w != ref->w || img->h != ref->h) return 1;
     if (ref_var && (ref_var->w != ref->w || ref_var->h != ref->h)) return 1;
@@ -480,7 +531,11 @@ int grade_compute(grade_report *r, const image *img, const image *ref, const ima
     r->blocks = calloc((size_t)r->nblocks, sizeof *r->blocks);
     r->levels = calloc(GRADE_LEVELS, sizeof *r->levels);
     id = malloc((size_t)r->w * r->h * sizeof *id);
-    if (!r->blocks || !r->levels || !id || mark_exact(r, ref, ref_var)) {
+    for (k = 0; k < r->ncoarse; k++) {
+        r->coarse[k].blocks = calloc((size_t)r->coarse[k].nblocks, sizeof *r->coarse[k].blocks);
+        oom |= !r->coarse[k].blocks;
+    }
+    if (oom || !r->blocks || !r->levels || !id || mark_exact(r, ref, ref_var)) {
         free(id);
         grade_free(r);
         return 1;
@@ -488,6 +543,7 @@ int grade_compute(grade_report *r, const image *img, const image *ref, const ima
     test_exact(r, img, ref);
     if (ref_var && floor_scale(r, img, ref, ref_var)) { free(id); grade_free(r); return 1; }
     test_blocks(r, img, ref, ref_var, id);
+    test_coarse(r, img, ref, ref_var, id);
     test_levels(r, img, ref, ref_var, id);
     test_image(r, img, ref);
     free(id);
@@ -497,6 +553,11 @@ int grade_compute(grade_report *r, const image *img, const image *ref, const ima
 
 void grade_free(grade_report *r)
 {
+    int k;
+    for (k = 0; k < r->ncoarse; k++) {
+        free(r->coarse[k].blocks);
+        r->coarse[k].blocks = NULL;
+    }
     free(r->blocks);
     free(r->levels);
     free(r->exact);
@@ -506,6 +567,8 @@ void grade_free(grade_report *r)
 
 int grade_failed(const grade_report *r)
 {
+    int k;
+    for (k = 0; k < r->ncoarse; k++) if (r->coarse[k].brighter || r->coarse[k].darker) return 1;
     return r->image_fail || r->nbrighter > 0 || r->ndarker > 0 || r->level_brighter > 0 || r->level_darker > 0 ||
            r->exact_fail > 0;
 }
@@ -513,27 +576,39 @@ int grade_failed(const grade_report *r)
 double grade_excess(const grade_report *r)
 {
     double e = fmax(r->block_excess, r->level_excess);
-    int ch;
+    int ch, k;
     if (r->exact_fail) return 1e9;
+    for (k = 0; k < r->ncoarse; k++) e = fmax(e, r->coarse[k].excess);
     for (ch = 0; ch < 3; ch++) e = fmax(e, fabs(r->image_z[ch]) / r->image_zcrit);
     return e;
 }
 
-int grade_heatmap(image *out, const grade_report *r, const image *ref)
+/* Paints the significant blocks of one scale: red brighter, blue darker, over the grey. */
+static void paint_blocks(image *out, const grade_block *g, int ng, int w)
 {
     static const float red[3] = {0.9f, 0.03f, 0.03f}, blue[3] = {0.03f, 0.1f, 0.9f};
     int b, x, y, ch;
-    if (img_alloc(out, r->w, r->h)) return 1;
-    for (b = 0; b < r->nblocks; b++) {
-        const grade_block *k = &r->blocks[b];
-        for (y = k->y0; y < k->y1; y++)
-            for (x = k->x0; x < k->x1; x++) {
-                size_t i = 3 * ((size_t)y * r->w + x);
-                float Y = luminance(v3(ref->px[i], ref->px[i + 1], ref->px[i + 2]));
-                float grey = 0.5f * fminf(fmaxf(Y, 0.0f), 1.0f);   /* dimmed so that colours stand out */
-                for (ch = 0; ch < 3; ch++)
-                    out->px[i + ch] = k->sign == 0 ? grey : 0.8f * (k->sign > 0 ? red : blue)[ch] + 0.2f * grey;
-            }
+    for (b = 0; b < ng; b++) {
+        if (!g[b].sign) continue;
+        for (y = g[b].y0; y < g[b].y1; y++)
+            for (x = g[b].x0; x < g[b].x1; x++)
+                for (ch = 0; ch < 3; ch++) {
+                    float *v = &out->px[3 * ((size_t)y * w + x) + ch];
+                    *v = 0.8f * (g[b].sign > 0 ? red : blue)[ch] + 0.2f * *v;
+                }
     }
+}
+
+int grade_heatmap(image *out, const grade_report *r, const image *ref)
+{
+    size_t p;
+    int k, ch;
+    if (img_alloc(out, r->w, r->h)) return 1;
+    for (p = 0; p < (size_t)r->w * r->h; p++) {
+        float Y = (float)ref_luminance(ref, p);
+        for (ch = 0; ch < 3; ch++) out->px[3 * p + ch] = 0.5f * fminf(fmaxf(Y, 0.0f), 1.0f);   /* dimmed: colours stand out */
+    }
+    for (k = r->ncoarse - 1; k >= 0; k--) paint_blocks(out, r->coarse[k].blocks, r->coarse[k].nblocks, r->w);
+    paint_blocks(out, r->blocks, r->nblocks, r->w);
     return 0;
 }

@@ -30,6 +30,16 @@ typedef struct {
     int channel;             /* the channel that decided the sign */
 } grade_block;
 
+/* Blocks at a coarser scale: side 2, 4, 8... times the finest, down to 2 x 2 blocks. */
+typedef struct {
+    int side, nbx, nby, nblocks;
+    grade_block *blocks;
+    double level, excess;        /* per-test level; largest |t| / critical |t| */
+    int brighter, darker;
+} grade_scale;
+
+#define GRADE_MAX_COARSE 8
+
 typedef struct {
     double alpha;
     int w, h, block, nbx, nby, nblocks;  /* nblocks = nbx * nby, each tested in 3 channels */
@@ -37,6 +47,8 @@ typedef struct {
     double block_level, block_tcrit, block_tmax;  /* per-test level, critical |t| of a full block */
     double block_excess, level_excess;   /* largest |t| / its critical |t| in each family */
     int nbrighter, ndarker;
+    grade_scale coarse[GRADE_MAX_COARSE];  /* the blocks at coarser scales, finest first */
+    int ncoarse;
     grade_block *levels;                 /* nlevels groups by the reference's luminance */
     int nlevels, nlevels_tested, level_brighter, level_darker;
     double level_level, level_tmax, level_min_lum;  /* levels hold the pixels above the mean luminance */

@@ -60,15 +60,31 @@ static int sign_box(const grade_block *g, int ng, int sign, int box[4], long *ar
     return n;
 }
 
-/* One line for the significant blocks of one sign: how many, where, by how much. */
-static void print_blocks(const grade_report *r, int sign)
+/* One line for the significant blocks of one sign at one scale: how many, where, by how much. */
+static void print_blocks(const grade_report *r, const grade_block *g, int ng, int side, int sign)
 {
-    int b[4], n = sign_box(r->blocks, r->nblocks, sign, b, &(long){0});
+    int b[4], n = sign_box(g, ng, sign, b, &(long){0});
     char where[64];
     if (n == 0) return;
     describe_box(where, sizeof where, b[0], b[1], b[2], b[3], r->w, r->h);
-    printf("  %s in %d of %d blocks, within x %d..%d, y %d..%d (%s): %+.2f%% there\n", sign > 0 ? "brighter" : "darker", n,
-           r->nblocks, b[0], b[2] - 1, b[1], b[3] - 1, where, 100.0 * relative_diff(r, r->blocks, r->nblocks, sign));
+    printf("  %s in %d of %d blocks of %dx%d, within x %d..%d, y %d..%d (%s): %+.2f%% there\n", sign > 0 ? "brighter" : "darker",
+           n, ng, side, side, b[0], b[2] - 1, b[1], b[3] - 1, where, 100.0 * relative_diff(r, g, ng, sign));
+}
+
+/* Blocks at every scale */
+static int block_count(const grade_report *r)
+{
+    int k, n = r->nblocks;
+    for (k = 0; k < r->ncoarse; k++) n += r->coarse[k].nblocks;
+    return n;
+}
+
+/* Significant blocks at any scale, of either sign */
+static int any_block(const grade_report *r)
+{
+    int k, n = r->nbrighter + r->ndarker;
+    for (k = 0; k < r->ncoarse; k++) n += r->coarse[k].brighter + r->coarse[k].darker;
+    return n;
 }
 
 /* One line per significant level: its luminance range, its pixels, where they are, by how much. */
@@ -106,7 +122,7 @@ static void print_image_test(const grade_report *r)
 
 static void print_tests(const grade_report *r, const char *image, const char *ref, const grade_opts *o)
 {
-    int full = r->blocks[0].x1 - r->blocks[0].x0;
+    int k, full = r->blocks[0].x1 - r->blocks[0].x0;
     printf("pathlab grade: %s against %s, %dx%d pixels", image, ref, r->w, r->h);
     if (o->spp) printf(", %d spp", o->spp);
     if (o->ref_spp) printf(" (reference %d spp)", o->ref_spp);
@@ -115,6 +131,10 @@ static void print_tests(const grade_report *r, const char *image, const char *re
     printf("blocks of %dx%d pixels: %d blocks x 3 channels, max |t| %.2f, limit |t| %.2f (Student, %d df, level %.2g per test): "
            "%d brighter, %d darker\n", full, full, r->nblocks, r->block_tmax, r->block_tcrit, full * full - 1, r->block_level,
            r->nbrighter, r->ndarker);
+    for (k = 0; k < r->ncoarse; k++)
+        printf("blocks of %dx%d: %d blocks x 3 channels, largest |t| / limit %.2f (level %.2g per test): %d brighter, %d darker\n",
+               r->coarse[k].side, r->coarse[k].side, r->coarse[k].nblocks, r->coarse[k].excess, r->coarse[k].level,
+               r->coarse[k].brighter, r->coarse[k].darker);
     printf("levels (the pixels brighter than the mean %.3g, grouped by the reference's luminance, one octave each): %d levels "
            "x 3 channels, largest |t| / limit %.2f (level %.2g per test): %d brighter, %d darker\n", r->level_min_lum,
            r->nlevels_tested, r->level_excess, r->level_level, r->level_brighter, r->level_darker);
@@ -131,14 +151,14 @@ static void print_tests(const grade_report *r, const char *image, const char *re
 static void print_verdict(const grade_report *r)
 {
     long n = 3L * r->w * r->h;
-    int ch, worst = 0;
+    int ch, k, worst = 0;
     if (!grade_failed(r)) {
         printf("PASS: the difference is consistent with noise (alpha %g; %ld pixel-channels, %d block, %d level and 3 whole-image tests)\n",
-               r->alpha, n, 3 * r->nblocks, 3 * r->nlevels_tested);
+               r->alpha, n, 3 * block_count(r), 3 * r->nlevels_tested);
         return;
     }
     printf("FAIL: biased (alpha %g; %ld pixel-channels, %d block, %d level and 3 whole-image tests)\n", r->alpha, n,
-           3 * r->nblocks, 3 * r->nlevels_tested);
+           3 * block_count(r), 3 * r->nlevels_tested);
     if (r->exact_fail)
         printf("  %ld of %ld exact pixels differ; the worst at x %d, y %d: %.4g %.4g %.4g, the reference %.4g %.4g %.4g\n",
                r->exact_fail, r->nexact, r->exact_x, r->exact_y, r->exact_img[0], r->exact_img[1], r->exact_img[2],
@@ -147,10 +167,14 @@ static void print_verdict(const grade_report *r)
     if (r->image_fail)
         printf("  %s over the whole image: %+.2f%% +- %.2f%% in %s (|z| %.1f > %.2f)\n", r->image_z[worst] > 0 ? "brighter" : "darker",
                100 * r->image_eps[worst], 100 * r->image_eps_se[worst], CHANNELS[worst], fabs(r->image_z[worst]), r->image_zcrit);
-    print_blocks(r, 1);
-    print_blocks(r, -1);
+    print_blocks(r, r->blocks, r->nblocks, r->block, 1);
+    print_blocks(r, r->blocks, r->nblocks, r->block, -1);
+    for (k = 0; k < r->ncoarse; k++) {
+        print_blocks(r, r->coarse[k].blocks, r->coarse[k].nblocks, r->coarse[k].side, 1);
+        print_blocks(r, r->coarse[k].blocks, r->coarse[k].nblocks, r->coarse[k].side, -1);
+    }
     print_levels(r);
-    if (r->image_fail && !r->nbrighter && !r->ndarker && !r->level_brighter && !r->level_darker)
+    if (r->image_fail && !any_block(r) && !r->level_brighter && !r->level_darker)
         printf("  no block or level alone is significant: the bias is spread over the image\n");
 }
 
@@ -165,6 +189,17 @@ void grade_print_hypotheses(const grade_hypothesis *h, int n)
     int k;
     if (n == 0) printf("likely mistake: none of the catalogue explains the difference (docs/grading.md lists it)\n");
     for (k = 0; k < n; k++) printf("likely mistake: %s\n    evidence: %s\n", h[k].what, h[k].evidence);
+}
+
+/* The box of the finest coarse scale with a significant block; 0 if none. */
+static int coarse_box(const grade_report *r, int b[4])
+{
+    int k;
+    long area;
+    for (k = 0; k < r->ncoarse; k++)
+        if (sign_box(r->coarse[k].blocks, r->coarse[k].nblocks, -1, b, &area) || sign_box(r->coarse[k].blocks, r->coarse[k].nblocks, 1, b, &area))
+            return 1;
+    return 0;
 }
 
 void grade_fill_row(grade_row *row, const grade_report *r)
@@ -185,7 +220,7 @@ void grade_fill_row(grade_row *row, const grade_report *r)
     row->where[0] = '\0';
     if (r->exact_fail) snprintf(row->where, sizeof row->where, "%ld exact pixels, worst at x %d y %d", r->exact_fail, r->exact_x, r->exact_y);
     else if (sign_box(r->blocks, r->nblocks, -1, b, &area) || sign_box(r->blocks, r->nblocks, 1, b, &area) ||
-             sign_box(r->levels, r->nlevels, -1, b, &area) || sign_box(r->levels, r->nlevels, 1, b, &area))
+             coarse_box(r, b) || sign_box(r->levels, r->nlevels, -1, b, &area) || sign_box(r->levels, r->nlevels, 1, b, &area))
         describe_box(row->where, sizeof row->where, b[0], b[1], b[2], b[3], r->w, r->h);
     else if (r->image_fail) snprintf(row->where, sizeof row->where, "spread over the image");
 }

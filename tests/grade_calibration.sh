@@ -228,4 +228,14 @@ for (size, spp, region), l in per.items():
 EOF
 cat "$WORK/report.md"
 [ -n "$OUT" ] && cp "$WORK/report.md" "$OUT"
-exit 0
+# The verdict of the run: more false alarms than alpha 0.01 allows fails it (exit 1): k of n honest
+# images with P(Binomial(n, 0.01) >= k) < 0.001, a rate no correct grade reaches but once in 1000 runs.
+python3 - "$WORK/report.md" <<'EOF2'
+import math, re, sys
+m = re.search(r"\*\*Overall: (\d+) of (\d+) honest images failed", open(sys.argv[1]).read())
+k, n = int(m.group(1)), int(m.group(2))
+tail = sum(math.comb(n, j) * 0.01 ** j * 0.99 ** (n - j) for j in range(k, n + 1))
+print("calibration: %d false alarms of %d honest images: P(>= %d | alpha 0.01) = %.3g: %s"
+      % (k, n, k, tail, "too many (exit 1)" if tail < 0.001 else "as alpha allows"))
+sys.exit(1 if tail < 0.001 else 0)
+EOF2

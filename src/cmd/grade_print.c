@@ -109,12 +109,12 @@ static void print_image_test(const grade_report *r)
 {
     int ch;
     if (!r->image_nfit) {
-        printf("whole image: no relative-bias fit (no block has noise to weigh it)\n");
+        printf("whole image: no relative-bias fit (no block has noise to weigh it: exact, or black around it)\n");
     } else {
         printf("whole image: relative bias fitted to the block means (weights ref / noise):");
         for (ch = 0; ch < 3; ch++) printf(" %c %+.2f%% +- %.2f%%", "RGB"[ch], 100 * r->image_eps[ch], 100 * r->image_eps_se[ch]);
-        printf("; z %+.2f %+.2f %+.2f, limit |z| %.2f (level %.2g per channel)\n", r->image_z[0], r->image_z[1], r->image_z[2],
-               r->image_zcrit, r->image_level);
+        printf("; z %+.2f %+.2f %+.2f, limits %.2f %.2f %.2f (Student %.2f at level %.2g, widened by skewness)\n", r->image_z[0],
+               r->image_z[1], r->image_z[2], r->image_zlimit[0], r->image_zlimit[1], r->image_zlimit[2], r->image_zcrit, r->image_level);
     }
     printf("             (plain mean of image - ref %+.4g %+.4g %+.4g, %+.2f%% of the reference's mean)\n",
            r->image_diff[0], r->image_diff[1], r->image_diff[2], 100.0 * relative_diff(r, NULL, 0, 0));
@@ -148,10 +148,23 @@ static void print_tests(const grade_report *r, const char *image, const char *re
                "%ld of %ld pixel-channels beyond |z| %.2f\n", o->spp, r->pixel_fail, r->pixel_n, r->pixel_zcrit);
 }
 
+/* Pixels of the blocks not judged because the image is mostly black there (rare-event noise). */
+static long rare_pixels(const grade_report *r)
+{
+    long n = 0;
+    int b;
+    for (b = 0; b < r->nblocks; b++) n += r->blocks[b].rare ? r->blocks[b].n : 0;
+    return n;
+}
+
 static void print_verdict(const grade_report *r)
 {
     long n = 3L * r->w * r->h;
     int ch, k, worst = 0;
+    if (rare_pixels(r))
+        printf("note: %ld pixels (%.0f%% of the image) lie in blocks mostly black in the image where the reference is not: rare-event "
+               "noise (light not yet found at this spp), not judged; more samples per pixel would judge them\n", rare_pixels(r),
+               100.0 * rare_pixels(r) / ((double)r->w * r->h));
     if (!grade_failed(r)) {
         printf("PASS: the difference is consistent with noise (alpha %g; %ld pixel-channels, %d block, %d level and 3 whole-image tests)\n",
                r->alpha, n, 3 * block_count(r), 3 * r->nlevels_tested);
@@ -166,7 +179,7 @@ static void print_verdict(const grade_report *r)
     for (ch = 1; ch < 3; ch++) if (fabs(r->image_z[ch]) > fabs(r->image_z[worst])) worst = ch;
     if (r->image_fail)
         printf("  %s over the whole image: %+.2f%% +- %.2f%% in %s (|z| %.1f > %.2f)\n", r->image_z[worst] > 0 ? "brighter" : "darker",
-               100 * r->image_eps[worst], 100 * r->image_eps_se[worst], CHANNELS[worst], fabs(r->image_z[worst]), r->image_zcrit);
+               100 * r->image_eps[worst], 100 * r->image_eps_se[worst], CHANNELS[worst], fabs(r->image_z[worst]), r->image_zlimit[worst]);
     print_blocks(r, r->blocks, r->nblocks, r->block, 1);
     print_blocks(r, r->blocks, r->nblocks, r->block, -1);
     for (k = 0; k < r->ncoarse; k++) {

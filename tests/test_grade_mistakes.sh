@@ -100,6 +100,8 @@ TABLE
                 $R --size ${size}x$size --spp $spp --seed $((seed + 5000 + spp)) --bounces "$2" -o "$TMP/b.pfm"
                 expect_mistake "$1 (--bounces $2)" "$label" "$TMP/b.pfm" "$ref" 1 "$3 $4 $5 $6"
             done
+            $PFMTOOL const $size $size 0 0 0 "$TMP/black.pfm"
+            expect_mistake "a black image" "$label" "$TMP/black.pfm" "$ref" 1 "^likely mistake: a black image"
             expect_mistake "wrong size" "$label" "$base" "$other" 1 "the wrong image size: $size.$size, the reference is .*pathlab render scenes/cornell.obj .*--size ${size}x$size"
         done
     done

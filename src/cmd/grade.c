@@ -41,7 +41,9 @@
  *     weight and mean d of a block are independent and E[z] = 0 without bias.
  * The blocks are tested at several scales: B, 2B, 4B... as long as the image holds 2 x 2 of them (a
  * bias over a quarter of the image is too thin for 8x8 blocks, too local for the whole image).
- * alpha (default 0.01) is split in three: alpha/3 for the 3 whole-image tests, alpha/3 for the
+ *   whole image, unweighted: the plain mean of d over the noisy pixels, Student's t on their own
+ *     scatter (test_plain): what a black image at low spp cannot hide from.
+ * alpha (default 0.01) is split in three: alpha/3 for the 6 whole-image tests, alpha/3 for the
  * blocks (shared equally by the scales, 3 x nblocks tests each), alpha/3 for the 3 x nlevels
  * level tests, each family with Sidak's correction (per-test level 1 - (1 - alpha/3)^(1/k)): an unbiased image fails with probability at
  * most alpha (the exact pixels, compared as numbers, never fail it). Float rounding (a few ulps of
@@ -523,7 +525,7 @@ static void test_image(grade_report *r, const image *img, const image *ref)
         r->image_nfit += nw[ch];
     }
     df = imin(nw[0], imin(nw[1], nw[2])) - 1;
-    r->image_level = sidak_level(r->alpha / 3.0, 3);
+    r->image_level = sidak_level(r->alpha / 3.0, 6);
     r->image_zcrit = df >= 1 ? t_critical(r->image_level, df) : HUGE_VAL;
     for (ch = 0; ch < 3; ch++) {
         r->image_eps[ch] = wref[ch] > 0.0 ? wd[ch] / wref[ch] : 0.0;
@@ -531,6 +533,33 @@ static void test_image(grade_report *r, const image *img, const image *ref)
         r->image_z[ch] = wref[ch] > 0.0 ? t_stat(wd[ch], wvar[ch]) : 0.0;
         r->image_zlimit[ch] = skewed_limit(r->image_zcrit, r->image_z[ch] < 0.0 ? skew[ch] : -skew[ch], nw[ch]);
         if (fabs(r->image_z[ch]) > r->image_zlimit[ch]) r->image_fail = 1;
+    }
+}
+
+/* Whole image, unweighted: the mean of d over the noisy pixels, per channel, with their own scatter,
+ * Student's t, the limit widened by the skewness. Weaker than the fit when the noise is tame, but it
+ * weighs every pixel alike: an image black where light is rare is judged here, rare samples and all
+ * (a black image passes no other test when its every block is black). */
+static void test_plain(grade_report *r, const image *img, const image *ref)
+{
+    size_t p, n = (size_t)r->w * r->h;
+    long m = 0;
+    int ch;
+    double sum[3] = {0, 0, 0}, m2[3] = {0, 0, 0}, m3[3] = {0, 0, 0};
+    for (p = 0; p < n; p++)
+        for (ch = 0; ch < 3 && !r->exact[p]; ch++) sum[ch] += (double)img->px[3 * p + ch] - ref->px[3 * p + ch];
+    for (p = 0; p < n; p++) m += !r->exact[p];
+    for (p = 0; p < n; p++)
+        for (ch = 0; ch < 3 && !r->exact[p] && m > 0; ch++) {
+            double e = (double)img->px[3 * p + ch] - ref->px[3 * p + ch] - sum[ch] / m;
+            m2[ch] += e * e;
+            m3[ch] += e * e * e;
+        }
+    for (ch = 0; ch < 3 && m > 1; ch++) {
+        double crit = t_critical(r->image_level, (int)fmin(m - 1, 1e9)), skew = m2[ch] > 0.0 ? (m3[ch] / m) / pow(m2[ch] / m, 1.5) : 0.0;
+        r->plain_t[ch] = t_stat(sum[ch] / m, m2[ch] / (m - 1.0) / m);
+        r->plain_limit[ch] = skewed_limit(crit, r->plain_t[ch] < 0.0 ? skew : -skew, m);
+        if (fabs(r->plain_t[ch]) > r->plain_limit[ch]) r->image_fail = 1;
     }
 }
 
@@ -593,6 +622,7 @@ int grade_compute(grade_report *r, const image *img, const image *ref, const ima
     test_coarse(r, img, ref, ref_var, id);
     test_levels(r, img, ref, ref_var, id);
     test_image(r, img, ref);
+    test_plain(r, img, ref);
     free(id);
     if (ref_var && o->spp > 0 && o->ref_spp > 0) test_pixels(r, img, ref, ref_var, o);
     return 0;
@@ -627,6 +657,7 @@ double grade_excess(const grade_report *r)
     if (r->exact_fail) return 1e9;
     for (k = 0; k < r->ncoarse; k++) e = fmax(e, r->coarse[k].excess);
     for (ch = 0; ch < 3; ch++) e = fmax(e, fabs(r->image_z[ch]) / r->image_zlimit[ch]);
+    for (ch = 0; ch < 3; ch++) if (r->plain_limit[ch] > 0.0) e = fmax(e, fabs(r->plain_t[ch]) / r->plain_limit[ch]);
     return e;
 }
 

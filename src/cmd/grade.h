@@ -55,6 +55,7 @@ typedef struct {
     double image_diff[3], image_ref[3];  /* plain means of d and of ref */
     double image_eps[3], image_eps_se[3], image_z[3], image_level, image_zcrit;  /* relative-bias fit */
     double image_zlimit[3];              /* image_zcrit widened by the skewness, per channel */
+    double plain_t[3], plain_limit[3];   /* the unweighted mean of d over the noisy pixels */
     int image_fail, image_nfit;          /* image_nfit: block-channels with a weight in the fit */
     double floor_k[3];                   /* the noise floor's scale, per channel (0 without REF_var) */
     unsigned char *exact;                /* per pixel: 1 if the reference is noise-free there */

@@ -252,6 +252,11 @@ static void try_values(diag *d)
     char ev[200];
     size_t i, ones = 0;
     float rmax = max_value(ref);
+    if (max_value(img) == 0.0f && rmax > 0.0f) {
+        keep(d, "a black image: no light reached the camera (emitters not read from the MTL's Ke? Le never added?)",
+             "every value of the image is 0 or below", 0.0, 1);
+        return;
+    }
     if (all_values(img, is_8bit))
         keep(d, "quantised to 8 bits: every value is a multiple of 1/255 (the image went through PNG/PPM or bytes before the PFM)",
              "seen in the values", 0.0, 1);

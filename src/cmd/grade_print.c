@@ -116,8 +116,10 @@ static void print_image_test(const grade_report *r)
         printf("; z %+.2f %+.2f %+.2f, limits %.2f %.2f %.2f (Student %.2f at level %.2g, widened by skewness)\n", r->image_z[0],
                r->image_z[1], r->image_z[2], r->image_zlimit[0], r->image_zlimit[1], r->image_zlimit[2], r->image_zcrit, r->image_level);
     }
-    printf("             (plain mean of image - ref %+.4g %+.4g %+.4g, %+.2f%% of the reference's mean)\n",
-           r->image_diff[0], r->image_diff[1], r->image_diff[2], 100.0 * relative_diff(r, NULL, 0, 0));
+    printf("whole image, unweighted: plain mean of image - ref %+.4g %+.4g %+.4g (%+.2f%% of the reference's mean); t over the noisy "
+           "pixels %+.2f %+.2f %+.2f, limits %.2f %.2f %.2f\n", r->image_diff[0], r->image_diff[1], r->image_diff[2],
+           100.0 * relative_diff(r, NULL, 0, 0), r->plain_t[0], r->plain_t[1], r->plain_t[2], r->plain_limit[0],
+           r->plain_limit[1], r->plain_limit[2]);
 }
 
 static void print_tests(const grade_report *r, const char *image, const char *ref, const grade_opts *o)
@@ -166,20 +168,26 @@ static void print_verdict(const grade_report *r)
                "noise (light not yet found at this spp), not judged; more samples per pixel would judge them\n", rare_pixels(r),
                100.0 * rare_pixels(r) / ((double)r->w * r->h));
     if (!grade_failed(r)) {
-        printf("PASS: the difference is consistent with noise (alpha %g; %ld pixel-channels, %d block, %d level and 3 whole-image tests)\n",
+        printf("PASS: the difference is consistent with noise (alpha %g; %ld pixel-channels, %d block, %d level and 6 whole-image tests)\n",
                r->alpha, n, 3 * block_count(r), 3 * r->nlevels_tested);
         return;
     }
-    printf("FAIL: biased (alpha %g; %ld pixel-channels, %d block, %d level and 3 whole-image tests)\n", r->alpha, n,
+    printf("FAIL: biased (alpha %g; %ld pixel-channels, %d block, %d level and 6 whole-image tests)\n", r->alpha, n,
            3 * block_count(r), 3 * r->nlevels_tested);
     if (r->exact_fail)
         printf("  %ld of %ld exact pixels differ; the worst at x %d, y %d: %.4g %.4g %.4g, the reference %.4g %.4g %.4g\n",
                r->exact_fail, r->nexact, r->exact_x, r->exact_y, r->exact_img[0], r->exact_img[1], r->exact_img[2],
                r->exact_ref[0], r->exact_ref[1], r->exact_ref[2]);
     for (ch = 1; ch < 3; ch++) if (fabs(r->image_z[ch]) > fabs(r->image_z[worst])) worst = ch;
-    if (r->image_fail)
+    if (fabs(r->image_z[worst]) > r->image_zlimit[worst])
         printf("  %s over the whole image: %+.2f%% +- %.2f%% in %s (|z| %.1f > %.2f)\n", r->image_z[worst] > 0 ? "brighter" : "darker",
                100 * r->image_eps[worst], 100 * r->image_eps_se[worst], CHANNELS[worst], fabs(r->image_z[worst]), r->image_zlimit[worst]);
+    for (ch = 0; ch < 3; ch++)
+        if (r->plain_limit[ch] > 0.0 && fabs(r->plain_t[ch]) > r->plain_limit[ch]) {
+            printf("  %s on the image's plain mean: %+.2f%% in %s (|t| %.1f > %.2f)\n", r->plain_t[ch] > 0 ? "brighter" : "darker",
+                   100.0 * r->image_diff[ch] / r->image_ref[ch], CHANNELS[ch], fabs(r->plain_t[ch]), r->plain_limit[ch]);
+            break;
+        }
     print_blocks(r, r->blocks, r->nblocks, r->block, 1);
     print_blocks(r, r->blocks, r->nblocks, r->block, -1);
     for (k = 0; k < r->ncoarse; k++) {

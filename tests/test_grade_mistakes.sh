@@ -83,7 +83,7 @@ scale_3.14159265 1 ^likely mistake: pi times the reference
 scale_0.318309886 1 ^likely mistake: 1/pi times the reference
 scale_2 1 ^likely mistake: 2 times the reference
 scale_0.5 1 ^likely mistake: 1/2 times the reference
-scale_1.3 1 ^likely mistake: a global factor: 1\.(2[6-9]|3[0-4])[0-9]* times
+scale_1.3 1 ^likely mistake: a global factor: 1\.(2[6-9][0-9]*|3[0-4]?[0-9]*) times
 grey-pf 2 greyscale \("Pf", 1 channel\) against a colour reference
 big-endian-header 2 says big-endian, but read so the values are absurd
 crlf 2 lines end with CR LF

@@ -132,7 +132,7 @@ cc -std=c99 -Wall -Wextra -pedantic -O2 -o "$W/write_pfm" $G/write_pfm.c
 "$PFMTOOL" const 64 64 0.5 0.5 0.5 "$W/grey.pfm" >/dev/null
 { echo "pathlab grade mine.pfm --ref grey.pfm  (grey.pfm = pfmtool const 64 64 0.5 0.5 0.5)"
   set +e; "$P" grade "$W/mine.pfm" --ref "$W/grey.pfm" | sed "s|$W/||g"; set -e; } > $G/write_pfm.txt
-grep -q 'brighter in 32 of 64 blocks.*(the top' $G/write_pfm.txt ||
+grep -q '2048 of them brighter, .*(the top)' $G/write_pfm.txt ||
     { echo "make_guide.sh: write_pfm.c's image is not read top half bright" >&2; exit 1; }
 
 # ---- the log of the run --------------------------------------------------------------------------

@@ -13,10 +13,14 @@
 #     relative bias b of 0.2% 0.5% 1% 2% 5% 10% 20% 50% for which >= 90% of the images fail. The bias
 #     is put on honest renders (default estimators) by tests/mistakes.py regions: the region's pixels
 #     times 1 + b on even images and 1 - b on odd ones (brighter and darker both).
+# (c) Other scenes: false alarms, as (a), on every other scene with a full-transport 64x64 reference
+#     (cornell-glossy, quad-light, mis-plates, furnace, sphere-furnace: ref/NAME.pfm): 1, 4, 16 and 64
+#     spp, estimators default, brdf, light and cosine, 2 seeds each (160 images); graded against
+#     ref/NAME.pfm. They count in the overall false-alarm line and the exit status.
 #
 # Honest renders are cached in $CALIB_DIR (default /tmp/pathlab-calib), named by size, spp,
 # estimator and seed: a rerun after a change to grade only re-grades. CALIB_FAST=1: a smoke test
-# (fewer spp, estimators and images; 40 images; about 1.5 minutes on 2 cores with an empty cache,
+# (fewer spp, estimators and images; 40 + 40 images; about 1.5 minutes on 2 cores with an empty cache,
 # 30 s cached). Full run with an empty cache, measured on 2 shared cores: about 13 minutes (of it
 # ~12 rendering; 128x128 at 1024 spp, 13-30 s an image, is over a third of it); cached: ~1.5 minutes.
 # FA_NEST_BIG and PW_N_BIG below set the images at 128x128 and 1024 spp if that is too slow.
@@ -29,8 +33,12 @@ OUT=${1:-}
 MISTAKES="python3 tests/mistakes.py"
 mkdir -p "$DIR/honest" || exit 2
 WORK=$(mktemp -d); trap 'rm -rf "$WORK"' EXIT
+OTHER_SCENES="cornell-glossy quad-light mis-plates furnace sphere-furnace"
 for r in ref/cornell.pfm ref/cornell-128.pfm; do
     [ -f "$r" ] || { echo "grade_calibration.sh: $r missing (ref/make_refs.sh scenes big)" >&2; exit 2; }
+done
+for s in $OTHER_SCENES; do
+    [ -f "ref/$s.pfm" ] || { echo "grade_calibration.sh: ref/$s.pfm missing (ref/make_refs.sh scenes)" >&2; exit 2; }
 done
 [ -x "$PATHLAB" ] || { echo "grade_calibration.sh: $PATHLAB missing (make)" >&2; exit 2; }
 t_start=$(date +%s)
@@ -54,23 +62,29 @@ ESTIMATORS=(
 if [ "$FAST" != 0 ]; then
     FA_SPP="1 4 16 64 256"; FA_NEST=4; FA_NEST_BIG=4
     PW_SPP="4 64"; PW_N=6; PW_N_BIG=6
+    OT_SPP="1 16"; OT_SEEDS=1
 else
     FA_SPP="1 2 4 8 16 32 64 128 256 512 1024"; FA_NEST=12; FA_NEST_BIG=12  # 264 images
     PW_SPP="4 64 1024"; PW_N=10; PW_N_BIG=10
+    OT_SPP="1 4 16 64"; OT_SEEDS=2                                         # 160 images
 fi
+OT_ESTIMATORS=("default=" "brdf=--direct brdf" "light=--direct light" "cosine=--dir cosine")
 BIASES="0.002 0.005 0.01 0.02 0.05 0.1 0.2 0.5"
 
 ref_of() { if [ "$1" = 64 ]; then echo ref/cornell.pfm; else echo ref/cornell-128.pfm; fi; }
 
-# honest SIZE SPP LABEL SEED FLAGS...: the cached render's path on stdout (rendered if missing)
+# honest SIZE SPP LABEL SEED FLAGS...: the cached render's path on stdout (rendered if missing);
+# the scene is $SCENE (default cornell; other scenes' files are named NAME_s...)
+SCENE=cornell
 honest() {
     local size=$1 spp=$2 label=$3 seed=$4; shift 4
     local f="$DIR/honest/s${size}_spp${spp}_${label}_seed${seed}.pfm"
+    [ "$SCENE" != cornell ] && f="$DIR/honest/${SCENE}_s${size}_spp${spp}_${label}_seed${seed}.pfm"
     if [ ! -s "$f" ]; then
         local t0; t0=$(date +%s.%N)
         # shellcheck disable=SC2068
-        if ! $PATHLAB render scenes/cornell.obj --quiet --size "${size}x${size}" --spp "$spp" --seed "$seed" $@ -o "$f" >&2; then
-            echo "grade_calibration.sh: render failed: $size $spp $label $seed $*" >&2; exit 2
+        if ! $PATHLAB render "scenes/$SCENE.obj" --quiet --size "${size}x${size}" --spp "$spp" --seed "$seed" $@ -o "$f" >&2; then
+            echo "grade_calibration.sh: render failed: $SCENE $size $spp $label $seed $*" >&2; exit 2
         fi
         awk -v t0="$t0" -v t1="$(date +%s.%N)" 'BEGIN { print t1 - t0 }' >> "$WORK/render_times"
     fi
@@ -137,14 +151,34 @@ for size in 64 128; do
         echo "power: ${size}x$size at $spp spp done ($(($(date +%s) - t_start)) s so far)" >&2
     done
 done
+
+# ---- (c) other scenes -------------------------------------------------------------------------
+OT="$WORK/other.tsv"  # scene spp label seed rc verdict
+: > "$OT"
+seed=400000
+for SCENE in $OTHER_SCENES; do
+    for spp in $OT_SPP; do
+        for ((e = 0; e < ${#OT_ESTIMATORS[@]}; e++)); do
+            label=${OT_ESTIMATORS[$e]%%=*} flags=${OT_ESTIMATORS[$e]#*=}
+            for ((i = 0; i < OT_SEEDS; i++)); do
+                seed=$((seed + 1))
+                # shellcheck disable=SC2086
+                img=$(honest 64 "$spp" "$label" "$seed" $flags) || exit 2
+                printf '%s\t%s\t%s\t%s\t%s\n' "$SCENE" "$spp" "$label" "$seed" "$(grade "$img" "ref/$SCENE.pfm")" >> "$OT"
+            done
+        done
+    done
+    echo "other scenes: $SCENE graded ($(($(date +%s) - t_start)) s so far)" >&2
+done
+SCENE=cornell
 t_total=$(($(date +%s) - t_start))
 t_render=$(awk '{ s += $1 } END { printf "%.0f", s }' "$WORK/render_times")
 
 # ---- the report -------------------------------------------------------------------------------
 python3 - "$FA" "$PW" "$PWSUM" "$t_total" "$t_render" "$FAST" "$(git rev-parse --short HEAD 2>/dev/null || echo unknown)" \
-    "$(nproc)" > "$WORK/report.md" <<'EOF'
+    "$(nproc)" "$OT" > "$WORK/report.md" <<'EOF'
 import math, sys, collections
-fa_path, pw_path, sum_path, t_total, t_render, fast, rev, cores = sys.argv[1:9]
+fa_path, pw_path, sum_path, t_total, t_render, fast, rev, cores, ot_path = sys.argv[1:10]
 
 def binom_cdf(k, n, p):
     if p <= 0.0: return 1.0
@@ -163,17 +197,25 @@ def upper95(k, n):
     return hi
 
 rows = [l.rstrip("\n").split("\t") for l in open(fa_path) if l.strip()]
+orows = [l.rstrip("\n").split("\t") for l in open(ot_path) if l.strip()]   # scene spp label seed rc verdict
 print("# pathlab grade: calibration%s" % (" (CALIB_FAST=1: smoke test, few images)" if fast != "0" else ""))
 print()
 print("tests/grade_calibration.sh at revision %s, %s cores; %s s in all, %.0f s of it rendering (cached renders"
       " are not re-rendered). Default alpha 0.01: an honest image should fail at most 1%% of the time."
       % (rev, cores, t_total, float(t_render)))
 print()
-print("## False alarms (honest images, Cornell box, full transport)")
+print("## False alarms (honest images, full transport)")
 print()
-n = len(rows); k = sum(1 for r in rows if r[4] != "0"); bad = sum(1 for r in rows if r[4] == "2")
+allrc = [r[4] for r in rows] + [r[4] for r in orows]
+n = len(allrc); k = sum(1 for rc in allrc if rc != "0"); bad = sum(1 for rc in allrc if rc == "2")
 print("**Overall: %d of %d honest images failed (%.1f%%); 95%% upper bound %.1f%%.**%s"
       % (k, n, 100.0 * k / max(n, 1), 100.0 * upper95(k, n), " (%d of them exit 2: bad input)" % bad if bad else ""))
+print()
+kc = sum(1 for r in rows if r[4] != "0"); ko = sum(1 for r in orows if r[4] != "0")
+print("Of them: Cornell box (64x64 and 128x128, below) %d of %d; other scenes (64x64, further below) %d of %d."
+      % (kc, len(rows), ko, len(orows)))
+print()
+print("### Cornell box")
 print()
 def table(key, title):
     groups = collections.OrderedDict()
@@ -201,6 +243,36 @@ if fails:
 print("Estimators: default = --direct mis-power --light area --dir brdf --rr 3; light, brdf, mis-balance = --direct X;"
       " light-sa = --direct light --light solid-angle; solid-angle, triangle, power = --light X; cosine, uniform = --dir X;"
       " rr-off = --rr off; rr1-light-sa-cos = --rr 1 --direct light --light solid-angle --dir cosine.")
+print()
+print("### Other scenes (64x64, against ref/NAME.pfm)")
+print()
+ospp = sorted(set(r[1] for r in orows), key=int)
+oscenes = list(collections.OrderedDict.fromkeys(r[0] for r in orows))
+print("| scene | %s | all | rate |" % " | ".join("%s spp" % s for s in ospp))
+print("|---|%s---|---|" % ("---|" * len(ospp)))
+for sc in oscenes:
+    cell = []
+    for sp in ospp:
+        s = [r for r in orows if r[0] == sc and r[1] == sp]
+        cell.append("%d / %d" % (sum(1 for r in s if r[4] != "0"), len(s)))
+    s = [r for r in orows if r[0] == sc]; kk = sum(1 for r in s if r[4] != "0")
+    print("| %s | %s | %d / %d | %.1f%% |" % (sc, " | ".join(cell), kk, len(s), 100.0 * kk / max(len(s), 1)))
+if orows:
+    cell = []
+    for sp in ospp:
+        s = [r for r in orows if r[1] == sp]
+        cell.append("%d / %d" % (sum(1 for r in s if r[4] != "0"), len(s)))
+    print("| all | %s | %d / %d | %.1f%% |" % (" | ".join(cell), ko, len(orows), 100.0 * ko / len(orows)))
+print()
+ofails = [r for r in orows if r[4] != "0"]
+if ofails:
+    print("Failed honest images (other scenes):")
+    print()
+    for r in ofails:
+        print("- %s 64x64, %s spp, %s, seed %s: exit %s: %s" % (r[0], r[1], r[2], r[3], r[4], r[5]))
+    print()
+print("Estimators: default, brdf = --direct brdf, light = --direct light, cosine = --dir cosine; %s seed(s) each."
+      % (len(orows) // max(len(oscenes) * len(ospp) * 4, 1)))
 print()
 print("## Power: the smallest relative bias that >= 90% of the images fail")
 print()

@@ -145,15 +145,20 @@ static void test_exact(grade_report *r, const image *img, const image *ref)
     int ch;
     for (p = 0; p < 3 * n; p++) mean += fabs(ref->px[p]) / (3.0 * n);
     for (p = 0; p < n; p++) {
-        double excess = 0.0;
+        double excess = 0.0, e;
+        int side = 0, x = (int)(p % (size_t)r->w), y = (int)(p / (size_t)r->w), *box;
         if (!r->exact[p]) continue;
         r->nexact++;
         for (ch = 0; ch < 3; ch++) {
             double a = img->px[3 * p + ch], b = ref->px[3 * p + ch];
-            excess = fmax(excess, fabs(a - b) / (GRADE_EXACT_REL * fabs(b) + GRADE_EXACT_ABS * mean + 1e-30));
+            e = fabs(a - b) / (GRADE_EXACT_REL * fabs(b) + GRADE_EXACT_ABS * mean + 1e-30);
+            if (e > excess) { excess = e; side = a > b; }
         }
         if (excess <= 1.0) continue;
         r->exact_fail++;
+        box = r->exact_box[side];   /* where the brighter (1) and darker (0) misses are */
+        if (r->exact_side[side]++ == 0) { box[0] = box[2] = x; box[1] = box[3] = y; }
+        box[0] = imin(box[0], x); box[1] = imin(box[1], y); box[2] = imax(box[2], x + 1); box[3] = imax(box[3], y + 1);
         if (excess <= worst) continue;
         worst = excess;
         r->exact_x = (int)(p % (size_t)r->w);

@@ -62,6 +62,8 @@ typedef struct {
     int exact_from_var;                  /* 1: told by the reference's variance; 0: guessed */
     long nexact, exact_fail;             /* exact pixels, and those the image misses */
     int exact_x, exact_y;                /* the worst miss */
+    long exact_side[2];                  /* misses darker (0) and brighter (1) than the reference */
+    int exact_box[2][4];                 /* the box around each: x0, y0, x1, y1 (exclusive) */
     double exact_img[3], exact_ref[3];
     int pixel_test;                      /* 1 when the per-pixel Z-test ran (--var, --spp, --ref-spp) */
     long pixel_n, pixel_fail;

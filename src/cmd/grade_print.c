@@ -150,6 +150,17 @@ static void print_tests(const grade_report *r, const char *image, const char *re
                "%ld of %ld pixel-channels beyond |z| %.2f\n", o->spp, r->pixel_fail, r->pixel_n, r->pixel_zcrit);
 }
 
+/* The exact pixels that miss on one side (1 brighter, 0 darker): how many and where. */
+static void print_exact_side(const grade_report *r, int side)
+{
+    const int *b = r->exact_box[side];
+    char where[64];
+    if (!r->exact_side[side]) return;
+    describe_box(where, sizeof where, b[0], b[1], b[2], b[3], r->w, r->h);
+    printf("    %ld of them %s, within x %d..%d, y %d..%d (%s)\n", r->exact_side[side], side ? "brighter" : "darker", b[0], b[2] - 1,
+           b[1], b[3] - 1, where);
+}
+
 /* Pixels of the blocks not judged because the image is mostly black there (rare-event noise). */
 static long rare_pixels(const grade_report *r)
 {
@@ -178,6 +189,7 @@ static void print_verdict(const grade_report *r)
         printf("  %ld of %ld exact pixels differ; the worst at x %d, y %d: %.4g %.4g %.4g, the reference %.4g %.4g %.4g\n",
                r->exact_fail, r->nexact, r->exact_x, r->exact_y, r->exact_img[0], r->exact_img[1], r->exact_img[2],
                r->exact_ref[0], r->exact_ref[1], r->exact_ref[2]);
+    for (ch = 1; ch >= 0; ch--) print_exact_side(r, ch);
     for (ch = 1; ch < 3; ch++) if (fabs(r->image_z[ch]) > fabs(r->image_z[worst])) worst = ch;
     if (fabs(r->image_z[worst]) > r->image_zlimit[worst])
         printf("  %s over the whole image: %+.2f%% +- %.2f%% in %s (|z| %.1f > %.2f)\n", r->image_z[worst] > 0 ? "brighter" : "darker",

@@ -235,6 +235,14 @@ static int coarse_box(const grade_report *r, int b[4])
     return 0;
 }
 
+/* 1 if the whole-image fit fails in a channel */
+static int fit_failed(const grade_report *r)
+{
+    int ch;
+    for (ch = 0; ch < 3; ch++) if (fabs(r->image_z[ch]) > r->image_zlimit[ch]) return 1;
+    return 0;
+}
+
 void grade_fill_row(grade_row *row, const grade_report *r)
 {
     int ch, worst = 0, b[4];
@@ -245,7 +253,7 @@ void grade_fill_row(grade_row *row, const grade_report *r)
     row->bias = r->image_eps[worst];
     row->bias_se = r->image_eps_se[worst];
     snprintf(row->channel, sizeof row->channel, "%s", CHANNELS[worst]);
-    if (!r->image_fail && grade_failed(r)) {   /* the fit misses it (few pixels): the plain mean says how much */
+    if (!fit_failed(r) && grade_failed(r)) {   /* the fit misses it (few pixels): the plain mean says how much */
         row->bias = relative_diff(r, NULL, 0, 0);
         row->bias_se = -1.0;
         snprintf(row->channel, sizeof row->channel, "mean");

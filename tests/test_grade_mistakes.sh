@@ -109,8 +109,8 @@ done
 
 # 3. a class of mixed images: the right lines, summary, report and exit status
 mkdir -p "$TMP/class"
-cp "$TMP/h_64_16_11.pfm" "$TMP/class/alice.pfm"; cp "$TMP/h_64_64_12.pfm" "$TMP/class/bruno.pfm"
-$M flip-v "$TMP/h_64_16_12.pfm" "$TMP/class/chloe.pfm"
+cp "$TMP/h_64_16_11.pfm" "$TMP/class/alice.pfm"; cp "$TMP/h_64_64_11.pfm" "$TMP/class/bruno.pfm"
+$M flip-v "$TMP/h_64_16_11.pfm" "$TMP/class/chloe.pfm"
 $M crlf "$TMP/h_64_64_11.pfm" "$TMP/class/david.pfm"
 $R --size 64x64 --spp 16 --seed 77 --bounces 0:1 -o "$TMP/class/emma.pfm"
 $PATHLAB grade "$TMP/class" --ref "$REF64" --report "$TMP/class.csv" > "$TMP/g.out" 2> "$TMP/g.err"; rc=$?

@@ -22,7 +22,9 @@
 # estimator and seed: a rerun after a change to grade only re-grades. CALIB_FAST=1: a smoke test
 # (fewer spp, estimators and images; 40 + 40 images; about 1.5 minutes on 2 cores with an empty cache,
 # 30 s cached). Full run with an empty cache, measured on 2 shared cores: about 13 minutes (of it
-# ~12 rendering; 128x128 at 1024 spp, 13-30 s an image, is over a third of it); cached: ~1.5 minutes.
+# ~12 rendering; 128x128 at 1024 spp, 13-30 s an image, is over a third of it) before (c), whose
+# 160 renders add well under a minute; cached: ~14 minutes on 2 cores shared with other work (the
+# power part grades every failing image's likely mistakes), 13 of them at 128x128.
 # FA_NEST_BIG and PW_N_BIG below set the images at 128x128 and 1024 spp if that is too slow.
 set -uo pipefail
 cd "$(dirname "$0")/.."
@@ -91,11 +93,12 @@ honest() {
     echo "$f"
 }
 
-# grade IMAGE REF: "rc<TAB>verdict" (the verdict line and the reason lines, joined with ;)
+# grade IMAGE REF: "rc<TAB>verdict" (the verdict line and the reason lines, joined with ;; not the
+# exact pixels' summary line, "... 0 differ", printed for every image)
 grade() {
     local out rc
     out=$($PATHLAB grade "$1" --ref "$2" 2>&1); rc=$?
-    printf '%s\t%s\n' "$rc" "$(echo "$out" | grep -E '^(PASS|FAIL)|^  |rror|has a|differ' | sed 's/^ *//' | paste -sd ';' - | cut -c1-200)"
+    printf '%s\t%s\n' "$rc" "$(echo "$out" | grep -E '^(PASS|FAIL)|^  |rror|has a|differ' | grep -v '^exact pixels' | sed 's/^ *//' | paste -sd ';' - | cut -c1-200)"
 }
 
 # ---- (a) false alarms -------------------------------------------------------------------------
@@ -175,10 +178,10 @@ t_total=$(($(date +%s) - t_start))
 t_render=$(awk '{ s += $1 } END { printf "%.0f", s }' "$WORK/render_times")
 
 # ---- the report -------------------------------------------------------------------------------
-python3 - "$FA" "$PW" "$PWSUM" "$t_total" "$t_render" "$FAST" "$(git rev-parse --short HEAD 2>/dev/null || echo unknown)" \
-    "$(nproc)" "$OT" > "$WORK/report.md" <<'EOF'
+python3 - "$FA" "$PW" "$PWSUM" "$t_total" "$t_render" "$FAST" "$(git describe --always --dirty 2>/dev/null || echo unknown)" \
+    "$(nproc)" "$OT" "$(date -u +%Y-%m-%d)" > "$WORK/report.md" <<'EOF'
 import math, sys, collections
-fa_path, pw_path, sum_path, t_total, t_render, fast, rev, cores, ot_path = sys.argv[1:10]
+fa_path, pw_path, sum_path, t_total, t_render, fast, rev, cores, ot_path, day = sys.argv[1:11]
 
 def binom_cdf(k, n, p):
     if p <= 0.0: return 1.0
@@ -200,9 +203,9 @@ rows = [l.rstrip("\n").split("\t") for l in open(fa_path) if l.strip()]
 orows = [l.rstrip("\n").split("\t") for l in open(ot_path) if l.strip()]   # scene spp label seed rc verdict
 print("# pathlab grade: calibration%s" % (" (CALIB_FAST=1: smoke test, few images)" if fast != "0" else ""))
 print()
-print("tests/grade_calibration.sh at revision %s, %s cores; %s s in all, %.0f s of it rendering (cached renders"
+print("tests/grade_calibration.sh at revision %s, %s, %s cores; %s s in all, %.0f s of it rendering (cached renders"
       " are not re-rendered). Default alpha 0.01: an honest image should fail at most 1%% of the time."
-      % (rev, cores, t_total, float(t_render)))
+      % (rev + (" (uncommitted changes)" if rev.endswith("-dirty") else ""), day, cores, t_total, float(t_render)))
 print()
 print("## False alarms (honest images, full transport)")
 print()

@@ -157,7 +157,8 @@ static void write_md(FILE *f, const grade_row *rows, int n, const grade_opts *o,
     for (k = 0; k < n; k++) {
         const grade_row *r = &rows[k];
         fprintf(f, "| %s | %s | ", r->path, verdict_word(r->status));
-        if (r->status < 2 && r->channel[0] && r->bias_se < 0.0) fprintf(f, "%+.2f%% (plain mean)", 100 * r->bias);
+        if (r->status < 2 && r->channel[0] && r->bias_se == -2.0) fprintf(f, "%+.2f%% (where significant)", 100 * r->bias);
+        else if (r->status < 2 && r->channel[0] && r->bias_se < 0.0) fprintf(f, "%+.2f%% (plain mean)", 100 * r->bias);
         else if (r->status < 2 && r->channel[0]) fprintf(f, "%+.2f%% +- %.2f%% (%s)", 100 * r->bias, 100 * r->bias_se, r->channel);
         fprintf(f, " | %s | %s |\n", r->where, r->mistake);
     }

@@ -25,7 +25,7 @@ typedef struct {
 } grade_hypothesis;
 
 /* Tries the catalogue on an image that failed with grade_excess excess0; fills out[0..max) with the
- * hypotheses that explain the difference (pass, or bring the worst statistic below a tenth of
+ * hypotheses that explain the difference (pass with the worst statistic below half excess0, or bring it below a tenth of
  * excess0 and below 3 times its limit: two mistakes at once, Jensen at low spp), best first, and returns how many. -1 when out of memory. */
 int grade_diagnose(const image *img, const grade_refs *refs, const grade_opts *o, double excess0,
                    grade_hypothesis *out, int max);

@@ -207,6 +207,9 @@ static void print_verdict(const grade_report *r)
         print_blocks(r, r->coarse[k].blocks, r->coarse[k].nblocks, r->coarse[k].side, -1);
     }
     print_levels(r);
+    if (grade_excess(r) < 1.5)
+        printf("  (the worst statistic is only %.2f times its limit: this is how a false alarm looks (at most 1 honest image in %.0f fails); "
+               "more samples per pixel would settle it)\n", grade_excess(r), 1.0 / r->alpha);
     if (r->image_fail && !any_block(r) && !r->level_brighter && !r->level_darker)
         printf("  no block or level alone is significant: the bias is spread over the image\n");
 }
@@ -243,6 +246,28 @@ static int fit_failed(const grade_report *r)
     return 0;
 }
 
+/* 1 if the unweighted whole-image test fails in a channel */
+static int plain_failed(const grade_report *r)
+{
+    int ch;
+    for (ch = 0; ch < 3; ch++) if (r->plain_limit[ch] > 0.0 && fabs(r->plain_t[ch]) > r->plain_limit[ch]) return 1;
+    return 0;
+}
+
+/* The relative difference over the significant finest blocks of the sign that covers more pixels,
+ * else over the significant levels. */
+static double group_diff(const grade_report *r)
+{
+    int b[4];
+    long up = 0, down = 0;
+    sign_box(r->blocks, r->nblocks, 1, b, &up);
+    sign_box(r->blocks, r->nblocks, -1, b, &down);
+    if (up || down) return relative_diff(r, r->blocks, r->nblocks, up >= down ? 1 : -1);
+    sign_box(r->levels, r->nlevels, 1, b, &up);
+    sign_box(r->levels, r->nlevels, -1, b, &down);
+    return relative_diff(r, r->levels, r->nlevels, up >= down ? 1 : -1);
+}
+
 void grade_fill_row(grade_row *row, const grade_report *r)
 {
     int ch, worst = 0, b[4];
@@ -253,10 +278,14 @@ void grade_fill_row(grade_row *row, const grade_report *r)
     row->bias = r->image_eps[worst];
     row->bias_se = r->image_eps_se[worst];
     snprintf(row->channel, sizeof row->channel, "%s", CHANNELS[worst]);
-    if (!fit_failed(r) && grade_failed(r)) {   /* the fit misses it (few pixels): the plain mean says how much */
+    if (!fit_failed(r) && plain_failed(r)) {   /* the fit misses it (few pixels): the plain mean says how much */
         row->bias = relative_diff(r, NULL, 0, 0);
         row->bias_se = -1.0;
         snprintf(row->channel, sizeof row->channel, "mean");
+    } else if (!fit_failed(r) && grade_failed(r)) {   /* only groups: how much there, not over the image */
+        row->bias = group_diff(r);
+        row->bias_se = -2.0;
+        snprintf(row->channel, sizeof row->channel, "groups");
     }
     row->where[0] = '\0';
     if (r->exact_fail) snprintf(row->where, sizeof row->where, "%ld exact pixels, worst at x %d y %d", r->exact_fail, r->exact_x, r->exact_y);
@@ -271,7 +300,8 @@ void grade_print_row(const grade_row *row)
     if (row->status == 2) { printf("%s: UNREADABLE, %s\n", row->path, row->mistake); return; }
     if (row->status == 0) { printf("%s: PASS (%+.2f%% +- %.2f%% in %s)\n", row->path, 100 * row->bias, 100 * row->bias_se, row->channel); return; }
     printf("%s: FAIL", row->path);
-    if (row->channel[0] && row->bias_se < 0.0) printf(", %+.2f%% on the image's mean", 100 * row->bias);
+    if (row->channel[0] && row->bias_se == -2.0) printf(", %+.2f%% where significant", 100 * row->bias);
+    else if (row->channel[0] && row->bias_se < 0.0) printf(", %+.2f%% on the image's mean", 100 * row->bias);
     else if (row->channel[0]) printf(", %+.2f%% +- %.2f%% in %s", 100 * row->bias, 100 * row->bias_se, row->channel);
     if (row->where[0]) printf(" (%s)", row->where);
     printf("%s%s\n", row->mistake[0] ? "; likely: " : "", row->mistake);

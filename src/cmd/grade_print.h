@@ -10,9 +10,10 @@ typedef struct {
     const char *path;
     int status;              /* 0 pass, 1 fail, 2 could not be read */
     int w, h;
-    double bias, bias_se;    /* relative bias of the channel furthest from 0 (whole-image fit), or when
-                                only blocks or levels fail, the plain mean's relative difference, se -1 */
-    char channel[8];         /* that channel's name, "mean" for the plain mean, "" for no figure */
+    double bias, bias_se;    /* relative bias of the channel furthest from 0 (whole-image fit); when the
+                                fit passes, the plain mean's relative difference (se -1) if that test
+                                failed, else the difference where the groups are significant (se -2) */
+    char channel[8];         /* that channel's name, "mean", "groups", or "" for no figure */
     char where[160];         /* where the significant groups are; "" if none */
     char mistake[400];       /* the likely mistakes, "; " between them; the input error for status 2 */
 } grade_row;

@@ -666,8 +666,9 @@ double grade_excess(const grade_report *r)
     return e;
 }
 
-/* Paints the significant blocks of one scale: red brighter, blue darker, over the grey. */
-static void paint_blocks(image *out, const grade_block *g, int ng, int w)
+/* Paints the significant blocks of one scale: red brighter, blue darker, over what is there, with
+ * weight `strength` (the coarse scales lighter, so that the finest show their detail on them). */
+static void paint_blocks(image *out, const grade_block *g, int ng, int w, float strength)
 {
     static const float red[3] = {0.9f, 0.03f, 0.03f}, blue[3] = {0.03f, 0.1f, 0.9f};
     int b, x, y, ch;
@@ -677,7 +678,7 @@ static void paint_blocks(image *out, const grade_block *g, int ng, int w)
             for (x = g[b].x0; x < g[b].x1; x++)
                 for (ch = 0; ch < 3; ch++) {
                     float *v = &out->px[3 * ((size_t)y * w + x) + ch];
-                    *v = 0.8f * (g[b].sign > 0 ? red : blue)[ch] + 0.2f * *v;
+                    *v = strength * (g[b].sign > 0 ? red : blue)[ch] + (1.0f - strength) * *v;
                 }
     }
 }
@@ -691,7 +692,7 @@ int grade_heatmap(image *out, const grade_report *r, const image *ref)
         float Y = (float)ref_luminance(ref, p);
         for (ch = 0; ch < 3; ch++) out->px[3 * p + ch] = 0.5f * fminf(fmaxf(Y, 0.0f), 1.0f);   /* dimmed: colours stand out */
     }
-    for (k = r->ncoarse - 1; k >= 0; k--) paint_blocks(out, r->coarse[k].blocks, r->coarse[k].nblocks, r->w);
-    paint_blocks(out, r->blocks, r->nblocks, r->w);
+    for (k = r->ncoarse - 1; k >= 0; k--) paint_blocks(out, r->coarse[k].blocks, r->coarse[k].nblocks, r->w, 0.3f);
+    paint_blocks(out, r->blocks, r->nblocks, r->w, 0.8f);
     return 0;
 }

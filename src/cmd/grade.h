@@ -80,7 +80,8 @@ int grade_failed(const grade_report *r);
 /* How far the worst statistic is beyond its limit: <= 1 passes the tests with a level (a missed
  * exact pixel counts as 1e9). The diagnosis compares hypotheses with it. */
 double grade_excess(const grade_report *r);
-/* The reference in grey, with significantly brighter blocks in red and darker ones in blue. */
+/* The reference in grey, with significantly brighter blocks in red and darker ones in blue (the
+ * coarser scales in lighter tints under the finest). */
 int grade_heatmap(image *out, const grade_report *r, const image *ref);
 /* The command; exit status 0 all pass, 1 a fail, 2 bad input. */
 int grade_main(int argc, char **argv);

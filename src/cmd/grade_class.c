@@ -78,7 +78,7 @@ static void resize_command(char *out, size_t cap, const char *cmd, const char *r
 /* A wrong size: a fail, with the command that renders a reference at the image's size. */
 static int wrong_size(grade_row *row, const image *img, const grade_refs *refs, const char *ref_path)
 {
-    char cmd[8192] = "", fixed[8192];
+    char cmd[8192] = "", fixed[640];   /* a command longer than 639 characters is cut */
     int w = img->w, h = img->h, rw = refs->ref->w, rh = refs->ref->h;
     int same_aspect = (long)w * rh == (long)h * rw;
     if (manifest_command(cmd, sizeof cmd, ref_path)) resize_command(fixed, sizeof fixed, cmd, ref_path, w, h);

@@ -15,7 +15,7 @@ typedef struct {
                                 failed, else the difference where the groups are significant (se -2) */
     char channel[8];         /* that channel's name, "mean", "groups", or "" for no figure */
     char where[160];         /* where the significant groups are; "" if none */
-    char mistake[400];       /* the likely mistakes, "; " between them; the input error for status 2 */
+    char mistake[1024];      /* the likely mistakes, "; " between them; the input error for status 2 */
 } grade_row;
 
 /* The tests that ran, their levels and counts, then the verdict with where and how much. */

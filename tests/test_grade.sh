@@ -122,6 +122,9 @@ expect_err "--var of another size: named" "zero16.pfm is 16x16, the reference .*
 expect_status "--alpha 2: status 2" 2 $PATHLAB grade "$TMP/c.pfm" --ref "$TMP/c.pfm" --alpha 2
 expect_err "--alpha 2: flag and value named" "^pathlab grade: --alpha expects .*got '2'"
 expect_status "a class of two, one failing: status 1" 1 $PATHLAB grade "$TMP/c.pfm" "$TMP/c_bright.pfm" --ref "$TMP/c.pfm"
+mkdir -p "$TMP/empty"
+expect_status "an empty folder: status 2" 2 $PATHLAB grade "$TMP/empty" --ref "$TMP/c.pfm"
+expect_err "an empty folder: said" "no image to grade"
 expect_status "a class with an unreadable image: status 2" 2 $PATHLAB grade "$TMP/c.pfm" "$TMP/none.pfm" --ref "$TMP/c.pfm"
 expect_status "--heatmap of an unknown format: status 2" 2 $PATHLAB grade "$TMP/c.pfm" --ref "$TMP/c.pfm" --heatmap "$TMP/h.jpg"
 expect_err "--heatmap of an unknown format explained" "^pathlab grade: --heatmap .*h.jpg: unknown image format"

@@ -118,7 +118,7 @@ static int add_folder(grade_args *a, const char *dir, int cap)
     }
     closedir(d);
     qsort(a->images + first, (size_t)(a->nimages - first), sizeof *a->images, by_name);
-    if (a->nimages == first) fprintf(stderr, "pathlab grade: warning: no .pfm image in the folder %s\n", dir);
+    if (a->nimages == first) fprintf(stderr, "pathlab grade: warning: no .pfm image to grade in the folder %s\n", dir);
     return 0;
 }
 
@@ -164,6 +164,7 @@ static int parse_args(grade_args *a, int argc, char **argv)
     }
     free(words);
     if (!n || !a->ref) { fprintf(stderr, "pathlab grade: needs an image (or a folder of them) and --ref REF.pfm\n" GRADE_USAGE); return 1; }
+    if (!a->nimages) { fprintf(stderr, "pathlab grade: no image to grade (the folder holds no .pfm besides the reference's files)\n"); return 1; }
     return check_outputs(a);
 }
 

@@ -550,7 +550,7 @@ static void test_plain(grade_report *r, const image *img, const image *ref)
     size_t p, n = (size_t)r->w * r->h;
     long m = 0;
     int ch;
-    double sum[3] = {0, 0, 0}, m2[3] = {0, 0, 0}, m3[3] = {0, 0, 0};
+    double sum[3] = {0, 0, 0}, m2[3] = {0, 0, 0}, m3[3] = {0, 0, 0}, crit;
     for (p = 0; p < n; p++)
         for (ch = 0; ch < 3 && !r->exact[p]; ch++) sum[ch] += (double)img->px[3 * p + ch] - ref->px[3 * p + ch];
     for (p = 0; p < n; p++) m += !r->exact[p];
@@ -560,8 +560,9 @@ static void test_plain(grade_report *r, const image *img, const image *ref)
             m2[ch] += e * e;
             m3[ch] += e * e * e;
         }
+    crit = m > 1 ? t_critical(r->image_level, (int)fmin(m - 1, 1e9)) : 0.0;   /* one df for the 3 channels */
     for (ch = 0; ch < 3 && m > 1; ch++) {
-        double crit = t_critical(r->image_level, (int)fmin(m - 1, 1e9)), skew = m2[ch] > 0.0 ? (m3[ch] / m) / pow(m2[ch] / m, 1.5) : 0.0;
+        double skew = m2[ch] > 0.0 ? (m3[ch] / m) / pow(m2[ch] / m, 1.5) : 0.0;
         r->plain_t[ch] = t_stat(sum[ch] / m, m2[ch] / (m - 1.0) / m);
         r->plain_limit[ch] = skewed_limit(crit, r->plain_t[ch] < 0.0 ? skew : -skew, m);
         if (fabs(r->plain_t[ch]) > r->plain_limit[ch]) r->image_fail = 1;

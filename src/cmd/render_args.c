@@ -143,6 +143,7 @@ void render_args_init(render_args *a)
     a->cmd = "render";
     a->ro.spp = 16;
     a->ro.seed = 1;
+    a->ro.pixel_offset = 0.5f;
     a->ro.threads = parallel_default_threads();
     a->ro.io.light = LIGHT_AREA;
     a->ro.io.dir = DIR_BRDF;

@@ -76,7 +76,8 @@ static void render_pixel(const job *j, thread_state *t, int px, int py)
     for (i = 0; i < o->spp; i++) {
         float jx = o->pixel_center ? 0.5f : pcg32_float(&rng);
         float jy = o->pixel_center ? 0.5f : pcg32_float(&rng);
-        ray r = camera_ray(j->cam, (float)px + jx, (float)py + jy);
+        /* image rows run top to bottom here, gKit's bottom to top: its (x + o, y + o) is our (x + o, row + 1 - o) */
+        ray r = camera_ray(j->cam, (float)px + (jx + (o->pixel_offset - 0.5f)), (float)py + (jy - (o->pixel_offset - 0.5f)));
         vec3 L = integrate(j->sc, &o->io, &r, &rng, t->Lk, &t->st);
         if (v3_is_finite(L)) add_sample(j, t, L);
         else t->nonfinite++;   /* counted, reported, dropped */

@@ -10,6 +10,8 @@
 
 typedef struct {
     int spp, threads, quiet, pixel_center;
+    float pixel_offset;     /* pixel (x, y) is centred at (x + offset, y + offset), y counted from the
+                               bottom row as in gKit/OpenGL: 0.5 (pbrt, Mitsuba, gKit's x + .5) or 0 */
     int split;              /* --split: also one image layer per L_k */
     uint64_t seed;
     integrator_opts io;

@@ -44,6 +44,13 @@ $(BUILD)/tests/%: tests/%.c $(LIB_OBJ)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(DEPFLAGS) -o $@ $< $(LIB_OBJ) $(LDLIBS)
 
+# The git revision goes into version.o only; the stamp file changes (and rebuilds it) when the revision does.
+REVISION := $(shell git describe --always --dirty 2>/dev/null || echo unknown)
+REV_STAMP := $(BUILD)/revision
+$(shell mkdir -p $(BUILD); echo '$(REVISION)' | cmp -s - $(REV_STAMP) 2>/dev/null || echo '$(REVISION)' > $(REV_STAMP))
+$(BUILD)/cmd/version.o: $(REV_STAMP)
+$(BUILD)/cmd/version.o: CFLAGS += -DPATHLAB_REVISION='"$(REVISION)"'
+
 -include $(OBJ:.o=.d) $(TEST_BIN:=.d) $(BUILD)/bench-plot.d
 
 run: $(PROG)

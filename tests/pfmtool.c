@@ -6,6 +6,8 @@
  *       rmse R relrmse R/mean(B) relmse mean((A-B)^2 / (B^2 + 0.01)) mean_a M mean_b M
  *       and, given B's variance of the pixel mean (pathlab --variance), var_b mean(B_VAR) and
  *       rmse_ref sqrt(max(0, rmse^2 - var_b)): the RMSE against B's expectation, B's own noise removed
+ *   pfmtool close A.pfm B.pfm REL    every value of A within REL x max(|a|, |b|) of B's (float rounding);
+ *       prints the worst relative difference; exit 1 if one is farther
  * Exit 0 on success, 2 on bad input. */
 #include <math.h>
 #include <stdio.h>
@@ -82,8 +84,27 @@ static int rmse(int n, char **a)
     return isfinite(mse) ? 0 : 2;
 }
 
+static int close_to(char **a)
+{
+    image x, y;
+    double rel = atof(a[2]), worst = 0.0;
+    size_t i, n;
+    if (img_read_pfm(&x, a[0])) return 2;
+    if (img_read_pfm(&y, a[1]) || x.w != y.w || x.h != y.h) { img_free(&x); return 2; }
+    n = 3 * (size_t)x.w * (size_t)x.h;
+    for (i = 0; i < n; i++) {
+        double d = fabs((double)x.px[i] - y.px[i]), m = fmax(fabs(x.px[i]), fabs(y.px[i]));
+        if (d > 0 && d / m > worst) worst = d / m;
+    }
+    printf("worst relative difference %.3g\n", worst);
+    img_free(&x);
+    img_free(&y);
+    return worst <= rel ? 0 : 1;
+}
+
 int main(int argc, char **argv)
 {
+    if (argc == 5 && !strcmp(argv[1], "close")) return close_to(argv + 2);
     if (argc == 8 && !strcmp(argv[1], "const")) return constant(argv + 2);
     if (argc == 5 && !strcmp(argv[1], "scale")) return scale(argv + 2);
     if (argc >= 4 && !strcmp(argv[1], "sum")) return sum(argc - 2, argv + 2);

@@ -140,6 +140,10 @@ static int check_flags(const comparison *c)
         help_print(stderr, "pathlab: compare needs a scene, --estimators and -o DIR\nusage:\n" COMPARE_USAGE COMPARE_HELP);
         return 1;
     }
+    if (c->base.samples_given || c->base.resume) {
+        fprintf(stderr, "pathlab: compare: --samples and --resume are for pathlab render (compare renders each estimator whole)\n");
+        return 1;
+    }
     if (c->spp_given && c->time > 0.0f) { fprintf(stderr, "pathlab: compare: --spp (equal samples) or --time (equal time), not both\n"); return 1; }
     if (c->ref_var && !c->ref) { fprintf(stderr, "pathlab: compare: --ref-var goes with --ref\n"); return 1; }
     if (c->ref && c->ref_spp) { fprintf(stderr, "pathlab: compare: --ref-spp is for a rendered reference, not with --ref\n"); return 1; }

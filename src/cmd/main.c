@@ -11,6 +11,7 @@
 #include "cmd/diff.h"
 #include "cmd/grade.h"
 #include "cmd/help.h"
+#include "cmd/merge.h"
 #include "cmd/render_cmd.h"
 
 static const char *USAGE =
@@ -28,13 +29,18 @@ static const char *USAGE =
     "                [--heatmap OUT.png|FOLDER] [--block B] [--var REF_VAR.pfm] [--layers PREFIX] [--details]\n"
     "                is each IMAGE - REF noise or bias, and if bias, the likely mistake (below; docs/grading.md)\n"
     COMPARE_USAGE
+    MERGE_USAGE
     "  pathlab convert IN.pfm OUT.png|OUT.ppm|OUT.pfm [--exposure STOPS]   view a PFM (e.g. a --split layer);\n"
     "                prints the size and each channel's mean, min and max\n"
     "  pathlab help\n"
     "\n"
     "render flags:\n"
     "  -o FILE              output image; .pfm (linear float), .ppm or .png (8-bit sRGB)\n"
-    "  --spp N              samples per pixel (default 16)\n"
+    "  --spp N              samples per pixel (default 16), rendered in passes: every pixel gets sample i\n"
+    "                       before any gets i+1; Ctrl-C writes the image at the spp reached, a 2nd quits\n"
+    "  --time SEC           as many passes as fit in SEC seconds (up to --spp if given)\n"
+    "  --samples A:B        only the sample indices A..B-1 (pieces for pathlab merge)\n"
+    "  --resume             add samples to the render at -o (up to --spp in all, or for --time)\n"
     "  --seed S             random seed (default 1); same seed, same image, any thread count\n"
     "  --threads N          worker threads (default: every core)\n"
     "  --quiet              no progress bar and no stats line\n"
@@ -78,6 +84,7 @@ static const command COMMANDS[] = {
     {"render", render_main}, {"bench-rays", bench_rays_main}, {"check-sampling", check_sampling_main},
     {"check-sampler", check_sampler_main},
     {"diff", diff_main}, {"grade", grade_main}, {"compare", compare_main}, {"convert", convert_main},
+    {"merge", merge_main},
     {NULL, NULL}};
 
 static void help(FILE *f)

@@ -33,6 +33,22 @@ static int parse_bounces(void *ctx, const char *flag, const char *v)
     return 0;
 }
 
+/* --samples A:B, sample indices A..B-1: 0 <= A < B, at most 2^30 of them */
+static int parse_samples(void *ctx, const char *flag, const char *v)
+{
+    render_args *a = ctx;
+    char *end, *b;
+    long long lo = strtoll(v, &end, 10), hi;
+    int ok = end != v && *end == ':' && lo >= 0;
+    b = end + 1;
+    hi = ok ? strtoll(b, &end, 10) : 0;
+    ok = ok && end != b && !*end && hi > lo && hi - lo <= (1 << 30) && hi <= (1LL << 62);
+    if (!ok) return cli_fail(a->cmd, flag, "A:B, the sample indices A to B-1 (0 <= A < B, at most 2^30 samples; e.g. 0:64, 64:128)", v);
+    a->ro.first = lo;
+    a->ro.spp = (int)(hi - lo);
+    return 0;
+}
+
 /* --bounce K, the same as --bounces K:K */
 static int parse_bounce(void *ctx, const char *flag, const char *v)
 {
@@ -97,7 +113,10 @@ void render_flag_table(render_args *a, cli_flag t[RENDER_NFLAGS])
     const cli_flag flags[RENDER_NFLAGS] = {
         {"-o", CLI_STRING, &a->out, 0, 0, NULL, NULL, NULL},
         {"--variance", CLI_STRING, &a->variance, 0, 0, NULL, NULL, NULL},
-        {"--spp", CLI_INT, &a->ro.spp, 1, 1 << 30, NULL, NULL, NULL},
+        {"--spp", CLI_INT, &a->ro.spp, 1, 1 << 30, NULL, NULL, &a->spp_given},
+        {"--samples", CLI_CUSTOM, NULL, 0, 0, NULL, parse_samples, &a->samples_given},
+        {"--time", CLI_DOUBLE, &a->ro.time_limit, 1e-3, 1e9, NULL, NULL, NULL},
+        {"--resume", CLI_SWITCH, &a->resume, 0, 0, NULL, NULL, NULL},
         {"--seed", CLI_U64, &a->ro.seed, 0, 0, NULL, NULL, NULL},
         {"--threads", CLI_INT, &a->ro.threads, 1, PARALLEL_MAX_THREADS, NULL, NULL, NULL},
         {"--quiet", CLI_SWITCH, &a->ro.quiet, 0, 0, NULL, NULL, NULL},

@@ -11,10 +11,11 @@ typedef struct {
     float exposure;
     view vw, flags;                  /* flags: values given on the command line */
     int eye, target, up, fov, size;  /* which camera flags were given */
+    int spp_given, samples_given, resume;
     render_opts ro;
 } render_args;
 
-#define RENDER_NFLAGS 21   /* the flags of render_flag_table, and its closing NULL entry */
+#define RENDER_NFLAGS 24   /* the flags of render_flag_table, and its closing NULL entry */
 
 /* The defaults of pathlab render (16 spp, seed 1, every core, area, brdf, mis-power, 0:inf, rr 3). */
 void render_args_init(render_args *a);

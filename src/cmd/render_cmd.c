@@ -1,23 +1,21 @@
-/* render_cmd.c — pathlab render: flags, scene, camera, render, image files. */
+/* render_cmd.c — pathlab render: flags, scene, camera, render (resumed or not), image files with
+ * their sidecars, and what a stop by Ctrl-C or --time wrote. */
 #include "cmd/render_cmd.h"
+#include <inttypes.h>
 #include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 #include "cmd/render_args.h"
+#include "cmd/render_files.h"
+#include "cmd/version.h"
+#include "stats/combine.h"
+#include "sys/interrupt.h"
+#include "sys/progress.h"
 
-/* The flags, then what render needs beyond valid values: a scene, an output it can write, a last
- * bounce for --split. 0, or 1 after printing why. */
-static int parse_render_args(render_args *a, int argc, char **argv)
+/* What render needs beyond valid flag values: a scene, an output it can write, a last bounce for
+ * --split, sample flags that go together. 0, or 1 after printing why. */
+static int check_render_args(render_args *a)
 {
-    cli_flag t[RENDER_NFLAGS];
-    const cli_flag *tables[2];
-    const char *words[1];
-    int nwords;
-    render_args_init(a);
-    render_flag_table(a, t);
-    tables[0] = t;
-    tables[1] = NULL;
-    if (cli_parse("render", argc, argv, tables, a, words, 1, &nwords)) return 1;
-    a->scene = nwords ? words[0] : NULL;
     if (!a->scene) { fprintf(stderr, "pathlab render: needs a scene: pathlab render SCENE.obj -o FILE\n"); return 1; }
     if (!a->out) { fprintf(stderr, "pathlab render: needs an output: -o FILE.pfm, -o FILE.ppm or -o FILE.png\n"); return 1; }
     if (img_format_of(a->out) == IMG_UNKNOWN) {
@@ -32,30 +30,162 @@ static int parse_render_args(render_args *a, int argc, char **argv)
         fprintf(stderr, "pathlab render: --split needs a last bounce, e.g. --bounces 0:8\n");
         return 1;
     }
+    if (a->samples_given && (a->spp_given || a->resume)) {
+        fprintf(stderr, "pathlab render: --samples A:B says which samples to render: not with %s\n", a->resume ? "--resume" : "--spp");
+        return 1;
+    }
+    if (a->resume && img_format_of(a->out) != IMG_PFM) {
+        fprintf(stderr, "pathlab render: --resume adds samples to a .pfm image, not to %s\n", a->out);
+        return 1;
+    }
+    if (a->resume && !a->spp_given && a->ro.time_limit <= 0) {
+        fprintf(stderr, "pathlab render: --resume needs --spp N (the samples wanted in all) or --time SEC\n");
+        return 1;
+    }
+    if (a->ro.time_limit > 0 && !a->spp_given && !a->samples_given) a->ro.spp = 1 << 30;   /* --time alone: no cap */
     return 0;
 }
 
-/* out.pfm -> out_L3.pfm */
-static void bounce_path(char *dst, size_t cap, const char *out, int k)
+static int parse_render_args(render_args *a, int argc, char **argv)
 {
-    const char *e = img_extension(out);
-    snprintf(dst, cap, "%.*s_L%d%s", (int)(strlen(out) - strlen(e)), out, k, e);
+    cli_flag t[RENDER_NFLAGS];
+    const cli_flag *tables[2];
+    const char *words[1];
+    int nwords;
+    render_args_init(a);
+    render_flag_table(a, t);
+    tables[0] = t;
+    tables[1] = NULL;
+    if (cli_parse("render", argc, argv, tables, a, words, 1, &nwords)) return 1;
+    a->scene = nwords ? words[0] : NULL;
+    return check_render_args(a);
 }
 
-static int write_outputs(const render_args *a, const render_result *r)
+/* The sidecar of this render, its sample range aside: what must match for pieces to merge. */
+static void describe_render(const render_args *a, const scene *s, sidecar *m)
 {
-    char path[4096];
-    int k, err = img_write(&r->mean[0], a->out, a->exposure);
-    for (k = 1; k < r->nlayers && !err; k++) {
-        bounce_path(path, sizeof path, a->out, a->ro.io.bmin + k - 1);
-        err = img_write(&r->mean[k], path, a->exposure);
+    const render_opts *o = &a->ro;
+    const integrator_opts *io = &o->io;
+    const view *v = &a->vw;
+    char bmax[16], rr[16];
+    memset(m, 0, sizeof *m);
+    strcpy(m->kind, "mean");
+    strcpy(m->layer, "total");
+    m->seed = o->seed;
+    snprintf(m->scene, sizeof m->scene, "%s", a->scene);
+    snprintf(m->scene_id, sizeof m->scene_id, "fnv1a64:%016" PRIx64, mesh_fingerprint(&s->m));
+    snprintf(bmax, sizeof bmax, io->bmax == BOUNCES_INF ? "inf" : "%d", io->bmax);
+    snprintf(rr, sizeof rr, io->rr_depth < 0 ? "off" : "%d", io->rr_depth);
+    snprintf(m->flags, sizeof m->flags, "--bounces %d:%s --light %s --dir %s --direct %s --rr %s --pixel-offset %.9g%s",
+             io->bmin, bmax, LIGHT_STRATEGY_NAMES[io->light], DIR_STRATEGY_NAMES[io->dir], DIRECT_STRATEGY_NAMES[io->direct],
+             rr, o->pixel_offset, o->pixel_center ? " --pixel-center" : "");
+    snprintf(m->camera, sizeof m->camera, "eye %.9g,%.9g,%.9g target %.9g,%.9g,%.9g up %.9g,%.9g,%.9g fov %.9g size %dx%d",
+             v->eye.x, v->eye.y, v->eye.z, v->target.x, v->target.y, v->target.z, v->up.x, v->up.y, v->up.z, v->fov,
+             v->width, v->height);
+    snprintf(m->revision, sizeof m->revision, "%s", pathlab_revision());
+}
+
+/* --resume: reads the render at -o, checks it is this render, and sets the samples still to do
+ * (from the end of its samples up to --spp in all). 1 if done already (prints so), 2 on error. */
+static int prepare_resume(render_args *a, const sidecar *now, render_files *prev, char *var_out, size_t cap)
+{
+    sidecar had;
+    int64_t have;
+    int rc = sidecar_read(&had, a->out);
+    if (rc < 0 && access(a->out, F_OK) != 0) {
+        fprintf(stderr, "pathlab render: --resume: %s does not exist: there is nothing to resume (leave out --resume)\n", a->out);
+        return 2;
     }
-    if (a->variance && !err) err = img_write(&r->var[0], a->variance, 0.0f);
-    for (k = 1; k < r->nlayers && a->variance && !err; k++) {
-        bounce_path(path, sizeof path, a->variance, a->ro.io.bmin + k - 1);
-        err = img_write(&r->var[k], path, 0.0f);
+    if (rc < 0) render_files_read(prev, a->out, 0, "render");   /* says that it has no sidecar */
+    if (rc) return 2;
+    if (render_files_read(prev, a->out, had.variance[0] != '\0', "render")) return 2;
+    if (sidecar_check_same(&prev->meta, now, "render --resume", a->out, "this render")) return 2;
+    if (a->variance && !had.variance[0]) {
+        fprintf(stderr, "pathlab render: %s was rendered without --variance: its variance cannot be resumed\n", a->out);
+        return 2;
     }
-    return err;
+    if ((prev->nlayers > 1) != (a->ro.split != 0)) {
+        fprintf(stderr, "pathlab render: %s was rendered %s --split: resume it %s --split\n", a->out,
+                prev->nlayers > 1 ? "with" : "without", prev->nlayers > 1 ? "with" : "without");
+        return 2;
+    }
+    if (had.variance[0] && !a->variance) {   /* keep its variance up to date, where it is */
+        const char *slash = strrchr(a->out, '/');
+        if (strchr(had.variance, '/')) snprintf(var_out, cap, "%s", had.variance);
+        else snprintf(var_out, cap, "%.*s%s", slash ? (int)(slash + 1 - a->out) : 0, a->out, had.variance);
+        a->variance = var_out;
+    }
+    have = sidecar_spp(&had);
+    if (have >= a->ro.spp) {
+        fprintf(stderr, "pathlab render: %s already has %" PRId64 " spp (--spp %d): nothing to add\n", a->out, have, a->ro.spp);
+        return 1;
+    }
+    a->ro.first = had.range[had.nranges - 1][1];
+    a->ro.spp -= (int)have;
+    return 0;
+}
+
+/* r := prev (n samples) combined with r, layer by layer, the variances exactly. */
+static int combine_with(const render_files *prev, int64_t n, render_result *r)
+{
+    int i;
+    for (i = 0; i < r->nlayers; i++) {
+        size_t count = 3 * (size_t)r->mean[i].w * (size_t)r->mean[i].h;
+        combine_acc c;
+        if (combine_init(&c, count)) { fprintf(stderr, "pathlab render: out of memory\n"); return 1; }
+        combine_add(&c, prev->mean[i].px, prev->var ? prev->var[i].px : NULL, (double)n);
+        combine_add(&c, r->mean[i].px, r->var[i].px, r->spp);
+        combine_result(&c, r->mean[i].px, r->var[i].px);
+        combine_free(&c);
+    }
+    return 0;
+}
+
+/* What was rendered, into the sidecar: the samples (with those of the resumed render), and why it stopped. */
+static int finish_meta(sidecar *m, const render_args *a, const render_result *r, const render_files *prev)
+{
+    m->nranges = 1;
+    m->range[0][0] = a->ro.first;
+    m->range[0][1] = a->ro.first + r->spp;
+    if (r->interrupted) snprintf(m->stopped, sizeof m->stopped, "%s", interrupt_name(r->interrupted));
+    else if (r->spp < a->ro.spp && a->ro.time_limit > 0 && a->spp_given) snprintf(m->stopped, sizeof m->stopped, "time");
+    return prev->nlayers ? sidecar_add_ranges(m, &prev->meta, "this render", a->out) : 0;
+}
+
+/* After a stop by a signal or --time: what was written, and how to go on. */
+static void report_stop(const render_args *a, const render_result *r, const sidecar *m)
+{
+    char el[32];
+    int64_t spp = sidecar_spp(m), asked = spp - r->spp + a->ro.spp;
+    progress_duration(el, sizeof el, r->seconds);
+    if (r->interrupted)
+        fprintf(stderr, "pathlab render: interrupted (%s) at %" PRId64 " of %" PRId64 " spp after %s: written %s%s%s "
+                "(add samples with --resume)\n", interrupt_name(r->interrupted), spp, asked, el, a->out,
+                a->variance ? " and " : "", a->variance ? a->variance : "");
+    else if (r->spp < a->ro.spp && a->spp_given)
+        fprintf(stderr, "pathlab render: --time %.9g s: %" PRId64 " of %" PRId64 " spp fitted, written %s\n", a->ro.time_limit, spp, asked, a->out);
+}
+
+static int render_and_write(render_args *a, const scene *s, const camera *cam)
+{
+    render_files prev;
+    render_result r;
+    sidecar m;
+    char var_out[4096];
+    int rc = 0, err;
+    memset(&prev, 0, sizeof prev);
+    describe_render(a, s, &m);
+    if (a->resume && (rc = prepare_resume(a, &m, &prev, var_out, sizeof var_out)) != 0) return rc == 1 ? 0 : 2;
+    interrupt_install();   /* from here, a first Ctrl-C stops after the pass and writes what it reached */
+    if (render(s, cam, &a->ro, &r)) { render_files_free(&prev); return 1; }
+    if (!a->ro.quiet) render_print_stats(&r, r.spp, cam->width * cam->height);
+    err = finish_meta(&m, a, &r, &prev) || (prev.nlayers && combine_with(&prev, sidecar_spp(&prev.meta), &r));
+    err = err || render_files_write(a->out, a->variance, a->exposure, &m, r.mean, r.var, r.nlayers, a->ro.io.bmin);
+    if (!err) report_stop(a, &r, &m);
+    if (!err && r.interrupted) rc = 128 + r.interrupted;
+    render_result_free(&r);
+    render_files_free(&prev);
+    return err ? 1 : rc;
 }
 
 int render_main(int argc, char **argv)
@@ -63,8 +193,7 @@ int render_main(int argc, char **argv)
     render_args a;
     scene s;
     camera cam;
-    render_result r;
-    int err;
+    int rc;
     if (parse_render_args(&a, argc, argv)) return 2;
     if (scene_load(&s, a.scene, a.ro.threads, a.ro.quiet)) return 2;
     if (!a.ro.quiet)
@@ -73,10 +202,7 @@ int render_main(int argc, char **argv)
     if (render_make_camera(&a, &s, &cam)) { scene_free(&s); return 2; }
     if (s.lights.n == 0)
         fprintf(stderr, "pathlab render: warning: %s has no emitters (no material with Ke > 0): the image is black\n", a.scene);
-    if (render(&s, &cam, &a.ro, &r)) { scene_free(&s); return 1; }
-    if (!a.ro.quiet) render_print_stats(&r, a.ro.spp, cam.width * cam.height);
-    err = write_outputs(&a, &r);
-    render_result_free(&r);
+    rc = render_and_write(&a, &s, &cam);
     scene_free(&s);
-    return err ? 1 : 0;
+    return rc;
 }

@@ -14,6 +14,7 @@
  * after fflush and fclose succeeded: a crash or a full disk never leaves a half-written image, and
  * an existing image stays untouched when the write fails. */
 #include "image/image.h"
+#include "sys/interrupt.h"
 #include <ctype.h>
 #include <errno.h>
 #include <float.h>
@@ -89,7 +90,10 @@ static FILE *atomic_open(const char *path, char **tmp)
     }
     memcpy(*tmp, path, n);
     memcpy(*tmp + n, ".tmp.XXXXXX", sizeof ".tmp.XXXXXX");
+    interrupt_hold();   /* a second Ctrl-C must find the file registered, to remove it */
     fd = mkstemp(*tmp);
+    if (fd >= 0) interrupt_temp_add(*tmp);
+    interrupt_release();
     if (fd < 0) {
         fprintf(stderr, "%s: cannot create a temporary file: %s\n", path, strerror(errno));
         free(*tmp);
@@ -100,6 +104,7 @@ static FILE *atomic_open(const char *path, char **tmp)
         fprintf(stderr, "%s: cannot write: %s\n", path, strerror(errno));
         close(fd);
         unlink(*tmp);
+        interrupt_temp_remove(*tmp);
         free(*tmp);
         *tmp = NULL;
         return NULL;
@@ -115,9 +120,12 @@ static int atomic_close(FILE *f, char *tmp, const char *path, int ok)
     if (ok && fflush(f) != 0) err = errno;
     if (ok && !err && ferror(f)) err = EIO;
     if (fclose(f) != 0 && ok && !err) err = errno;
+    interrupt_hold();
     if (ok && !err && rename(tmp, path) != 0) err = errno;
-    if (ok && err) fprintf(stderr, "%s: cannot write: %s\n", path, strerror(err));
     if (!ok || err) unlink(tmp);
+    interrupt_temp_remove(tmp);
+    interrupt_release();
+    if (ok && err) fprintf(stderr, "%s: cannot write: %s\n", path, strerror(err));
     free(tmp);
     return (ok && !err) ? 0 : 1;
 }

@@ -39,6 +39,14 @@ static inline uint64_t splitmix64_mix(uint64_t z)
     return z ^ (z >> 31);
 }
 
+/* The stream of sample i of pixel p: its numbers depend on (seed, p, i) only, never on the samples
+ * drawn before, so any range of samples can be rendered alone (--samples A:B) and pieces merged
+ * equal the whole render. The j-th number drawn is the sample's dimension j. */
+static inline void pcg32_for_sample(pcg32 *r, uint64_t seed, uint64_t pixel, uint64_t i)
+{
+    pcg32_init(r, splitmix64_mix(splitmix64_mix(splitmix64_mix(seed) ^ pixel) ^ i), pixel);
+}
+
 /* SplitMix64's increment, 2^64 / golden ratio: seed + k GAMMA for k = 0, 1, 2... are far apart. */
 #define SPLITMIX64_GAMMA 0x9E3779B97F4A7C15ULL
 

@@ -28,3 +28,29 @@ void mesh_bounds(const mesh *m, vec3 *lo, vec3 *hi)
         *hi = v3_max(*hi, p);
     }
 }
+
+static uint64_t fnv1a(uint64_t h, const void *data, size_t n)
+{
+    const unsigned char *p = data;
+    size_t i;
+    for (i = 0; i < n; i++) h = (h ^ p[i]) * 0x100000001B3ULL;
+    return h;
+}
+
+uint64_t mesh_fingerprint(const mesh *m)
+{
+    uint64_t h = 0xCBF29CE484222325ULL;
+    int i, k;
+    for (i = 0; i < m->ntris; i++) {
+        for (k = 0; k < 3; k++) h = fnv1a(h, &m->P[m->tri[3 * i + k]], sizeof(vec3));
+        h = fnv1a(h, &m->tri_mat[i], sizeof(int));
+    }
+    for (i = 0; i < m->nmats; i++) {
+        const material *t = &m->mats[i];
+        h = fnv1a(h, &t->Kd, sizeof t->Kd);
+        h = fnv1a(h, &t->Ks, sizeof t->Ks);
+        h = fnv1a(h, &t->Ke, sizeof t->Ke);
+        h = fnv1a(h, &t->Ns, sizeof t->Ns);
+    }
+    return h;
+}

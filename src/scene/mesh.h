@@ -5,6 +5,7 @@
 #ifndef PATHLAB_MESH_H
 #define PATHLAB_MESH_H
 #include "math/vec.h"
+#include <stdint.h>
 
 /* The course's BRDF: f = Kd/pi + Ks (Ns+8)/(8 pi) cos^Ns(theta_h); Ke is emitted radiance. */
 typedef struct {
@@ -26,6 +27,9 @@ typedef struct {
 } mesh;
 
 void mesh_free(mesh *m);
+/* A 64-bit fingerprint (FNV-1a) of what is rendered: vertices, triangles, materials. Two renders
+ * merge only if their scenes have the same; comments, names and unused vertices don't count. */
+uint64_t mesh_fingerprint(const mesh *m);
 /* Bounds of the vertices used by triangles. */
 void mesh_bounds(const mesh *m, vec3 *lo, vec3 *hi);
 #endif

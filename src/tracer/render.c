@@ -1,20 +1,24 @@
-/* render.c — tiles handed to threads by parallel_for, per-pixel streams, per-layer means, progress. */
+/* render.c — passes of samples over tiles handed to threads by parallel_for, one random stream per
+ * sample, per-pixel sums kept across passes, progress, and the stop between passes. */
 #include "tracer/render.h"
 #include "sys/clock.h"
+#include "sys/interrupt.h"
 #include "sys/parallel.h"
+#include "sys/progress.h"
 #include <assert.h>
+#include <math.h>
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #define TILE 16
+#define PASS_SECONDS 1.0   /* a pass lasts about this long (after the first, of 1 spp): Ctrl-C waits at most that */
+#define NSUM 6             /* per pixel and layer: the sums of the samples and of their squares, RGB */
 
 /* What one thread owns, so that rendering needs no lock; the counts are merged at the end. */
 typedef struct {
     vec3 *Lk;                /* L_k of one sample for k = 0..bmax, with --split (else NULL) */
-    double *sums;            /* per layer: the sum and sum of squares of one pixel's samples, 6 doubles */
     trace_stats st;
     uint64_t nonfinite;      /* samples dropped for being NaN or infinite */
 } thread_state;
@@ -25,10 +29,12 @@ typedef struct {
     const render_opts *o;
     render_result *out;
     thread_state *ts;        /* [thread] */
+    double *sums;            /* [pixel][layer][NSUM], over the samples of the passes done */
+    int64_t s0, s1;          /* the current pass: sample indices [s0, s1) */
+    int done;                /* samples of the passes done */
     int tiles_x, ntiles;
-    int done_tiles;          /* under lock, for the progress bar */
-    int progress;            /* draw a progress bar on stderr */
-    double t0;
+    int done_tiles;          /* of the current pass, under lock, for the progress line */
+    progress pr;
     pthread_mutex_t lock;
 } job;
 
@@ -38,103 +44,151 @@ static void accumulate(double *a, vec3 c)
     a[3] += (double)c.x * c.x; a[4] += (double)c.y * c.y; a[5] += (double)c.z * c.z;
 }
 
-static void store_pixel(render_result *out, int layer, int idx, const double *a, int spp)
-{
-    float *m, *v;
-    int ch;
-    assert(0 <= layer && layer < out->nlayers);
-    m = out->mean[layer].px + 3 * idx;
-    v = out->var[layer].px + 3 * idx;
-    for (ch = 0; ch < 3; ch++) {
-        double mean = a[ch] / spp;
-        double s2 = spp > 1 ? (a[3 + ch] - spp * mean * mean) / (spp - 1) : 0.0;   /* sample variance */
-        m[ch] = (float)mean;
-        v[ch] = (float)(s2 > 0.0 ? s2 / spp : 0.0);                               /* of the mean */
-    }
-}
-
-/* One sample into the pixel's sums: layer 0 is the total; with --split, layer 1 + k - bmin is L_k. */
-static void add_sample(const job *j, thread_state *t, vec3 L)
+/* One sample into the pixel's sums a: layer 0 is the total; with --split, layer 1 + k - bmin is L_k. */
+static void add_sample(const job *j, const thread_state *t, double *a, vec3 L)
 {
     const integrator_opts *io = &j->o->io;
     int k;
-    accumulate(t->sums, L);
+    accumulate(a, L);
     for (k = io->bmin; t->Lk && k <= io->bmax; k++) {
         int layer = 1 + k - io->bmin;
         assert(layer < j->out->nlayers);
-        accumulate(t->sums + 6 * layer, t->Lk[k]);
+        accumulate(a + NSUM * layer, t->Lk[k]);
     }
 }
 
+/* The samples s0..s1-1 of pixel (px, py), each from its own stream (seed, pixel, sample index). */
 static void render_pixel(const job *j, thread_state *t, int px, int py)
 {
     const render_opts *o = j->o;
-    int i, layer, idx = py * j->cam->width + px;
-    pcg32 rng;
-    pcg32_init(&rng, splitmix64_mix(o->seed ^ splitmix64_mix((uint64_t)idx)), (uint64_t)idx);   /* (seed, pixel) -> stream */
-    memset(t->sums, 0, sizeof(double) * 6 * (size_t)j->out->nlayers);
-    for (i = 0; i < o->spp; i++) {
-        float jx = o->pixel_center ? 0.5f : pcg32_float(&rng);
-        float jy = o->pixel_center ? 0.5f : pcg32_float(&rng);
+    int idx = py * j->cam->width + px;
+    double *a = j->sums + (size_t)idx * NSUM * (size_t)j->out->nlayers;
+    int64_t i;
+    for (i = j->s0; i < j->s1; i++) {
+        pcg32 rng;
+        float jx, jy;
+        ray r;
+        vec3 L;
+        pcg32_for_sample(&rng, o->seed, (uint64_t)idx, (uint64_t)i);
+        jx = o->pixel_center ? 0.5f : pcg32_float(&rng);
+        jy = o->pixel_center ? 0.5f : pcg32_float(&rng);
         /* image rows run top to bottom here, gKit's bottom to top: its (x + o, y + o) is our (x + o, row + 1 - o) */
-        ray r = camera_ray(j->cam, (float)px + (jx + (o->pixel_offset - 0.5f)), (float)py + (jy - (o->pixel_offset - 0.5f)));
-        vec3 L = integrate(j->sc, &o->io, &r, &rng, t->Lk, &t->st);
-        if (v3_is_finite(L)) add_sample(j, t, L);
+        r = camera_ray(j->cam, (float)px + (jx + (o->pixel_offset - 0.5f)), (float)py + (jy - (o->pixel_offset - 0.5f)));
+        L = integrate(j->sc, &o->io, &r, &rng, t->Lk, &t->st);
+        if (v3_is_finite(L)) add_sample(j, t, a, L);
         else t->nonfinite++;   /* counted, reported, dropped */
     }
-    for (layer = 0; layer < j->out->nlayers; layer++) store_pixel(j->out, layer, idx, t->sums + 6 * layer, o->spp);
 }
 
-static void draw_progress(job *j)
+/* "384 of 4096 spp", or "384 spp, --time 1m00s" */
+static void describe(const job *j, char *buf, size_t cap, int spp)
 {
-    double t = clock_seconds() - j->t0, frac = (double)j->done_tiles / j->ntiles;
-    int bar = (int)(40 * frac), i;
-    fprintf(stderr, "\r[");
-    for (i = 0; i < 40; i++) fputc(i < bar ? '#' : ' ', stderr);
-    fprintf(stderr, "] %3d%%  %5.1fs", (int)(100 * frac), t);
-    if (j->done_tiles < j->ntiles && frac > 0) fprintf(stderr, "  ETA %5.1fs ", t / frac - t);
-    else fprintf(stderr, "            \n");
-    fflush(stderr);
+    char limit[32];
+    progress_duration(limit, sizeof limit, j->o->time_limit);
+    if (j->o->time_limit > 0) snprintf(buf, cap, "%d spp, --time %s", spp, limit);
+    else snprintf(buf, cap, "%d of %d spp", spp, j->o->spp);
 }
 
-/* The parallel_for body: tiles [begin, end) on thread `thread`. */
+/* The fraction done: of the samples, or of the time with --time. */
+static double fraction(const job *j, double spp_now)
+{
+    double f = j->o->time_limit > 0 ? (clock_seconds() - j->pr.t0) / j->o->time_limit : spp_now / j->o->spp;
+    return f < 0 ? 0 : f > 1 ? 1 : f;
+}
+
+/* The parallel_for body: tiles [begin, end) of the current pass on thread `thread`. */
 static void render_tiles(void *ctx, int thread, int begin, int end)
 {
     job *j = ctx;
     thread_state t = j->ts[thread];   /* copied to this thread's stack: its ray counters share no cache line */
     int tile, x, y;
+    char what[96];
     for (tile = begin; tile < end; tile++) {
         int x0 = (tile % j->tiles_x) * TILE, y0 = (tile / j->tiles_x) * TILE;
         for (y = y0; y < y0 + TILE && y < j->cam->height; y++)
             for (x = x0; x < x0 + TILE && x < j->cam->width; x++) render_pixel(j, &t, x, y);
         pthread_mutex_lock(&j->lock);
         j->done_tiles++;
-        if (j->progress) draw_progress(j);
+        if (j->pr.on) {
+            double spp_now = j->done + (double)(j->s1 - j->s0) * j->done_tiles / j->ntiles;
+            describe(j, what, sizeof what, j->done);
+            progress_update(&j->pr, fraction(j, spp_now), what);
+        }
         pthread_mutex_unlock(&j->lock);
     }
     j->ts[thread].st = t.st;
     j->ts[thread].nonfinite = t.nonfinite;
 }
 
+/* The samples of the next pass: 1 first, then about PASS_SECONDS' worth at the speed measured so
+ * far, never past --spp, and with --time only if they fit in the time left (0: stop). */
+static int next_pass(const job *j)
+{
+    double elapsed = clock_seconds() - j->pr.t0, per_spp, n;
+    int left = j->o->spp - j->done;
+    if (left <= 0) return 0;
+    if (j->done == 0) return 1;
+    per_spp = elapsed / j->done;
+    n = per_spp > 0 ? floor(PASS_SECONDS / per_spp) : left;
+    if (n < 1) n = 1;
+    if (j->o->time_limit > 0) {
+        double fit = per_spp > 0 ? floor((j->o->time_limit - elapsed) / per_spp) : left;
+        if (fit < n) n = fit;
+        if (n < 1) return 0;
+    }
+    return n < left ? (int)n : left;
+}
+
+/* The passes, until --spp is reached, --time is spent, or a signal asked to stop. */
+static void run_passes(job *j, int nthreads)
+{
+    char what[96];
+    int n;
+    while ((n = next_pass(j)) > 0) {
+        j->s0 = j->o->first + j->done;
+        j->s1 = j->s0 + n;
+        j->done_tiles = 0;
+        parallel_for(j->ntiles, 1, nthreads, render_tiles, j);
+        j->done += n;
+        if ((j->out->interrupted = interrupt_signal()) != 0) break;
+    }
+    describe(j, what, sizeof what, j->done);
+    progress_end(&j->pr, fraction(j, j->done), what);
+}
+
+/* The means and the variances of the means of every layer, from the sums of n samples. */
+static void store_images(render_result *out, const double *sums, int n)
+{
+    size_t npx = (size_t)out->mean[0].w * (size_t)out->mean[0].h, p;
+    int layer, ch;
+    for (p = 0; p < npx; p++)
+        for (layer = 0; layer < out->nlayers; layer++) {
+            const double *a = sums + (p * (size_t)out->nlayers + (size_t)layer) * NSUM;
+            float *m = out->mean[layer].px + 3 * p, *v = out->var[layer].px + 3 * p;
+            for (ch = 0; ch < 3; ch++) {
+                double mean = n > 0 ? a[ch] / n : 0.0;
+                double s2 = n > 1 ? (a[3 + ch] - n * mean * mean) / (n - 1) : 0.0;   /* sample variance */
+                m[ch] = (float)mean;
+                v[ch] = (float)(s2 > 0.0 ? s2 / n : 0.0);                             /* of the mean */
+            }
+        }
+}
+
 static void free_thread_states(thread_state *ts, int nthreads)
 {
     int t;
-    for (t = 0; ts && t < nthreads; t++) {
-        free(ts[t].Lk);
-        free(ts[t].sums);
-    }
+    for (t = 0; ts && t < nthreads; t++) free(ts[t].Lk);
     free(ts);
 }
 
 /* nLk entries of L_k per thread (0: none); NULL if memory ran out. */
-static thread_state *alloc_thread_states(int nthreads, int nlayers, int nLk)
+static thread_state *alloc_thread_states(int nthreads, int nLk)
 {
     thread_state *ts = calloc((size_t)nthreads, sizeof *ts);
     int t;
     for (t = 0; ts && t < nthreads; t++) {
         ts[t].Lk = nLk > 0 ? malloc(sizeof(vec3) * (size_t)nLk) : NULL;
-        ts[t].sums = malloc(sizeof(double) * 6 * (size_t)nlayers);
-        if ((nLk > 0 && !ts[t].Lk) || !ts[t].sums) {
+        if (nLk > 0 && !ts[t].Lk) {
             free_thread_states(ts, nthreads);
             return NULL;
         }
@@ -161,35 +215,48 @@ static int alloc_layers(render_result *out, int n, int w, int h)
     return 0;
 }
 
+/* The job's buffers: per-thread states, the result's layers, the sums; 1 if memory ran out. */
+static int setup(job *j, int nthreads, render_result *out)
+{
+    const render_opts *o = j->o;
+    int nlayers = 1 + (o->split ? o->io.bmax - o->io.bmin + 1 : 0);
+    size_t npx = (size_t)j->cam->width * (size_t)j->cam->height;
+    j->ts = alloc_thread_states(nthreads, o->split ? o->io.bmax + 1 : 0);
+    if (!j->ts || alloc_layers(out, nlayers, j->cam->width, j->cam->height)) return 1;
+    j->sums = calloc(npx * (size_t)nlayers, NSUM * sizeof(double));
+    return j->sums == NULL;
+}
+
 int render(const scene *sc, const camera *cam, const render_opts *o, render_result *out)
 {
     job j;
     int t, nthreads = parallel_threads(o->threads);
-    int nlayers = 1 + (o->split ? o->io.bmax - o->io.bmin + 1 : 0);
     memset(out, 0, sizeof *out);
     memset(&j, 0, sizeof j);
-    j.ts = alloc_thread_states(nthreads, nlayers, o->split ? o->io.bmax + 1 : 0);
-    if (!j.ts || alloc_layers(out, nlayers, cam->width, cam->height)) {
-        fprintf(stderr, "pathlab: out of memory for a %dx%d image\n", cam->width, cam->height);
+    j.sc = sc; j.cam = cam; j.o = o; j.out = out;
+    if (setup(&j, nthreads, out)) {
+        fprintf(stderr, "pathlab: out of memory for a %dx%d image%s\n", cam->width, cam->height, o->split ? " and its layers" : "");
         free_thread_states(j.ts, nthreads);
+        free(j.sums);
         render_result_free(out);
         return 1;
     }
-    j.sc = sc; j.cam = cam; j.o = o; j.out = out;
     j.tiles_x = (cam->width + TILE - 1) / TILE;
     j.ntiles = j.tiles_x * ((cam->height + TILE - 1) / TILE);
-    j.progress = !o->quiet && isatty(2);
-    j.t0 = clock_seconds();
+    progress_start(&j.pr, !o->quiet);
     pthread_mutex_init(&j.lock, NULL);
-    if (sc->lights.n > 0)   /* without emitters every pixel is black: no work at all */
-        parallel_for(j.ntiles, 1, nthreads, render_tiles, &j);
+    if (sc->lights.n > 0) run_passes(&j, nthreads);
+    else j.done = o->spp;   /* without emitters every pixel is black: no work at all */
     pthread_mutex_destroy(&j.lock);
-    out->seconds = clock_seconds() - j.t0;
+    out->seconds = clock_seconds() - j.pr.t0;
+    out->spp = j.done;
+    store_images(out, j.sums, j.done);
     for (t = 0; t < nthreads; t++) {
         add_stats(&out->st, &j.ts[t].st);
         out->nonfinite += j.ts[t].nonfinite;
     }
     free_thread_states(j.ts, nthreads);
+    free(j.sums);
     return 0;
 }
 

@@ -1,15 +1,22 @@
-/* render.h — the render loop: pixels in 16x16 tiles handed to threads as they come free
- * (parallel_for), each pixel with its own random stream (seed, pixel index), so the image is the
- * same whatever the number of threads. Each image layer (the total, and with --split one per
- * bounce L_k) gets its mean and the variance of that mean per pixel. */
+/* render.h — the render loop, in passes: every pixel gets sample i before any gets sample i + 1,
+ * so that the image is a uniform-spp image at the end of every pass (a render stopped by Ctrl-C or
+ * --time writes the spp it reached). Inside a pass, 16x16 tiles are handed to threads as they come
+ * free (parallel_for). The random numbers of sample i of pixel p depend on (seed, p, i) only, so
+ * the image is the same whatever the threads and the passes, and samples A..B-1 can be rendered
+ * alone and merged with others. Each image layer (the total, and with --split one per bounce L_k)
+ * gets its mean and the variance of that mean per pixel. */
 #ifndef PATHLAB_RENDER_H
 #define PATHLAB_RENDER_H
+#include <stdint.h>
 #include "scene/camera.h"
 #include "image/image.h"
 #include "tracer/integrator.h"
 
 typedef struct {
-    int spp, threads, quiet, pixel_center;
+    int spp;                /* samples per pixel: indices first .. first + spp - 1 */
+    int64_t first;          /* the first sample index (--samples A:B: first A, spp B - A) */
+    double time_limit;      /* --time: seconds; passes stop when the next would not fit (0: none) */
+    int threads, quiet, pixel_center;
     float pixel_offset;     /* pixel (x, y) is centred at (x + offset, y + offset), y counted from the
                                bottom row as in gKit/OpenGL: 0.5 (pbrt, Mitsuba, gKit's x + .5) or 0 */
     int split;              /* --split: also one image layer per L_k */
@@ -20,12 +27,15 @@ typedef struct {
 typedef struct {
     int nlayers;            /* 1 + (bmax - bmin + 1 with split) */
     image *mean, *var;      /* [0] the total, [1 + k - bmin] L_k with split; var: of the pixel's mean */
+    int spp;                /* the samples reached: first .. first + spp - 1 (fewer than asked if stopped) */
+    int interrupted;        /* the signal that stopped it after a pass (0: it ran to its end) */
     trace_stats st;
     uint64_t nonfinite;     /* samples that were NaN or infinite (counted, and dropped) */
     double seconds;
 } render_result;
 
-/* Renders; 0 on success, nonzero (after printing why) if memory ran out. */
+/* Renders; 0 on success (also when stopped by a signal or --time: see spp), nonzero (after
+ * printing why) if memory ran out. */
 int render(const scene *sc, const camera *cam, const render_opts *o, render_result *out);
 void render_result_free(render_result *r);
 /* The one-line summary: time, samples/s, Mrays/s and the rays of each kind. */

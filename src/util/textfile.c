@@ -1,5 +1,6 @@
 /* textfile.c — atomic text outputs (see textfile.h). */
 #include "util/textfile.h"
+#include "sys/interrupt.h"
 #include <errno.h>
 #include <string.h>
 
@@ -7,7 +8,11 @@ FILE *textfile_open(const char *path, char *tmp, size_t cap)
 {
     FILE *f;
     snprintf(tmp, cap, "%s.tmp", path);
-    if (!(f = fopen(tmp, "w"))) fprintf(stderr, "%s: %s\n", tmp, strerror(errno));
+    interrupt_hold();   /* a second Ctrl-C must find the file registered, to remove it */
+    f = fopen(tmp, "w");
+    if (f) interrupt_temp_add(tmp);
+    interrupt_release();
+    if (!f) fprintf(stderr, "%s: %s\n", tmp, strerror(errno));
     return f;
 }
 
@@ -15,10 +20,11 @@ int textfile_close(FILE *f, const char *tmp, const char *path)
 {
     int err = ferror(f);
     err |= fclose(f) != 0;
-    if (err || rename(tmp, path)) {
-        fprintf(stderr, "%s: could not write\n", path);
-        remove(tmp);
-        return 1;
-    }
-    return 0;
+    interrupt_hold();
+    err = err || rename(tmp, path);
+    if (err) remove(tmp);
+    interrupt_temp_remove(tmp);
+    interrupt_release();
+    if (err) fprintf(stderr, "%s: could not write\n", path);
+    return err ? 1 : 0;
 }

@@ -1,0 +1,164 @@
+/* render_files.c — a render's files and their sidecars, written and read back. */
+#include "cmd/render_files.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+void render_files_layer_path(char *dst, size_t cap, const char *out, int k)
+{
+    const char *e = img_extension(out);
+    snprintf(dst, cap, "%.*s_L%d%s", (int)(strlen(out) - strlen(e)), out, k, e);
+}
+
+static const char *base_name(const char *p)
+{
+    const char *s = strrchr(p, '/');
+    return s ? s + 1 : p;
+}
+
+/* The folder of p, "" for the current one ("dir/" kept with its slash). */
+static void folder_of(char *dst, size_t cap, const char *p)
+{
+    snprintf(dst, cap, "%.*s", (int)(base_name(p) - p), p);
+}
+
+/* How a sidecar names the variance file: its bare name when it sits in the image's folder, so
+ * that the pair can be moved together (to another machine, for merge); else the path as given. */
+static void variance_name(char *dst, size_t cap, const char *image_path, const char *var_path)
+{
+    char a[4096], b[4096];
+    folder_of(a, sizeof a, image_path);
+    folder_of(b, sizeof b, var_path);
+    if (snprintf(dst, cap, "%s", strcmp(a, b) ? var_path : base_name(var_path)) >= (int)cap) dst[0] = '\0';   /* too long to name */
+}
+
+/* One image file and its sidecar. */
+static int write_one(const char *path, const image *im, float exposure, const sidecar *meta)
+{
+    return img_write(im, path, exposure) || sidecar_write(meta, path);
+}
+
+int render_files_write(const char *out, const char *var_out, float exposure, const sidecar *meta,
+                       const image *mean, const image *var, int nlayers, int bmin)
+{
+    char path[4096], vpath[4096];
+    sidecar m = *meta;
+    int i, err = 0;
+    for (i = 0; i < nlayers && !err; i++) {
+        if (i == 0) snprintf(path, sizeof path, "%s", out), snprintf(m.layer, sizeof m.layer, "total");
+        else render_files_layer_path(path, sizeof path, out, bmin + i - 1), snprintf(m.layer, sizeof m.layer, "L%d", bmin + i - 1);
+        if (var_out && i == 0) snprintf(vpath, sizeof vpath, "%s", var_out);
+        else if (var_out) render_files_layer_path(vpath, sizeof vpath, var_out, bmin + i - 1);
+        strcpy(m.kind, "mean");
+        if (var_out) variance_name(m.variance, sizeof m.variance, path, vpath);
+        else m.variance[0] = '\0';
+        if (i > 0) m.layers[0] = '\0';   /* only the total lists the layers */
+        else if (nlayers > 1) snprintf(m.layers, sizeof m.layers, "%d:%d", bmin, bmin + nlayers - 2);
+        err = write_one(path, &mean[i], exposure, &m);
+        if (!err && var_out) {
+            strcpy(m.kind, "variance");
+            m.variance[0] = m.layers[0] = '\0';
+            err = write_one(vpath, &var[i], 0.0f, &m);
+        }
+    }
+    return err;
+}
+
+/* The variance file named by the sidecar of image_path: beside the image if a bare name. */
+static void variance_path(char *dst, size_t cap, const char *image_path, const char *name)
+{
+    char dir[4096];
+    int n;
+    folder_of(dir, sizeof dir, image_path);
+    n = strchr(name, '/') ? snprintf(dst, cap, "%s", name) : snprintf(dst, cap, "%s%s", dir, name);
+    if (n >= (int)cap) dst[0] = '\0';
+}
+
+/* Reads image `path` and its sidecar into *im and *m, checking it is what `kind` and `ranges_of` say. */
+static int read_one(const char *cmd, const char *path, const char *kind, const sidecar *ranges_of, image *im, sidecar *m)
+{
+    char a[8192], b[8192];
+    int rc = sidecar_read(m, path);
+    if (rc < 0) fprintf(stderr, "pathlab %s: %s has no sidecar %s.meta: it was not written by pathlab render "
+                                "(or the .meta was not copied with it), so its samples are unknown\n", cmd, path, path);
+    if (rc) return 1;
+    if (strcmp(m->kind, kind)) {
+        fprintf(stderr, "pathlab %s: %s is a %s image, expected a %s image\n", cmd, path, m->kind, kind);
+        return 1;
+    }
+    sidecar_ranges_text(m, a, sizeof a);
+    sidecar_ranges_text(ranges_of ? ranges_of : m, b, sizeof b);
+    if (strcmp(a, b)) {
+        fprintf(stderr, "pathlab %s: %s holds samples %s, but its image holds %s: files of two renders mixed up\n", cmd, path, a, b);
+        return 1;
+    }
+    if (img_format_of(path) != IMG_PFM) {
+        fprintf(stderr, "pathlab %s: %s: need the .pfm (linear float) image, not an 8-bit one\n", cmd, path);
+        return 1;
+    }
+    return img_read_pfm(im, path);
+}
+
+/* Parses the sidecar's "layers A:B"; 0 layers if none. */
+static int layer_count(const sidecar *m, int *bmin)
+{
+    int a, b;
+    *bmin = 0;
+    if (!m->layers[0] || sscanf(m->layers, "%d:%d", &a, &b) != 2 || a < 0 || b < a || b > 1000) return 0;
+    *bmin = a;
+    return b - a + 1;
+}
+
+/* Layer i (0: the total) and, with_var, its variance. */
+static int read_layer(render_files *rf, int i, const char *path, int with_var, const char *cmd)
+{
+    char p[4096], vp[4096];
+    sidecar m, vm;
+    if (i == 0) snprintf(p, sizeof p, "%s", path);
+    else render_files_layer_path(p, sizeof p, path, rf->bmin + i - 1);
+    if (read_one(cmd, p, "mean", i ? &rf->meta : NULL, &rf->mean[i], i ? &m : &rf->meta)) return 1;
+    if (!with_var) return 0;
+    if (!(i ? m.variance : rf->meta.variance)[0]) {
+        fprintf(stderr, "pathlab %s: %s was rendered without --variance: its variance is unknown\n", cmd, p);
+        return 1;
+    }
+    variance_path(vp, sizeof vp, p, i ? m.variance : rf->meta.variance);
+    return read_one(cmd, vp, "variance", &rf->meta, &rf->var[i], &vm);
+}
+
+int render_files_read(render_files *rf, const char *path, int with_var, const char *cmd)
+{
+    sidecar first;
+    int i, n, rc;
+    memset(rf, 0, sizeof *rf);
+    if ((rc = sidecar_read(&first, path)) < 0) return read_one(cmd, path, "mean", NULL, NULL, &first);   /* prints why */
+    if (rc) return 1;
+    n = 1 + layer_count(&first, &rf->bmin);
+    rf->mean = calloc((size_t)n, sizeof(image));
+    rf->var = with_var ? calloc((size_t)n, sizeof(image)) : NULL;
+    if (!rf->mean || (with_var && !rf->var)) {
+        fprintf(stderr, "pathlab %s: out of memory\n", cmd);
+        render_files_free(rf);
+        return 1;
+    }
+    rf->nlayers = n;
+    for (i = 0; i < n; i++)
+        if (read_layer(rf, i, path, with_var, cmd)) {
+            render_files_free(rf);
+            return 1;
+        }
+    return 0;
+}
+
+void render_files_free(render_files *rf)
+{
+    int i;
+    for (i = 0; i < rf->nlayers; i++) {
+        if (rf->mean) img_free(&rf->mean[i]);
+        if (rf->var) img_free(&rf->var[i]);
+    }
+    free(rf->mean);
+    free(rf->var);
+    rf->mean = rf->var = NULL;
+    rf->nlayers = 0;
+}

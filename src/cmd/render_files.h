@@ -1,0 +1,26 @@
+/* render_files.h — a render on disk: FILE.pfm (the mean of each pixel), optionally its variance
+ * (of the mean) and its L_k layers FILE_Lk.pfm (--split), each file with its sidecar FILE.meta.
+ * Written by render and merge, read back by merge and render --resume. */
+#ifndef PATHLAB_RENDER_FILES_H
+#define PATHLAB_RENDER_FILES_H
+#include "cmd/sidecar.h"
+#include "image/image.h"
+
+typedef struct {
+    sidecar meta;       /* of FILE.pfm */
+    int nlayers;        /* 1 + the L_k layers */
+    int bmin;           /* layer 1 is L_bmin */
+    image *mean, *var;  /* [nlayers]; var == NULL when the variance was not read */
+} render_files;
+
+/* out.pfm, layer k -> out_Lk.pfm */
+void render_files_layer_path(char *dst, size_t cap, const char *out, int k);
+/* Writes mean[0..nlayers-1] to out (layer i >= 1 to out_L{bmin+i-1}) and, if var_out, var[] the same
+ * way, each with its sidecar: meta with kind, layer and variance filled in per file. 0, or 1 after printing why. */
+int render_files_write(const char *out, const char *var_out, float exposure, const sidecar *meta,
+                       const image *mean, const image *var, int nlayers, int bmin);
+/* Reads the render at path (a .pfm with its sidecar), its layers if its sidecar lists some, and its
+ * variance files if with_var. 0, or 1 after printing why (messages start with "pathlab CMD: "). */
+int render_files_read(render_files *rf, const char *path, int with_var, const char *cmd);
+void render_files_free(render_files *rf);
+#endif

@@ -1,0 +1,178 @@
+/* sidecar.c — reading, writing and comparing the FILE.meta that says what made FILE. */
+#include "cmd/sidecar.h"
+#include "util/textfile.h"
+#include <errno.h>
+#include <inttypes.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+void sidecar_path(char *dst, size_t cap, const char *image_path) { snprintf(dst, cap, "%s.meta", image_path); }
+
+int64_t sidecar_spp(const sidecar *m)
+{
+    int64_t n = 0;
+    int i;
+    for (i = 0; i < m->nranges; i++) n += m->range[i][1] - m->range[i][0];
+    return n;
+}
+
+void sidecar_ranges_text(const sidecar *m, char *dst, size_t cap)
+{
+    size_t len = 0;
+    int i;
+    dst[0] = '\0';
+    for (i = 0; i < m->nranges && len < cap; i++)
+        len += (size_t)snprintf(dst + len, cap - len, "%s%" PRId64 ":%" PRId64, i ? "," : "", m->range[i][0], m->range[i][1]);
+}
+
+int sidecar_write(const sidecar *m, const char *image_path)
+{
+    char path[4200], tmp[4300], ranges[8192];
+    FILE *f;
+    sidecar_path(path, sizeof path, image_path);
+    if (!(f = textfile_open(path, tmp, sizeof tmp))) return 1;
+    sidecar_ranges_text(m, ranges, sizeof ranges);
+    fprintf(f, "# pathlab: what made %s (read by pathlab merge, render --resume and grade)\n", image_path);
+    fprintf(f, "kind %s\nlayer %s\nsamples %s\nspp %" PRId64 "\nseed %" PRIu64 "\n", m->kind, m->layer, ranges,
+            sidecar_spp(m), m->seed);
+    fprintf(f, "scene %s\nscene-id %s\nflags %s\ncamera %s\n", m->scene, m->scene_id, m->flags, m->camera);
+    if (m->variance[0]) fprintf(f, "variance %s\n", m->variance);
+    if (m->layers[0]) fprintf(f, "layers %s\n", m->layers);
+    if (m->stopped[0]) fprintf(f, "stopped %s\n", m->stopped);
+    fprintf(f, "revision %s\n", m->revision);
+    return textfile_close(f, tmp, path);
+}
+
+/* "A:B[,C:D...]" into m's ranges; 0, or 1 if malformed (empty, A >= B, unsorted or overlapping). */
+static int parse_ranges(sidecar *m, const char *s)
+{
+    char *end;
+    m->nranges = 0;
+    for (;;) {
+        long long a = strtoll(s, &end, 10), b;
+        if (end == s || *end != ':' || a < 0) return 1;
+        s = end + 1;
+        b = strtoll(s, &end, 10);
+        if (end == s || b <= a || m->nranges == SIDECAR_MAX_RANGES) return 1;
+        if (m->nranges > 0 && a < m->range[m->nranges - 1][1]) return 1;
+        m->range[m->nranges][0] = a;
+        m->range[m->nranges][1] = b;
+        m->nranges++;
+        if (*end == '\0') return 0;
+        if (*end != ',') return 1;
+        s = end + 1;
+    }
+}
+
+/* Copies the value into a text field; 1 if it does not fit. */
+static int set_text(char *dst, size_t cap, const char *v)
+{
+    if (strlen(v) >= cap) return 1;
+    strcpy(dst, v);
+    return 0;
+}
+
+/* One "key value" line; 0, or 1 if the value is malformed (unknown keys are skipped). */
+static int parse_line(sidecar *m, const char *key, const char *v)
+{
+    char *end;
+    if (!strcmp(key, "kind")) return set_text(m->kind, sizeof m->kind, v);
+    if (!strcmp(key, "layer")) return set_text(m->layer, sizeof m->layer, v);
+    if (!strcmp(key, "samples")) return parse_ranges(m, v);
+    if (!strcmp(key, "seed")) {
+        m->seed = strtoull(v, &end, 10);
+        return end == v || *end != '\0';
+    }
+    if (!strcmp(key, "scene")) return set_text(m->scene, sizeof m->scene, v);
+    if (!strcmp(key, "scene-id")) return set_text(m->scene_id, sizeof m->scene_id, v);
+    if (!strcmp(key, "flags")) return set_text(m->flags, sizeof m->flags, v);
+    if (!strcmp(key, "camera")) return set_text(m->camera, sizeof m->camera, v);
+    if (!strcmp(key, "variance")) return set_text(m->variance, sizeof m->variance, v);
+    if (!strcmp(key, "layers")) return set_text(m->layers, sizeof m->layers, v);
+    if (!strcmp(key, "revision")) return set_text(m->revision, sizeof m->revision, v);
+    if (!strcmp(key, "stopped")) return set_text(m->stopped, sizeof m->stopped, v);
+    return 0;
+}
+
+/* Cuts a line into its key and its value (blanks around the value and the line end dropped). */
+static int split_line(char *line, char **key, char **value)
+{
+    char *e = line + strlen(line);
+    while (e > line && (e[-1] == '\n' || e[-1] == '\r' || e[-1] == ' ' || e[-1] == '\t')) *--e = '\0';
+    while (*line == ' ' || *line == '\t') line++;
+    if (*line == '\0' || *line == '#') return 0;
+    *key = line;
+    while (*line && *line != ' ' && *line != '\t') line++;
+    if (*line) *line++ = '\0';
+    while (*line == ' ' || *line == '\t') line++;
+    *value = line;
+    return 1;
+}
+
+int sidecar_read(sidecar *m, const char *image_path)
+{
+    char path[4200], line[4 * SIDECAR_TEXT + 8192], *key, *value;
+    int lineno = 0, err = 0;
+    FILE *f;
+    memset(m, 0, sizeof *m);
+    sidecar_path(path, sizeof path, image_path);
+    if (!(f = fopen(path, "r"))) {
+        if (errno == ENOENT) return -1;
+        fprintf(stderr, "%s: cannot read: %s\n", path, strerror(errno));
+        return 1;
+    }
+    while (!err && fgets(line, sizeof line, f)) {
+        lineno++;
+        if (!strchr(line, '\n') && !feof(f)) err = 2;
+        else if (split_line(line, &key, &value)) err = parse_line(m, key, value);
+    }
+    fclose(f);
+    if (err) fprintf(stderr, "%s:%d: %s\n", path, lineno, err == 2 ? "line too long" : "bad value");
+    else if (!m->kind[0] || !m->nranges) fprintf(stderr, "%s: no %s line: not a pathlab sidecar\n", path, m->kind[0] ? "samples" : "kind");
+    return err || !m->kind[0] || !m->nranges;
+}
+
+/* The ranges of a and b together, sorted; adjacent ranges joined. */
+int sidecar_add_ranges(sidecar *a, const sidecar *b, const char *a_name, const char *b_name)
+{
+    int64_t r[2 * SIDECAR_MAX_RANGES][2];
+    int n = 0, i = 0, k = 0;
+    while (i < a->nranges || k < b->nranges) {
+        const int64_t *next = (k >= b->nranges || (i < a->nranges && a->range[i][0] <= b->range[k][0])) ? a->range[i++] : b->range[k++];
+        if (n > 0 && next[0] < r[n - 1][1]) {
+            fprintf(stderr, "pathlab: %s and %s both have samples %" PRId64 ":%" PRId64 " (the same samples twice)\n",
+                    a_name, b_name, next[0], next[1] < r[n - 1][1] ? next[1] : r[n - 1][1]);
+            return 1;
+        }
+        if (n > 0 && next[0] == r[n - 1][1]) r[n - 1][1] = next[1];
+        else { r[n][0] = next[0]; r[n][1] = next[1]; n++; }
+    }
+    if (n > SIDECAR_MAX_RANGES) {
+        fprintf(stderr, "pathlab: %s and %s together have %d separate sample ranges (at most %d)\n", a_name, b_name, n, SIDECAR_MAX_RANGES);
+        return 1;
+    }
+    memcpy(a->range, r, sizeof(r[0]) * (size_t)n);
+    a->nranges = n;
+    return 0;
+}
+
+static int differ(const char *cmd, const char *a_name, const char *b_name, const char *key, const char *x, const char *y)
+{
+    fprintf(stderr, "pathlab %s: %s and %s differ in %s:\n  '%s'\n  '%s'\n", cmd, a_name, b_name, key, x, y);
+    return 1;
+}
+
+int sidecar_check_same(const sidecar *a, const sidecar *b, const char *cmd, const char *a_name, const char *b_name)
+{
+    char sa[32], sb[32];
+    if (strcmp(a->kind, b->kind)) return differ(cmd, a_name, b_name, "kind", a->kind, b->kind);
+    if (strcmp(a->layer, b->layer)) return differ(cmd, a_name, b_name, "layer", a->layer, b->layer);
+    if (strcmp(a->scene_id, b->scene_id)) return differ(cmd, a_name, b_name, "scene (its triangles or materials)", a->scene, b->scene);
+    if (strcmp(a->flags, b->flags)) return differ(cmd, a_name, b_name, "flags", a->flags, b->flags);
+    if (strcmp(a->camera, b->camera)) return differ(cmd, a_name, b_name, "camera", a->camera, b->camera);
+    snprintf(sa, sizeof sa, "%" PRIu64, a->seed);
+    snprintf(sb, sizeof sb, "%" PRIu64, b->seed);
+    if (a->seed != b->seed) return differ(cmd, a_name, b_name, "seed (pieces of one render share it; their sample ranges differ)", sa, sb);
+    return 0;
+}

@@ -1,0 +1,48 @@
+/* sidecar.h — what made an image, in a small text file beside it (FILE.pfm -> FILE.pfm.meta), since
+ * PFM has no metadata: the sample indices rendered, seed, scene, flags, camera, revision. pathlab
+ * merge and render --resume read it to refuse pieces that are not of the same render; grade prints it.
+ * One "key value" per line, '#' starts a comment, unknown keys are skipped (later versions may add some):
+ *   kind mean | variance       samples 0:384[,1000:1200]     seed 1         layer total | L3
+ *   scene PATH   scene-id ID   flags ...   camera ...   variance FILE   layers A:B   revision R */
+#ifndef PATHLAB_SIDECAR_H
+#define PATHLAB_SIDECAR_H
+#include <stddef.h>
+#include <stdint.h>
+
+#define SIDECAR_MAX_RANGES 256
+#define SIDECAR_TEXT 1024
+
+typedef struct {
+    char kind[16];                 /* "mean", or "variance" (of the mean) */
+    char layer[16];                /* "total", or "L3" for a --split layer */
+    int nranges;                   /* sample indices [range[i][0], range[i][1]), sorted, disjoint, not touching */
+    int64_t range[SIDECAR_MAX_RANGES][2];
+    uint64_t seed;
+    char scene[SIDECAR_TEXT];      /* the scene as given (for people; merge compares scene_id) */
+    char scene_id[40];             /* a fingerprint of the triangles and materials rendered */
+    char flags[SIDECAR_TEXT];      /* every flag that changes the samples, in one canonical form */
+    char camera[SIDECAR_TEXT];     /* the camera used, exactly (%.9g) */
+    char variance[SIDECAR_TEXT];   /* the variance image's file name, in the same folder ("" if none) */
+    char layers[32];               /* "A:B" when --split wrote FILE_LA.pfm .. FILE_LB.pfm ("" if none) */
+    char revision[64];             /* pathlab's version (git describe) */
+    char stopped[32];              /* "SIGINT", "SIGTERM" or "time" when stopped before the samples asked */
+} sidecar;
+
+/* FILE -> FILE.meta */
+void sidecar_path(char *dst, size_t cap, const char *image_path);
+/* Writes the sidecar of image_path (atomically); 0, or 1 after printing why. */
+int sidecar_write(const sidecar *m, const char *image_path);
+/* Reads the sidecar of image_path. 0; -1 if it does not exist (nothing printed); 1 after printing
+ * "FILE.meta:LINE: why" for a malformed one. */
+int sidecar_read(sidecar *m, const char *image_path);
+/* The number of samples of the ranges. */
+int64_t sidecar_spp(const sidecar *m);
+/* "0:384,1000:1200" */
+void sidecar_ranges_text(const sidecar *m, char *dst, size_t cap);
+/* Adds the ranges of b to a, sorted and joined; 0, or 1 after printing why: a range of b overlaps
+ * one of a (the same samples twice), or there are too many ranges. */
+int sidecar_add_ranges(sidecar *a, const sidecar *b, const char *a_name, const char *b_name);
+/* Compares what must match for two renders to be merged (scene, flags, camera, seed); 0 if they
+ * match, else 1 after printing "pathlab CMD: A and B differ in KEY: 'x' vs 'y'". */
+int sidecar_check_same(const sidecar *a, const sidecar *b, const char *cmd, const char *a_name, const char *b_name);
+#endif

@@ -1,0 +1,125 @@
+#!/usr/bin/env bash
+# Renders in passes, addressable samples, merge and resume (issue 11):
+#  - a render stopped by SIGINT or SIGTERM writes the uniform-spp image it reached, byte for byte
+#    the --spp N render of the spp it says; a second signal writes nothing and leaves no temporary file;
+#  - --time writes as many spp as fit, byte for byte the --spp N render;
+#  - --samples pieces, merged, equal the whole render within float rounding (means: 4 ulp, variances
+#    1e-4 relative: they are recombined from float means), whatever the order of the pieces;
+#  - --resume equals the longer render within the same rounding;
+#  - merge and --resume refuse what is not the same render, naming the difference.
+. "$(dirname "$0")/lib.sh"
+R="$PATHLAB render scenes/cornell.obj --quiet --size 48x32"
+MEAN_TOL=5e-7   # 4 ulp of a float (2^-21 relative): the sums are in double, only the stored means round
+VAR_TOL=1e-4    # variances of the means are rebuilt from float means and variances: a little more rounding
+
+close() {   # close NAME A B TOL
+    local msg
+    msg=$("$PFMTOOL" close "$2" "$3" "$4"); local rc=$?
+    if [ $rc -eq 0 ]; then pass "$1 ($msg)"; else fail "$1: $msg (tolerance $4), status $rc"; fi
+}
+same_bytes() {   # same_bytes NAME A B
+    if cmp -s "$2" "$3"; then pass "$1"; else fail "$1: $2 and $3 differ"; fi
+}
+meta() { sed -n "s/^$2 //p" "$1.meta"; }   # meta FILE KEY
+
+# 1. a stopped render: SIGINT then SIGTERM, during a render far longer than the wait
+for sig in INT TERM; do
+    $PATHLAB render scenes/cornell.obj --size 96x64 --spp 1000000 --threads 2 -o "$TMP/stop.pfm" --variance "$TMP/stop_var.pfm" \
+        2> "$TMP/err" & pid=$!
+    sleep 1.5; kill -$sig $pid; wait $pid; rc=$?
+    want=$([ $sig = INT ] && echo 130 || echo 143)
+    if [ $rc -eq $want ]; then pass "SIG$sig: exit status $rc (128 + signal), after writing"; else fail "SIG$sig: exit status $rc, expected $want"; fi
+    expect_err "SIG$sig: says where it stopped and what it wrote" "interrupted \(SIG$sig\) at [0-9]+ of 1000000 spp.*written .*stop.pfm and .*stop_var.pfm"
+    n=$(meta "$TMP/stop.pfm" spp)
+    if [ "$(meta "$TMP/stop.pfm" samples)" = "0:$n" ] && [ "$(meta "$TMP/stop.pfm" stopped)" = "SIG$sig" ] && [ "$n" -ge 1 ]; then
+        pass "SIG$sig: the sidecar says samples 0:$n, stopped SIG$sig"
+    else fail "SIG$sig: sidecar: $(cat "$TMP/stop.pfm.meta" | tr '\n' ' ')"; fi
+    $PATHLAB render scenes/cornell.obj --quiet --size 96x64 --spp "$n" --threads 1 -o "$TMP/full.pfm" --variance "$TMP/full_var.pfm"
+    same_bytes "SIG$sig at $n spp: the image is the --spp $n render, byte for byte (a uniform-spp image)" "$TMP/stop.pfm" "$TMP/full.pfm"
+    same_bytes "SIG$sig at $n spp: the variance too" "$TMP/stop_var.pfm" "$TMP/full_var.pfm"
+done
+
+# 2. two signals: stop at once, nothing written, no temporary file
+rm -f "$TMP"/two*
+$PATHLAB render scenes/cornell.obj --size 96x64 --spp 1000000 -o "$TMP/two.pfm" --variance "$TMP/two_var.pfm" 2> "$TMP/err" & pid=$!
+sleep 1; kill -INT $pid; sleep 0.05; kill -INT $pid; wait $pid; rc=$?
+if [ $rc -eq 130 ]; then pass "two SIGINTs: exit status 130"; else fail "two SIGINTs: exit status $rc"; fi
+if [ -z "$(ls "$TMP" | grep '^two')" ]; then pass "two SIGINTs: no image, no sidecar, no temporary file"
+else fail "two SIGINTs left: $(ls "$TMP" | grep '^two' | tr '\n' ' ')"; fi
+
+# 3. --time: as many passes as fit, and the image is the --spp N render
+$PATHLAB render scenes/cornell.obj --size 96x64 --time 1 -o "$TMP/t.pfm" 2> "$TMP/err"
+n=$(meta "$TMP/t.pfm" spp)
+$PATHLAB render scenes/cornell.obj --quiet --size 96x64 --spp "$n" -o "$TMP/tn.pfm"
+same_bytes "--time 1 reached $n spp: the image is the --spp $n render" "$TMP/t.pfm" "$TMP/tn.pfm"
+$PATHLAB render scenes/cornell.obj --size 96x64 --time 0.5 --spp 1000000 -o "$TMP/t.pfm" 2> "$TMP/err"
+expect_err "--time with --spp: says how many of the spp fitted" "--time 0.5 s: [0-9]+ of 1000000 spp fitted"
+[ "$(meta "$TMP/t.pfm" stopped)" = time ] && pass "--time: the sidecar says stopped time" || fail "--time: no 'stopped time' in the sidecar"
+
+# 4. --samples pieces merged = the whole render (image, variance, --split layers), in any order
+F="--bounces 0:3 --split --seed 5"
+$R $F --spp 24 -o "$TMP/whole.pfm" --variance "$TMP/whole_var.pfm"
+$R $F --samples 0:7 -o "$TMP/a.pfm" --variance "$TMP/a_var.pfm"
+$R $F --samples 7:8 -o "$TMP/b.pfm" --variance "$TMP/b_var.pfm"
+mkdir -p "$TMP/far"; $R $F --samples 8:24 -o "$TMP/far/c.pfm" --variance "$TMP/far/c_var.pfm"
+expect_status "merge of 3 pieces (one of 1 sample, one in another folder)" 0 $PATHLAB merge "$TMP/m.pfm" "$TMP/far/c.pfm" "$TMP/a.pfm" "$TMP/b.pfm" --variance "$TMP/m_var.pfm"
+close "merged = whole: image" "$TMP/m.pfm" "$TMP/whole.pfm" $MEAN_TOL
+close "merged = whole: variance of the mean" "$TMP/m_var.pfm" "$TMP/whole_var.pfm" $VAR_TOL
+close "merged = whole: layer L0" "$TMP/m_L0.pfm" "$TMP/whole_L0.pfm" $MEAN_TOL
+close "merged = whole: layer L3" "$TMP/m_L3.pfm" "$TMP/whole_L3.pfm" $MEAN_TOL
+close "merged = whole: variance of layer L2" "$TMP/m_var_L2.pfm" "$TMP/whole_var_L2.pfm" $VAR_TOL
+[ "$(meta "$TMP/m.pfm" samples)" = "0:24" ] && pass "merged sidecar: samples 0:24" || fail "merged sidecar: samples $(meta "$TMP/m.pfm" samples)"
+$PATHLAB merge "$TMP/m2.pfm" "$TMP/a.pfm" "$TMP/b.pfm" "$TMP/far/c.pfm" --variance "$TMP/m2_var.pfm" 2> /dev/null
+same_bytes "the order of the pieces does not matter (byte for byte)" "$TMP/m.pfm" "$TMP/m2.pfm"
+# the merge is not a copy of one piece: each piece alone is far from the whole
+if ! "$PFMTOOL" close "$TMP/a.pfm" "$TMP/whole.pfm" 1e-3 > /dev/null; then pass "one piece alone is not the whole (the test can fail)"
+else fail "a piece of 7 samples equals the 24-sample render"; fi
+expect_status "pieces with a gap merge (samples 0:7,8:24)" 0 $PATHLAB merge "$TMP/g.pfm" "$TMP/a.pfm" "$TMP/far/c.pfm"
+[ "$(meta "$TMP/g.pfm" samples)" = "0:7,8:24" ] && pass "the gap is in the sidecar: 0:7,8:24" || fail "gap sidecar: $(meta "$TMP/g.pfm" samples)"
+
+# 5. merge refuses what is not one render, and says why
+$R $F --samples 5:10 -o "$TMP/over.pfm"
+expect_status "merge: overlapping samples refused" 2 $PATHLAB merge "$TMP/x.pfm" "$TMP/a.pfm" "$TMP/over.pfm"
+expect_err "merge: names the samples taken twice" "both have samples 5:7"
+$R --bounces 0:3 --split --seed 6 --samples 7:8 -o "$TMP/seed.pfm"
+expect_status "merge: another seed refused" 2 $PATHLAB merge "$TMP/x.pfm" "$TMP/a.pfm" "$TMP/seed.pfm"
+expect_err "merge: names the seed" "differ in seed"
+$R $F --rr off --samples 7:8 -o "$TMP/rr.pfm"
+expect_status "merge: other flags refused" 2 $PATHLAB merge "$TMP/x.pfm" "$TMP/a.pfm" "$TMP/rr.pfm"
+expect_err "merge: names the flags" "differ in flags"
+$R $F --fov 30 --samples 7:8 -o "$TMP/cam.pfm"
+expect_status "merge: another camera refused" 2 $PATHLAB merge "$TMP/x.pfm" "$TMP/a.pfm" "$TMP/cam.pfm"
+expect_err "merge: names the camera" "differ in camera"
+sed 's/^Kd .*/Kd 0.9 0.1 0.1/' scenes/cornell.mtl > "$TMP/cornell.mtl"; cp scenes/cornell.obj scenes/cornell.view "$TMP"/ 2>/dev/null
+$PATHLAB render "$TMP/cornell.obj" --quiet --size 48x32 $F --samples 7:8 -o "$TMP/scene.pfm"
+expect_status "merge: another scene (a material changed) refused" 2 $PATHLAB merge "$TMP/x.pfm" "$TMP/a.pfm" "$TMP/scene.pfm"
+expect_err "merge: names the scene" "differ in scene"
+cp "$TMP/b.pfm" "$TMP/nometa.pfm"
+expect_status "merge: an image without sidecar refused" 2 $PATHLAB merge "$TMP/x.pfm" "$TMP/a.pfm" "$TMP/nometa.pfm"
+expect_err "merge: says the sidecar is missing" "nometa.pfm has no sidecar"
+$R $F --samples 7:8 -o "$TMP/novar.pfm"
+expect_status "merge --variance: a piece without variance refused" 2 $PATHLAB merge "$TMP/x.pfm" "$TMP/a.pfm" "$TMP/novar.pfm" --variance "$TMP/x_var.pfm"
+expect_err "merge --variance: names it" "novar.pfm was rendered without --variance"
+expect_no_file "merge: nothing written after a refusal" "$TMP/x.pfm" "$TMP/x_var.pfm"
+
+# 6. --resume: adds samples, and equals the longer render
+$R $F --spp 10 -o "$TMP/res.pfm" --variance "$TMP/res_var.pfm"
+expect_status "--resume from 10 to 24 spp" 0 $R $F --spp 24 -o "$TMP/res.pfm" --resume
+close "resumed = the 24-spp render: image" "$TMP/res.pfm" "$TMP/whole.pfm" $MEAN_TOL
+close "resumed = the 24-spp render: variance (kept up to date without naming it)" "$TMP/res_var.pfm" "$TMP/whole_var.pfm" $VAR_TOL
+close "resumed = the 24-spp render: layer L1" "$TMP/res_L1.pfm" "$TMP/whole_L1.pfm" $MEAN_TOL
+[ "$(meta "$TMP/res.pfm" samples)" = "0:24" ] && pass "resumed sidecar: samples 0:24" || fail "resumed sidecar: $(meta "$TMP/res.pfm" samples)"
+expect_status "--resume when the spp are there already: nothing to do" 0 $R $F --spp 24 -o "$TMP/res.pfm" --resume
+expect_err "--resume: says there is nothing to add" "already has 24 spp"
+expect_status "--resume with other flags refused" 2 $R $F --rr 5 --spp 30 -o "$TMP/res.pfm" --resume
+expect_err "--resume: names the flags" "differ in flags"
+expect_status "--resume of a missing image refused" 2 $R --spp 30 -o "$TMP/none.pfm" --resume
+expect_err "--resume: says there is nothing to resume" "does not exist"
+expect_status "--resume needs --spp or --time" 2 $R -o "$TMP/res.pfm" --resume
+expect_status "--samples with --spp refused" 2 $R --samples 0:4 --spp 4 -o "$TMP/x.pfm"
+expect_status "--samples 4:4 refused" 2 $R --samples 4:4 -o "$TMP/x.pfm"
+expect_err "--samples: says what it expects" "expects A:B"
+
+# 7. progress in a log (stderr not a terminal): a line every 5 s with the spp, the time and an ETA a person reads
+$PATHLAB render scenes/cornell.obj --size 96x64 --time 5.6 -o "$TMP/p.pfm" 2> "$TMP/err"
+expect_err "progress in a log: one line after 5 s, with spp, elapsed time and ETA" "^progress: +[0-9]+%  [0-9]+ spp, --time 5\.6s  5\.[0-9]s elapsed, ETA 0\.[0-9]s$"

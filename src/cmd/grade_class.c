@@ -1,5 +1,6 @@
 /* grade_class.c — a class's images read and checked, its lines and its report (see grade_class.h). */
 #include "cmd/grade_class.h"
+#include "cmd/sidecar.h"
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -81,7 +82,12 @@ static int wrong_size(grade_row *row, const image *img, const grade_refs *refs, 
     char cmd[8192] = "", fixed[640];   /* a command longer than 639 characters is cut */
     int w = img->w, h = img->h, rw = refs->ref->w, rh = refs->ref->h;
     int same_aspect = (long)w * rh == (long)h * rw;
-    if (manifest_command(cmd, sizeof cmd, ref_path)) resize_command(fixed, sizeof fixed, cmd, ref_path, w, h);
+    sidecar m;
+    char stem[4200];
+    snprintf(stem, sizeof stem, "%.*s-%dx%d", (int)(strlen(ref_path) > 4 ? strlen(ref_path) - 4 : strlen(ref_path)), ref_path, w, h);
+    if (sidecar_read(&m, ref_path) == 0 && sidecar_render_command(&m, w, h, stem, cmd, sizeof cmd) == 0)
+        snprintf(fixed, sizeof fixed, "%s", cmd);   /* the reference's own camera and flags, from its sidecar */
+    else if (manifest_command(cmd, sizeof cmd, ref_path)) resize_command(fixed, sizeof fixed, cmd, ref_path, w, h);
     else snprintf(fixed, sizeof fixed, "pathlab render SCENE.obj --size %dx%d --spp 4096 -o REF-%dx%d.pfm --variance REF-%dx%d_var.pfm "
                   "(the reference's scene, camera and flags)", w, h, w, h, w, h);
     snprintf(row->mistake, sizeof row->mistake, "the wrong image size: %dx%d, the reference is %dx%d (%s); a reference at this size: %s",

@@ -1,5 +1,6 @@
 /* grade_cli.c — the `pathlab grade` command: one image or a whole class against one reference.
- * Reads the reference and what lies beside it (REF_var.pfm, the layers REF_split_L0.pfm ...), grades
+ * Reads the reference and what lies beside it (REF_var.pfm, the layers REF_split_L0.pfm ..., or what
+ * its sidecar REF.pfm.meta names: render --variance and --split outputs), grades
  * each image (grade.c), names the likely mistake of those that fail (grade_diagnose.c), prints
  * the verdicts (grade_print.c) and writes the class report (grade_class.c). */
 #include <dirent.h>
@@ -13,6 +14,7 @@
 #include "cmd/grade_class.h"
 #include "cmd/grade_diagnose.h"
 #include "cmd/grade_print.h"
+#include "cmd/sidecar.h"
 
 #define GRADE_USAGE \
     "usage: pathlab grade IMAGE.pfm... | FOLDER --ref REF.pfm [--alpha A] [--report FILE.md|FILE.csv]\n" \
@@ -35,6 +37,8 @@ typedef struct {
     grade_refs refs;
     const char *var_path;
     char layer_prefix[4096];
+    sidecar meta;          /* REF.pfm.meta, when pathlab render wrote the reference */
+    int has_meta;
 } reference;
 
 /* --alpha A: a float strictly between 0 and 0.5 */
@@ -181,6 +185,10 @@ static int read_reference(reference *R, const grade_args *a)
     R->refs.ref = &R->ref;
     R->refs.channels = info.channels;
     snprintf(var_path, sizeof var_path, "%.*s_var.pfm", (int)stem, a->ref);
+    R->has_meta = sidecar_read(&R->meta, a->ref) == 0;
+    if (!a->var && !access_ok(var_path) && R->has_meta && R->meta.variance[0])   /* the variance its sidecar names */
+        snprintf(var_path, sizeof var_path, "%.*s%s", strchr(R->meta.variance, '/') || !strrchr(a->ref, '/') ? 0
+                 : (int)(strrchr(a->ref, '/') + 1 - a->ref), a->ref, R->meta.variance);
     R->var_path = a->var ? a->var : (access_ok(var_path) ? var_path : NULL);
     if (R->var_path) {
         if (img_read_pfm(&R->var, R->var_path)) return 2;
@@ -192,6 +200,11 @@ static int read_reference(reference *R, const grade_args *a)
     }
     if (a->layers) snprintf(R->layer_prefix, sizeof R->layer_prefix, "%s", a->layers);
     else snprintf(R->layer_prefix, sizeof R->layer_prefix, "%.*s_split", (int)stem, a->ref);
+    if (!a->layers && R->has_meta && !strncmp(R->meta.layers, "0:", 2)) {   /* render --split's own REF_L0.pfm ... */
+        char first[4200];
+        snprintf(first, sizeof first, "%s_L0.pfm", R->layer_prefix);
+        if (!access_ok(first)) snprintf(R->layer_prefix, sizeof R->layer_prefix, "%.*s", (int)stem, a->ref);
+    }
     for (k = 0; k < GRADE_MAX_LAYERS; k++) {
         char path[4200];
         snprintf(path, sizeof path, "%s_L%d.pfm", R->layer_prefix, k);
@@ -274,6 +287,16 @@ static int grade_one(grade_row *row, const reference *R, const grade_args *a, in
     return row->status;
 }
 
+/* What made the reference, from its sidecar: a teacher checks the spp, seed and camera at a glance. */
+static void print_provenance(const sidecar *m, const char *ref)
+{
+    char ranges[256];
+    sidecar_ranges_text(m, ranges, sizeof ranges);
+    printf("reference %s: %lld spp (samples %s), seed %llu, %s %s, camera %s, pathlab %s%s%s\n", ref,
+           (long long)sidecar_spp(m), ranges, (unsigned long long)m->seed, m->scene, m->flags, m->camera, m->revision,
+           m->stopped[0] ? ", stopped by " : "", m->stopped);
+}
+
 int grade_main(int argc, char **argv)
 {
     grade_args a;
@@ -286,6 +309,7 @@ int grade_main(int argc, char **argv)
     rows = calloc((size_t)a.nimages + 1, sizeof *rows);
     if (!rows || read_reference(&R, &a)) { free_reference(&R); free_args(&a); free(rows); return 2; }
     loud = a.nimages == 1 || a.details;
+    if (R.has_meta) print_provenance(&R.meta, a.ref);
     if (!loud) grade_print_class_header(&a.o, a.ref, a.nimages, &R.refs, R.var_path, R.layer_prefix);
     for (k = 0; k < a.nimages; k++) {
         grade_args one = a;

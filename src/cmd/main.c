@@ -13,6 +13,7 @@
 #include "cmd/help.h"
 #include "cmd/merge.h"
 #include "cmd/render_cmd.h"
+#include "cmd/version.h"
 
 static const char *USAGE =
     "pathlab — a teaching path tracer (see README.md)\n"
@@ -32,7 +33,7 @@ static const char *USAGE =
     MERGE_USAGE
     "  pathlab convert IN.pfm OUT.png|OUT.ppm|OUT.pfm [--exposure STOPS]   view a PFM (e.g. a --split layer);\n"
     "                prints the size and each channel's mean, min and max\n"
-    "  pathlab help\n"
+    "  pathlab help | --version\n"
     "\n"
     "render flags:\n"
     "  -o FILE              output image; .pfm (linear float), .ppm or .png (8-bit sRGB)\n"
@@ -99,6 +100,7 @@ int main(int argc, char **argv)
     if (argc < 2) { help(stderr); return 2; }
     for (c = COMMANDS; c->name; c++)
         if (!strcmp(argv[1], c->name)) return c->run(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "--version")) { printf("pathlab %s\n", pathlab_revision()); return 0; }
     if (!strcmp(argv[1], "help") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) { help(stdout); return 0; }
     fprintf(stderr, "pathlab: unknown command '%s'\n\n", argv[1]);
     help(stderr);

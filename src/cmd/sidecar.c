@@ -176,3 +176,15 @@ int sidecar_check_same(const sidecar *a, const sidecar *b, const char *cmd, cons
     if (a->seed != b->seed) return differ(cmd, a_name, b_name, "seed (pieces of one render share it; their sample ranges differ)", sa, sb);
     return 0;
 }
+
+int sidecar_render_command(const sidecar *m, int w, int h, const char *stem, char *out, size_t cap)
+{
+    char eye[128], target[128], up[128], fov[64];
+    int sw, sh;
+    if (sscanf(m->camera, "eye %127s target %127s up %127s fov %63s size %dx%d", eye, target, up, fov, &sw, &sh) != 6) return 1;
+    if (w <= 0 || h <= 0) w = sw, h = sh;
+    snprintf(out, cap, "pathlab render %s --eye %s --target %s --up %s --fov %s --size %dx%d %s --seed %llu --spp %lld "
+             "-o %s.pfm --variance %s_var.pfm", m->scene, eye, target, up, fov, w, h, m->flags, (unsigned long long)m->seed,
+             (long long)sidecar_spp(m), stem, stem);
+    return 0;
+}

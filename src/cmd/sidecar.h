@@ -45,4 +45,7 @@ int sidecar_add_ranges(sidecar *a, const sidecar *b, const char *a_name, const c
 /* Compares what must match for two renders to be merged (scene, flags, camera, seed); 0 if they
  * match, else 1 after printing "pathlab CMD: A and B differ in KEY: 'x' vs 'y'". */
 int sidecar_check_same(const sidecar *a, const sidecar *b, const char *cmd, const char *a_name, const char *b_name);
+/* The pathlab render command that makes this render again at w x h (0: its own size), with
+ * -o STEM.pfm --variance STEM_var.pfm and as many spp as it holds. 0, or 1 if the camera line is unreadable. */
+int sidecar_render_command(const sidecar *m, int w, int h, const char *stem, char *out, size_t cap);
 #endif

@@ -71,3 +71,13 @@ mutant bvh-first-hit src/geometry/bvh.c \
 mutant bvh-child-slot src/geometry/bvh.c \
     '/^static inline unsigned node_hits/,/^}/s/i < BVH_WIDTH; i++/i < BVH_WIDTH - 1; i++/' \
     test_bvh PATHLAB_TEST_QUICK=1 'box test loop off by one: the last child of each node is never entered'
+# ---- samples and merges (references for any view, docs/references.md) ----
+mutant sample-stream-no-index src/math/rng.h \
+    's/splitmix64_mix(seed) ^ pixel) ^ i)/splitmix64_mix(seed) ^ pixel))/' \
+    test_passes - 'every sample of a pixel draws the same numbers: the stream ignores the sample index'
+mutant merge-unweighted src/stats/combine.c \
+    's/c->mean\[i\] += delta \* (n \/ total);/c->mean[i] += delta * 0.5;/' \
+    test_passes - 'pieces averaged with equal weights, whatever their numbers of samples'
+mutant merge-var-within-only src/stats/combine.c \
+    's/c->m2\[i\] += m2b + delta \* delta \* (c->n \* n \/ total);/c->m2[i] += m2b;/' \
+    test_passes - 'merged variance adds the spread inside each piece but forgets the spread between their means'

@@ -1,7 +1,10 @@
-/* render_args.c — the flags of pathlab render as a cli_flag table. Most are plain kinds; the
- * custom ones store into an enum or a pair of integrator fields. */
+/* render_args.c — the flags of pathlab render as a cli_flag table (most are plain kinds; the
+ * custom ones store into an enum or a pair of fields, or check a range or a conflict), and the
+ * camera they describe: a view file, a gKit orbiter file or framing, then the camera flags. */
 #include "cmd/render_args.h"
+#include "scene/orbiter.h"
 #include "sys/parallel.h"
+#include "util/textfile.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -108,6 +111,31 @@ static int parse_direct(void *ctx, const char *flag, const char *v)
     return 0;
 }
 
+/* --orbiter FILE and --view FILE: two sources of the same view, so one only */
+static int parse_camera_file(void *ctx, const char *flag, const char *v)
+{
+    render_args *a = ctx;
+    int orb = !strcmp(flag, "--orbiter");
+    if (orb ? a->view_file != NULL : a->orbiter != NULL) {
+        fprintf(stderr, "pathlab %s: --orbiter and --view both give the camera: use one of them\n", a->cmd);
+        return 1;
+    }
+    *(orb ? &a->orbiter : &a->view_file) = v;
+    return 0;
+}
+
+/* --pixel-offset O: pixel (x, y) centred at (x + O, y + O), O in [0, 1) */
+static int parse_pixel_offset(void *ctx, const char *flag, const char *v)
+{
+    render_args *a = ctx;
+    char *end;
+    double o = strtod(v, &end);
+    if (end == v || *end || !(o >= 0.0 && o < 1.0))
+        return cli_fail(a->cmd, flag, "a number from 0 (gKit's Point(x, y, 0)) up to but not including 1; 0.5 is the pixel centre", v);
+    a->ro.pixel_offset = (float)o;
+    return 0;
+}
+
 void render_flag_table(render_args *a, cli_flag t[RENDER_NFLAGS])
 {
     const cli_flag flags[RENDER_NFLAGS] = {
@@ -134,6 +162,10 @@ void render_flag_table(render_args *a, cli_flag t[RENDER_NFLAGS])
         {"--dir", CLI_CUSTOM, NULL, 0, 0, NULL, parse_dir, NULL},
         {"--direct", CLI_CUSTOM, NULL, 0, 0, NULL, parse_direct, NULL},
         {"--rr", CLI_CUSTOM, NULL, 0, 0, NULL, parse_rr, NULL},
+        {"--orbiter", CLI_CUSTOM, NULL, 0, 0, NULL, parse_camera_file, NULL},
+        {"--view", CLI_CUSTOM, NULL, 0, 0, NULL, parse_camera_file, NULL},
+        {"--write-view", CLI_STRING, &a->write_view, 0, 0, NULL, NULL, NULL},
+        {"--pixel-offset", CLI_CUSTOM, NULL, 0, 0, NULL, parse_pixel_offset, NULL},
         {NULL, CLI_SWITCH, NULL, 0, 0, NULL, NULL, NULL}};
     memcpy(t, flags, sizeof flags);
 }
@@ -172,17 +204,59 @@ void render_args_init(render_args *a)
     a->ro.io.rr_depth = 3;
 }
 
-int render_make_camera(render_args *a, const scene *s, camera *cam)
+/* --orbiter FILE into a->vw; 0, or 1 after printing why. An old file without an f line leaves fov
+ * and size to the flags or the defaults, which may not be what the student's program used. */
+static int read_orbiter(render_args *a)
+{
+    orbiter o;
+    if (orbiter_read(&o, a->orbiter)) return 1;
+    orbiter_view(&o, &a->vw);
+    if (!o.has_f && !(a->fov && a->size))
+        fprintf(stderr, "pathlab %s: note: %s has no 'f fov width height' line (an older gKit file): rendering %dx%d "
+                        "with a %g degree vertical fov; give the student's with --size and --fov\n",
+                a->cmd, a->orbiter, a->size ? a->flags.width : a->vw.width, a->size ? a->flags.height : a->vw.height,
+                a->fov ? a->flags.fov : a->vw.fov);
+    return 0;
+}
+
+/* The view before the camera flags: --orbiter, --view, or SCENE.view if it exists; 0 or 1 after printing why. */
+static int base_view(render_args *a)
 {
     char path[4096];
     size_t n = strlen(a->scene) - strlen(img_extension(a->scene));
-    vec3 lo, hi;
+    int rc;
     view_defaults(&a->vw);
+    if (a->orbiter) return read_orbiter(a);
+    if (a->view_file) {
+        rc = view_read(&a->vw, a->view_file);
+        if (rc < 0) fprintf(stderr, "pathlab %s: --view %s: no such file\n", a->cmd, a->view_file);
+        return rc != 0;
+    }
     if (n + 6 < sizeof path) {
         memcpy(path, a->scene, n);
         strcpy(path + n, ".view");
         if (view_read(&a->vw, path) > 0) return 1;
     }
+    return 0;
+}
+
+/* --write-view FILE: the view the camera was made of, written atomically: a half-written file would
+ * read back as another camera without a word */
+static int write_view(const render_args *a)
+{
+    char tmp[4200];
+    FILE *f = textfile_open(a->write_view, tmp, sizeof tmp);
+    if (!f) return 1;
+    fprintf(f, "# the camera of pathlab %s %s%s%s: read it back with --view\n", a->cmd, a->scene,
+            a->orbiter ? " --orbiter " : "", a->orbiter ? a->orbiter : "");
+    view_print(f, &a->vw);
+    return textfile_close(f, tmp, a->write_view);
+}
+
+int render_make_camera(render_args *a, const scene *s, camera *cam)
+{
+    vec3 lo, hi;
+    if (base_view(a)) return 1;
     if (a->eye) { a->vw.eye = a->flags.eye; a->vw.has_eye = 1; }
     if (a->target) { a->vw.target = a->flags.target; a->vw.has_target = 1; }
     if (a->up) a->vw.up = a->flags.up;
@@ -190,5 +264,6 @@ int render_make_camera(render_args *a, const scene *s, camera *cam)
     if (a->size) { a->vw.width = a->flags.width; a->vw.height = a->flags.height; }
     mesh_bounds(&s->m, &lo, &hi);
     view_frame_bounds(&a->vw, lo, hi);
-    return camera_init(cam, &a->vw);
+    if (camera_init(cam, &a->vw)) return 1;
+    return a->write_view ? write_view(a) : 0;
 }

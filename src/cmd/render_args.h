@@ -12,10 +12,11 @@ typedef struct {
     view vw, flags;                  /* flags: values given on the command line */
     int eye, target, up, fov, size;  /* which camera flags were given */
     int spp_given, samples_given, resume;
+    const char *orbiter, *view_file, *write_view;  /* --orbiter, --view, --write-view (NULL if not given) */
     render_opts ro;
 } render_args;
 
-#define RENDER_NFLAGS 24   /* the flags of render_flag_table, and its closing NULL entry */
+#define RENDER_NFLAGS 28   /* the flags of render_flag_table, and its closing NULL entry */
 
 /* The defaults of pathlab render (16 spp, seed 1, every core, area, brdf, mis-power, 0:inf, rr 3). */
 void render_args_init(render_args *a);
@@ -24,6 +25,8 @@ void render_flag_table(render_args *a, cli_flag t[RENDER_NFLAGS]);
 /* One argument argv[*i]: a flag of the table (advancing *i past its value), or a word, which is the
  * scene. 0 if understood and valid, else 1 after printing why. */
 int render_parse_flag(render_args *a, int argc, char **argv, int *i);
-/* The view: SCENE.view if it exists, then the camera flags on top, then framing for what is left. */
+/* The view: --orbiter FILE, --view FILE or else SCENE.view if it exists, then the camera flags on top,
+ * then framing for what is left; the camera made of it, written to --write-view if given.
+ * 0, or 1 after printing why. */
 int render_make_camera(render_args *a, const scene *s, camera *cam);
 #endif

@@ -76,6 +76,15 @@ int view_read(view *vw, const char *path)
     return 0;
 }
 
+void view_print(FILE *f, const view *vw)
+{
+    fprintf(f, "eye %.9g %.9g %.9g\n", vw->eye.x, vw->eye.y, vw->eye.z);
+    fprintf(f, "target %.9g %.9g %.9g\n", vw->target.x, vw->target.y, vw->target.z);
+    fprintf(f, "up %.9g %.9g %.9g\n", vw->up.x, vw->up.y, vw->up.z);
+    fprintf(f, "fov %.9g\n", vw->fov);
+    fprintf(f, "size %d %d\n", vw->width, vw->height);
+}
+
 void view_frame_bounds(view *vw, vec3 lo, vec3 hi)
 {
     vec3 c = v3_scale(v3_add(lo, hi), 0.5f);

@@ -4,6 +4,7 @@
  * Missing keys keep their defaults; without eye and target the camera frames the scene bounds. */
 #ifndef PATHLAB_CAMERA_H
 #define PATHLAB_CAMERA_H
+#include <stdio.h>
 #include "geometry/ray.h"
 
 typedef struct {
@@ -23,6 +24,8 @@ void view_defaults(view *vw);
 /* Reads a view file into vw. Returns 0 on success, -1 if the file does not exist (not an error),
  * 1 after printing "file:line: message" for a malformed file. */
 int view_read(view *vw, const char *path);
+/* Prints vw as a view file (every key, %.9g: view_read gives back the same floats, bit for bit). */
+void view_print(FILE *f, const view *vw);
 /* Fills in eye and target from the scene bounds where no file or flag gave them. */
 void view_frame_bounds(view *vw, vec3 lo, vec3 hi);
 /* Checks a view and makes the camera; 1 after printing an error (e.g. eye == target). */

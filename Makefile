@@ -105,6 +105,17 @@ bench-portable:
 grade-calibration: $(PROG)
 	PATHLAB=./$(PROG) tests/grade_calibration.sh $(CALIB_OUT)
 
+# Past one machine (docs/distributed.md). `make test-parallel`: the GNU parallel recipe
+# (scripts/parallel-render.sh), 4 pieces merged against one render; also part of `make test`
+# (tests/test_parallel_recipe.sh). `make test-slurm`: starts a one-node Slurm here (installs Debian's
+# slurm-wlm and munge if missing), runs the job array of scripts/slurm/ on the Cornell box, checks the
+# merged image against one render, stops Slurm; about a minute (tests/slurm/run.sh).
+test-parallel: $(PROG) test-deps
+	BUILD=$(BUILD) PATHLAB=./$(PROG) tests/run.sh test_parallel_recipe
+
+test-slurm: $(PROG)
+	PATHLAB=./$(PROG) tests/slurm/run.sh
+
 # The benchmark's error, slopes, ranking and SVG (bench/plot.c), linked like the tests.
 $(BUILD)/bench-plot: bench/plot.c $(LIB_OBJ)
 	$(CC) $(CFLAGS) $(DEPFLAGS) -o $@ bench/plot.c $(LIB_OBJ) $(LDLIBS)
@@ -117,4 +128,4 @@ mutants:
 clean:
 	rm -rf build build-san build-native pathlab
 
-.PHONY: all run test test-deps stress refs bench bench-native bench-portable grade-calibration clean mutants
+.PHONY: all run test test-deps stress refs bench bench-native bench-portable grade-calibration clean mutants test-parallel test-slurm

@@ -32,10 +32,10 @@ static void variance_name(char *dst, size_t cap, const char *image_path, const c
     if (snprintf(dst, cap, "%s", strcmp(a, b) ? var_path : base_name(var_path)) >= (int)cap) dst[0] = '\0';   /* too long to name */
 }
 
-/* One image file and its sidecar. */
+/* One image file and, for a PFM, its sidecar (an 8-bit PPM or PNG is for viewing: nothing reads it back). */
 static int write_one(const char *path, const image *im, float exposure, const sidecar *meta)
 {
-    return img_write(im, path, exposure) || sidecar_write(meta, path);
+    return img_write(im, path, exposure) || (img_format_of(path) == IMG_PFM && sidecar_write(meta, path));
 }
 
 int render_files_write(const char *out, const char *var_out, float exposure, const sidecar *meta,

@@ -140,3 +140,10 @@ expect_status "grade: an image of another size fails" 1 $PATHLAB grade "$TMP/sma
 if grep -qE "a reference at this size: pathlab render scenes/cornell.obj --eye [-0-9.,e]+ --target [-0-9.,e]+ --up [-0-9.,e]+ --fov [0-9.]+ --size 40x30 --bounces 0:4 .* --seed 1 --spp 32 -o .*ref-40x30.pfm" "$TMP/out"
 then pass "grade: the command for a reference at 40x30, with the reference's camera, flags and seed"
 else fail "grade: no command from the sidecar: $(grep -o 'a reference at this size.*' "$TMP/out")"; fi
+
+# 9. the files of a render are renamed together: a variance that cannot be written leaves no new image
+$R --spp 2 -o "$TMP/set.pfm" --variance "$TMP/set_var.pfm"
+cp "$TMP/set.pfm" "$TMP/set_before.pfm"
+expect_status "a variance in a folder that does not exist: exit 1" 1 $R --spp 4 --seed 3 -o "$TMP/set.pfm" --variance "$TMP/nofolder/v.pfm"
+same_bytes "the image of the earlier render is left whole, not replaced by a half set" "$TMP/set.pfm" "$TMP/set_before.pfm"
+if [ -z "$(ls "$TMP" | grep -E '\.pending|\.tmp')" ]; then pass "no temporary file left"; else fail "left: $(ls "$TMP" | grep -E '\.pending|\.tmp')"; fi

@@ -51,11 +51,15 @@ zcheck_expect "furnace at 64 spp: --precision 1e-3 refuses a too coarse check" 3
 # effect is tested bounce by bounce in test_rr.sh; here it would only add variance).
 # Box furnace (Le = 1): MIS to 1e-3 with block and whole-image tests; light-only with the
 # whole-image test only (infinite variance, above); BRDF-only with uniform directions too, whose
-# variance grows as 2^k with the bounce (plain 3-sigma test). Sphere furnace (Le = 0.5): all three to 1e-3.
+# variance grows as 2^k with the bounce (plain 3-sigma test). Sphere furnace (Le = 0.5): MIS and BRDF-only
+# to 1e-3; light-only with the whole-image test only: a point s on the sphere seen from a point
+# next to it gives cos cos / d^2 without bound, an infinite variance again, so the precision its
+# sample variance promises changes from seed to seed (1.1e-3 at L6 with the per-sample streams of
+# issue 11, 1.7e-3 at L3 with 1024 spp).
 # BRDF sampling with cosine directions is exact in a diffuse furnace (f cos / pdf = a at every
 # bounce): zcheck's rounding floor is then the only tolerance.
 for mode in "furnace:1:mis-power:brdf:8:32:1024:1e-3" "furnace:1:light:cosine:0:16:1024:0" "furnace:1:brdf:cosine:0:16:256:1e-3" "furnace:1:brdf:uniform:0:16:1024:0" \
-            "sphere-furnace:0.5:mis-power:brdf:0:16:512:1e-3" "sphere-furnace:0.5:light:cosine:0:16:512:1e-3" "sphere-furnace:0.5:brdf:brdf:0:16:256:1e-3"; do
+            "sphere-furnace:0.5:mis-power:brdf:0:16:512:1e-3" "sphere-furnace:0.5:light:cosine:0:16:512:0" "sphere-furnace:0.5:brdf:brdf:0:16:256:1e-3"; do
     IFS=: read -r scene le direct dir block size spp prec <<< "$mode"
     $PATHLAB render "scenes/$scene.obj" --quiet --size "${size}x$size" --spp "$spp" --bounces 0:6 --split --rr off \
         --direct "$direct" --dir "$dir" -o "$TMP/fk.pfm" --variance "$TMP/fkv.pfm"

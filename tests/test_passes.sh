@@ -123,3 +123,27 @@ expect_err "--samples: says what it expects" "expects A:B"
 # 7. progress in a log (stderr not a terminal): a line every 5 s with the spp, the time and an ETA a person reads
 $PATHLAB render scenes/cornell.obj --size 96x64 --time 5.6 -o "$TMP/p.pfm" 2> "$TMP/err"
 expect_err "progress in a log: one line after 5 s, with spp, elapsed time and ETA" "^progress: +[0-9]+%  [0-9]+ spp, --time 5\.6s  5\.[0-9]s elapsed, ETA 0\.[0-9]s$"
+
+# 8. grade reads the reference's sidecar: provenance, the variance and --split layers it names, and
+# for an image of another size the command that renders the reference at that size
+mkdir -p "$TMP/g"
+$R --bounces 0:4 --split --spp 32 -o "$TMP/g/ref.pfm" --variance "$TMP/g/ref_variance.pfm"
+$R --bounces 0:1 --spp 8 --seed 9 -o "$TMP/direct.pfm"
+expect_status "grade against a render --split --variance reference: the direct-only image fails" 1 $PATHLAB grade "$TMP/direct.pfm" --ref "$TMP/g/ref.pfm"
+if grep -qE "^reference .*ref.pfm: 32 spp \(samples 0:32\), seed 1, scenes/cornell.obj --bounces 0:4" "$TMP/out"; then pass "grade prints the reference's provenance"
+else fail "grade: no provenance line: $(head -c 300 "$TMP/out")"; fi
+if grep -q "likely mistake: direct light only" "$TMP/out"; then pass "grade finds the layers ref_L0.pfm ... through the sidecar (names direct light only)"
+else fail "grade did not use the sidecar's layers: $(grep -i likely "$TMP/out")"; fi
+if grep -q "noise floor" "$TMP/out"; then pass "grade finds ref_variance.pfm through the sidecar"; else fail "grade did not find the variance the sidecar names"; fi
+$R --bounces 0:4 --spp 4 --size 40x30 -o "$TMP/small.pfm"
+expect_status "grade: an image of another size fails" 1 $PATHLAB grade "$TMP/small.pfm" --ref "$TMP/g/ref.pfm"
+if grep -qE "a reference at this size: pathlab render scenes/cornell.obj --eye [-0-9.,e]+ --target [-0-9.,e]+ --up [-0-9.,e]+ --fov [0-9.]+ --size 40x30 --bounces 0:4 .* --seed 1 --spp 32 -o .*ref-40x30.pfm" "$TMP/out"
+then pass "grade: the command for a reference at 40x30, with the reference's camera, flags and seed"
+else fail "grade: no command from the sidecar: $(grep -o 'a reference at this size.*' "$TMP/out")"; fi
+
+# 9. the files of a render are renamed together: a variance that cannot be written leaves no new image
+$R --spp 2 -o "$TMP/set.pfm" --variance "$TMP/set_var.pfm"
+cp "$TMP/set.pfm" "$TMP/set_before.pfm"
+expect_status "a variance in a folder that does not exist: exit 1" 1 $R --spp 4 --seed 3 -o "$TMP/set.pfm" --variance "$TMP/nofolder/v.pfm"
+same_bytes "the image of the earlier render is left whole, not replaced by a half set" "$TMP/set.pfm" "$TMP/set_before.pfm"
+if [ -z "$(ls "$TMP" | grep -E '\.pending|\.tmp')" ]; then pass "no temporary file left"; else fail "left: $(ls "$TMP" | grep -E '\.pending|\.tmp')"; fi

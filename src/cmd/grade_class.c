@@ -76,17 +76,26 @@ static void resize_command(char *out, size_t cap, const char *cmd, const char *r
     if (!sized && used < cap) snprintf(out + used, cap - used, " --size %dx%d", w, h);
 }
 
+/* The command of a w x h reference from the sidecar of ref_path (its own camera, flags and seed),
+ * cut to cap; 0 if it has none. */
+static int sidecar_command(char *out, size_t cap, const char *ref_path, int w, int h)
+{
+    sidecar m;
+    char stem[4200], cmd[8192];
+    size_t n = strlen(ref_path) > 4 ? strlen(ref_path) - 4 : strlen(ref_path);
+    snprintf(stem, sizeof stem, "%.*s-%dx%d", (int)n, ref_path, w, h);
+    if (sidecar_read(&m, ref_path) != 0 || sidecar_render_command(&m, w, h, stem, cmd, sizeof cmd)) return 0;
+    if (snprintf(out, cap, "%s", cmd) >= (int)cap) out[cap - 1] = '\0';
+    return 1;
+}
+
 /* A wrong size: a fail, with the command that renders a reference at the image's size. */
 static int wrong_size(grade_row *row, const image *img, const grade_refs *refs, const char *ref_path)
 {
     char cmd[8192] = "", fixed[640];   /* a command longer than 639 characters is cut */
     int w = img->w, h = img->h, rw = refs->ref->w, rh = refs->ref->h;
     int same_aspect = (long)w * rh == (long)h * rw;
-    sidecar m;
-    char stem[4200];
-    snprintf(stem, sizeof stem, "%.*s-%dx%d", (int)(strlen(ref_path) > 4 ? strlen(ref_path) - 4 : strlen(ref_path)), ref_path, w, h);
-    if (sidecar_read(&m, ref_path) == 0 && sidecar_render_command(&m, w, h, stem, cmd, sizeof cmd) == 0)
-        snprintf(fixed, sizeof fixed, "%s", cmd);   /* the reference's own camera and flags, from its sidecar */
+    if (sidecar_command(fixed, sizeof fixed, ref_path, w, h)) cmd[0] = '\0';
     else if (manifest_command(cmd, sizeof cmd, ref_path)) resize_command(fixed, sizeof fixed, cmd, ref_path, w, h);
     else snprintf(fixed, sizeof fixed, "pathlab render SCENE.obj --size %dx%d --spp 4096 -o REF-%dx%d.pfm --variance REF-%dx%d_var.pfm "
                   "(the reference's scene, camera and flags)", w, h, w, h, w, h);

@@ -175,7 +175,10 @@ static int render_and_write(render_args *a, const scene *s, const camera *cam)
     int rc = 0, err;
     memset(&prev, 0, sizeof prev);
     describe_render(a, s, &m);
-    if (a->resume && (rc = prepare_resume(a, &m, &prev, var_out, sizeof var_out)) != 0) return rc == 1 ? 0 : 2;
+    if (a->resume && (rc = prepare_resume(a, &m, &prev, var_out, sizeof var_out)) != 0) {
+        render_files_free(&prev);
+        return rc == 1 ? 0 : 2;
+    }
     interrupt_install();   /* from here, a first Ctrl-C stops after the pass and writes what it reached */
     if (render(s, cam, &a->ro, &r)) { render_files_free(&prev); return 1; }
     if (!a->ro.quiet) render_print_stats(&r, r.spp, cam->width * cam->height);

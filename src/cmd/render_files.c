@@ -1,8 +1,11 @@
 /* render_files.c — a render's files and their sidecars, written and read back. */
 #include "cmd/render_files.h"
+#include "sys/interrupt.h"
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 void render_files_layer_path(char *dst, size_t cap, const char *out, int k)
 {
@@ -32,10 +35,79 @@ static void variance_name(char *dst, size_t cap, const char *image_path, const c
     if (snprintf(dst, cap, "%s", strcmp(a, b) ? var_path : base_name(var_path)) >= (int)cap) dst[0] = '\0';   /* too long to name */
 }
 
-/* One image file and its sidecar. */
-static int write_one(const char *path, const image *im, float exposure, const sidecar *meta)
+/* The files of a render are written under temporary names (FILE.pending), then renamed together
+ * with signals held: a failed write or a second Ctrl-C leaves the previous set whole, never a
+ * new image beside an old variance. */
+typedef struct {
+    char **final, **pending;
+    int n, cap;
+} file_set;
+
+/* The temporary name of `final`, registered so that a second signal removes it; NULL if out of memory. */
+static const char *stage(file_set *fs, const char *final)
 {
-    return img_write(im, path, exposure) || sidecar_write(meta, path);
+    size_t len = strlen(final);
+    if (fs->n == fs->cap) {
+        int cap = fs->cap ? 2 * fs->cap : 16;
+        char **f = realloc(fs->final, sizeof *f * (size_t)cap), **p;
+        if (f) fs->final = f;
+        p = f ? realloc(fs->pending, sizeof *p * (size_t)cap) : NULL;
+        if (!p) { fprintf(stderr, "%s: out of memory\n", final); return NULL; }
+        fs->pending = p;
+        fs->cap = cap;
+    }
+    fs->final[fs->n] = malloc(len + 1);
+    fs->pending[fs->n] = malloc(len + sizeof ".pending");
+    if (!fs->final[fs->n] || !fs->pending[fs->n]) {
+        free(fs->final[fs->n]);
+        free(fs->pending[fs->n]);
+        fprintf(stderr, "%s: out of memory\n", final);
+        return NULL;
+    }
+    memcpy(fs->final[fs->n], final, len + 1);
+    memcpy(fs->pending[fs->n], final, len);
+    memcpy(fs->pending[fs->n] + len, ".pending", sizeof ".pending");
+    interrupt_hold();
+    interrupt_temp_add(fs->pending[fs->n]);
+    interrupt_release();
+    return fs->pending[fs->n++];
+}
+
+/* Renames every staged file over its final name (commit), or removes them all; frees the set. */
+static int finish(file_set *fs, int commit)
+{
+    int i, err = 0;
+    interrupt_hold();
+    for (i = 0; i < fs->n; i++) {
+        if (commit && !err && rename(fs->pending[i], fs->final[i]) != 0) {
+            fprintf(stderr, "%s: cannot write: %s\n", fs->final[i], strerror(errno));
+            err = 1;
+        }
+        if (!commit || err) unlink(fs->pending[i]);
+        interrupt_temp_remove(fs->pending[i]);
+    }
+    interrupt_release();
+    for (i = 0; i < fs->n; i++) {
+        free(fs->final[i]);
+        free(fs->pending[i]);
+    }
+    free(fs->final);
+    free(fs->pending);
+    return err;
+}
+
+/* One image file and, for a PFM, its sidecar (an 8-bit PPM or PNG is for viewing: nothing reads it back). */
+static int write_one(file_set *fs, const char *path, const image *im, float exposure, const sidecar *meta)
+{
+    char meta_path[4200];
+    const char *tmp = stage(fs, path), *mtmp;
+    img_format fmt = img_format_of(path);
+    int err = !tmp || (fmt == IMG_PFM ? img_write_pfm(im, tmp) : fmt == IMG_PPM ? img_write_ppm(im, tmp, exposure)
+                                                                               : img_write_png(im, tmp, exposure));
+    if (err || fmt != IMG_PFM) return err;
+    sidecar_path(meta_path, sizeof meta_path, path);
+    mtmp = stage(fs, meta_path);
+    return !mtmp || sidecar_write_to(meta, path, mtmp);
 }
 
 int render_files_write(const char *out, const char *var_out, float exposure, const sidecar *meta,
@@ -43,6 +115,7 @@ int render_files_write(const char *out, const char *var_out, float exposure, con
 {
     char path[4096], vpath[4096];
     sidecar m = *meta;
+    file_set fs = {NULL, NULL, 0, 0};
     int i, err = 0;
     for (i = 0; i < nlayers && !err; i++) {
         if (i == 0) snprintf(path, sizeof path, "%s", out), snprintf(m.layer, sizeof m.layer, "total");
@@ -54,14 +127,14 @@ int render_files_write(const char *out, const char *var_out, float exposure, con
         else m.variance[0] = '\0';
         if (i > 0) m.layers[0] = '\0';   /* only the total lists the layers */
         else if (nlayers > 1) snprintf(m.layers, sizeof m.layers, "%d:%d", bmin, bmin + nlayers - 2);
-        err = write_one(path, &mean[i], exposure, &m);
+        err = write_one(&fs, path, &mean[i], exposure, &m);
         if (!err && var_out) {
             strcpy(m.kind, "variance");
             m.variance[0] = m.layers[0] = '\0';
-            err = write_one(vpath, &var[i], 0.0f, &m);
+            err = write_one(&fs, vpath, &var[i], 0.0f, &m);
         }
     }
-    return err;
+    return finish(&fs, !err) || err;
 }
 
 /* The variance file named by the sidecar of image_path: beside the image if a bare name. */

@@ -16,7 +16,9 @@ typedef struct {
 /* out.pfm, layer k -> out_Lk.pfm */
 void render_files_layer_path(char *dst, size_t cap, const char *out, int k);
 /* Writes mean[0..nlayers-1] to out (layer i >= 1 to out_L{bmin+i-1}) and, if var_out, var[] the same
- * way, each with its sidecar: meta with kind, layer and variance filled in per file. 0, or 1 after printing why. */
+ * way, each with its sidecar: meta with kind, layer and variance filled in per file. All files are
+ * written under temporary names first and renamed together: a failure or a second Ctrl-C leaves
+ * none of them (and the previous files, if any, whole). 0, or 1 after printing why. */
 int render_files_write(const char *out, const char *var_out, float exposure, const sidecar *meta,
                        const image *mean, const image *var, int nlayers, int bmin);
 /* Reads the render at path (a .pfm with its sidecar), its layers if its sidecar lists some, and its

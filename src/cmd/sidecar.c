@@ -28,9 +28,15 @@ void sidecar_ranges_text(const sidecar *m, char *dst, size_t cap)
 
 int sidecar_write(const sidecar *m, const char *image_path)
 {
-    char path[4200], tmp[4300], ranges[8192];
-    FILE *f;
+    char path[4200];
     sidecar_path(path, sizeof path, image_path);
+    return sidecar_write_to(m, image_path, path);
+}
+
+int sidecar_write_to(const sidecar *m, const char *image_path, const char *path)
+{
+    char tmp[4300], ranges[8192];
+    FILE *f;
     if (!(f = textfile_open(path, tmp, sizeof tmp))) return 1;
     sidecar_ranges_text(m, ranges, sizeof ranges);
     fprintf(f, "# pathlab: what made %s (read by pathlab merge, render --resume and grade)\n", image_path);

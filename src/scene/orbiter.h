@@ -3,7 +3,7 @@
  *   c cx cy cz (centre)  p px py (pan)  r rx ry (rotation, degrees)  s size [radius]
  *   f fov width height   (full vertical fov in degrees, pixels; older gKit files have no f line)
  * gKit's view is T(-px,-py,-size) Rx(rx) Ry(ry) T(-c): the camera sits at c + M (px, py, size),
- * M = Ry(-ry) Rx(-rx), and looks down M's -z with M's +y up. docs/guide.md says what matches gKit. */
+ * M = Ry(-ry) Rx(-rx), and looks down M's -z with M's +y up. docs/grading.md says what matches gKit. */
 #ifndef PATHLAB_ORBITER_H
 #define PATHLAB_ORBITER_H
 #include "scene/camera.h"

@@ -6,12 +6,10 @@
 #include <string.h>
 #include <unistd.h>
 
-#define MAX_TEMPS 16
-#define TEMP_NAME 4096
+#define MAX_TEMPS 4096
 
 static volatile sig_atomic_t first_signal;
-static char temp_name[MAX_TEMPS][TEMP_NAME];
-static volatile sig_atomic_t temp_used[MAX_TEMPS];
+static const char *volatile temp_name[MAX_TEMPS];   /* the caller's strings, valid until removed */
 
 static void on_signal(int sig)
 {
@@ -24,7 +22,7 @@ static void on_signal(int sig)
         return;
     }
     for (k = 0; k < MAX_TEMPS; k++)
-        if (temp_used[k]) unlink(temp_name[k]);
+        if (temp_name[k]) unlink(temp_name[k]);
     _exit(128 + sig);
 }
 
@@ -61,11 +59,9 @@ void interrupt_release(void) { pthread_sigmask(SIG_SETMASK, &held, NULL); }
 void interrupt_temp_add(const char *name)
 {
     int k;
-    if (strlen(name) >= TEMP_NAME) return;   /* not tracked; pathlab's paths are shorter than 4096 */
     for (k = 0; k < MAX_TEMPS; k++)
-        if (!temp_used[k]) {
-            strcpy(temp_name[k], name);
-            temp_used[k] = 1;
+        if (!temp_name[k]) {
+            temp_name[k] = name;
             return;
         }
 }
@@ -74,5 +70,5 @@ void interrupt_temp_remove(const char *name)
 {
     int k;
     for (k = 0; k < MAX_TEMPS; k++)
-        if (temp_used[k] && !strcmp(temp_name[k], name)) temp_used[k] = 0;
+        if (temp_name[k] == name) temp_name[k] = NULL;
 }

@@ -14,7 +14,8 @@ const char *interrupt_name(int sig);
 
 /* A temporary file that a second signal must remove. Call interrupt_hold() before creating it,
  * then interrupt_temp_add(name), then interrupt_release(); and the same around its rename or removal
- * with interrupt_temp_remove(name): no signal can fall between the file and its registration. */
+ * with interrupt_temp_remove(name) (the same pointer): no signal can fall between the file and its
+ * registration. The string is not copied: it must stay valid until removed. Holds nest one deep only. */
 void interrupt_hold(void);
 void interrupt_release(void);
 void interrupt_temp_add(const char *name);

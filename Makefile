@@ -57,11 +57,14 @@ run: $(PROG)
 	./$(PROG) render scenes/cornell.obj --spp 64 -o cornell.ppm
 	@echo "The Cornell box is in cornell.ppm (open it with any image viewer)."
 
-# Tools the tests use but pathlab never links: OpenImageIO's idiff.
+# Tools the tests use but pathlab never links: OpenImageIO's idiff, GNU parallel (the recipe of docs/distributed.md).
 test-deps:
 	@command -v idiff >/dev/null 2>&1 || { echo "installing openimageio-tools (idiff) for the tests"; \
 	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
 	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq openimageio-tools >/dev/null; }
+	@command -v parallel >/dev/null 2>&1 || { echo "installing parallel (GNU parallel) for tests/test_parallel_recipe.sh"; \
+	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
+	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq parallel >/dev/null; }
 
 TOOLS = $(BUILD)/tests/zcheck $(BUILD)/tests/pfmtool $(BUILD)/bench-plot
 

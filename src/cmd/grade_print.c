@@ -170,6 +170,16 @@ static long rare_pixels(const grade_report *r)
     return n;
 }
 
+/* The channel whose whole-image fit is farthest past its limit: each channel's limit is widened by
+ * its own skewness, so the largest |z| need not be the one that fails. */
+static int worst_fit_channel(const grade_report *r)
+{
+    int ch, worst = 0;
+    for (ch = 1; ch < 3; ch++)
+        if (fabs(r->image_z[ch]) / r->image_zlimit[ch] > fabs(r->image_z[worst]) / r->image_zlimit[worst]) worst = ch;
+    return worst;
+}
+
 static void print_verdict(const grade_report *r)
 {
     long n = 3L * r->w * r->h;
@@ -190,7 +200,7 @@ static void print_verdict(const grade_report *r)
                r->exact_fail, r->nexact, r->exact_x, r->exact_y, r->exact_img[0], r->exact_img[1], r->exact_img[2],
                r->exact_ref[0], r->exact_ref[1], r->exact_ref[2]);
     for (ch = 1; ch >= 0; ch--) print_exact_side(r, ch);
-    for (ch = 1; ch < 3; ch++) if (fabs(r->image_z[ch]) > fabs(r->image_z[worst])) worst = ch;
+    worst = worst_fit_channel(r);
     if (fabs(r->image_z[worst]) > r->image_zlimit[worst])
         printf("  %s over the whole image: %+.2f%% +- %.2f%% in %s (|z| %.1f > %.2f)\n", r->image_z[worst] > 0 ? "brighter" : "darker",
                100 * r->image_eps[worst], 100 * r->image_eps_se[worst], CHANNELS[worst], fabs(r->image_z[worst]), r->image_zlimit[worst]);
@@ -270,11 +280,11 @@ static double group_diff(const grade_report *r)
 
 void grade_fill_row(grade_row *row, const grade_report *r)
 {
-    int ch, worst = 0, b[4];
+    int worst, b[4];
     long area;
     row->w = r->w;
     row->h = r->h;
-    for (ch = 1; ch < 3; ch++) if (fabs(r->image_z[ch]) > fabs(r->image_z[worst])) worst = ch;
+    worst = worst_fit_channel(r);
     row->bias = r->image_eps[worst];
     row->bias_se = r->image_eps_se[worst];
     snprintf(row->channel, sizeof row->channel, "%s", CHANNELS[worst]);

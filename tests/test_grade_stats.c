@@ -1,11 +1,14 @@
 /* test_grade_stats.c — the statistics of `pathlab grade` on synthetic images, where the truth is
  * known: Student's t tails against tables; false alarms on many unbiased images with heavy-tailed
  * (firefly) noise; the fitted relative bias and its standard error calibrated on images 2% too
- * bright; a bias in one quadrant found there, with its sign; a small lamp missing found by its level. */
+ * bright; a bias in one quadrant found there, with its sign; a small lamp missing found by its level;
+ * the channel a failing row names. */
 #include <math.h>
 #include <stdlib.h>
 #include "check.h"
 #include "cmd/grade.h"
+#include "cmd/grade_print.h"
+#include <string.h>
 #include "stats/significance.h"
 #include "math/rng.h"
 
@@ -173,8 +176,28 @@ static void lamp(void)
     img_free(&ref);
 }
 
+/* The class row names the channel farthest past its own limit: limits differ by channel (each is
+ * widened by its skewness), so the largest |z| (red: 4.5 < 4.82) is not the failing one (green:
+ * 4.2 > 4.13). A regression: the row and the verdict line once followed the largest |z|. */
+static void worst_channel(void)
+{
+    grade_report r;
+    grade_row row;
+    memset(&r, 0, sizeof r);
+    memset(&row, 0, sizeof row);
+    r.w = r.h = 8;
+    r.image_z[0] = 4.5, r.image_z[1] = 4.2, r.image_z[2] = 1.0;
+    r.image_zlimit[0] = 4.82, r.image_zlimit[1] = 4.13, r.image_zlimit[2] = 4.0;
+    r.image_eps[0] = 0.03, r.image_eps[1] = 0.015, r.image_eps[2] = 0.001;
+    r.image_fail = 1;
+    grade_fill_row(&row, &r);
+    check(!strcmp(row.channel, "green") && row.bias == 0.015, "the class row names the channel past its limit (green), not the largest |z| (red)",
+          "got %s %+.3f", row.channel, row.bias);
+}
+
 int main(void)
 {
+    worst_channel();
     t_table();
     false_alarms(4, 0.05, 200);
     false_alarms(64, 0.01, 100);

@@ -1,0 +1,146 @@
+#!/usr/bin/env bash
+# Adaptive sampling (docs/adaptive.md, issue 12 item 2):
+#  1. bad flag values and combinations are refused with a clear message, and write nothing;
+#  2. exactness: with a small cap (--spp 64) every pixel of an adaptive render is byte for byte
+#     (mean and variance) the same pixel of a uniform --spp n(x) render, for every count n(x) the
+#     count image holds: the kept samples are the uniform render's samples 0..n(x)-1;
+#  3. the sample-count image exists with its sidecar and is plausible: counts are multiples of 4 in
+#     [4, cap]; black pixels (0 with variance 0, and their 3x3 neighbours too; around the box seen
+#     from afar in 2) get the minimum, 4; and pixels whose
+#     per-sample relative variance in the REFERENCE (4096 spp, independent of the pilot) is in the
+#     top quarter get on average at least 3x the samples of those in the bottom quarter;
+#  4. unbiased: --target-error 0.1 and --adaptive --time renders agree with ref/cornell.pfm by
+#     tests/zcheck with each image's own variance (per pixel-channel at alpha 0.01 with Sidak's
+#     correction, 99.5% must pass; 8x8 blocks and the whole image at alpha 0.005 each); negative
+#     check: the same render times 1.02 is told apart;
+#  5. merge and --resume refuse adaptive renders, saying why.
+# The pilot kept in the image (the mutant adaptive-pilot-kept of tests/mutants/list.sh) must fail 4.
+. "$(dirname "$0")/lib.sh"
+ZCHECK=$BUILD/tests/zcheck
+R="$PATHLAB render scenes/cornell.obj --quiet --threads 2"
+t0=$(date +%s)
+
+# 1. refusals
+bad() {   # bad NAME PATTERN FLAGS...
+    local name=$1 pat=$2; shift 2
+    expect_status "refuses $name" 2 $R --size 16x16 -o "$TMP/bad.pfm" "$@"
+    expect_err "refuses $name: says why" "$pat"
+}
+bad "--target-error 0" "--target-error expects" --target-error 0
+bad "--target-error abc" "--target-error expects" --target-error abc
+bad "--pilot 1" "--pilot expects" --target-error 0.1 --pilot 1
+bad "--min-spp 1" "--min-spp expects" --target-error 0.1 --min-spp 1
+bad "--adaptive alone" "--adaptive needs --target-error" --adaptive
+bad "--pilot without adaptive" "--pilot is for adaptive sampling" --pilot 8
+bad "--sample-count without adaptive" "--sample-count is for adaptive" --sample-count "$TMP/bad_n.pfm"
+bad "--sample-count .png" "counts are written as .pfm" --target-error 0.1 --sample-count "$TMP/bad_n.png"
+bad "--min-spp over the cap" "--min-spp 64 is over the cap --spp 32" --target-error 0.1 --spp 32 --min-spp 64
+bad "adaptive --samples" "not with --samples" --target-error 0.1 --samples 0:16
+bad "adaptive --resume" "not with --resume" --target-error 0.1 --resume --spp 64
+expect_no_file "the refused renders wrote nothing" "$TMP/bad.pfm" "$TMP/bad_n.pfm"
+
+# 2. exactness against uniform renders, 32x24, cap 64
+A="--size 32x24 --seed 7 --eye 278,273,-1500"   # the box and black around it
+$R $A --target-error 0.3 --spp 64 -o "$TMP/x.pfm" --variance "$TMP/x_var.pfm" --sample-count "$TMP/x_n.pfm" ||
+    fail "the small adaptive render failed"
+counts=$(python3 - "$TMP/x_n.pfm" <<'EOF'
+import struct, sys
+d = open(sys.argv[1], 'rb').read().split(b'\n', 3)
+w, h = map(int, d[1].split())
+v = struct.unpack('<%df' % (3 * w * h), d[3])
+print(' '.join(str(int(c)) for c in sorted(set(v[0::3]))))
+EOF
+)
+for n in $counts; do
+    $R $A --spp "$n" -o "$TMP/u$n.pfm" --variance "$TMP/u${n}_var.pfm" || fail "uniform --spp $n failed"
+done
+msg=$(python3 - "$TMP" $counts <<'EOF'
+import struct, sys
+def raw(p):
+    d = open(p, 'rb').read().split(b'\n', 3)
+    w, h = map(int, d[1].split())
+    return d[3], w * h
+t, counts = sys.argv[1], sys.argv[2:]
+cnt, npx = raw(t + '/x_n.pfm')
+cnt = struct.unpack('<%df' % (3 * npx), cnt)
+m, _ = raw(t + '/x.pfm'); v, _ = raw(t + '/x_var.pfm')
+bad = 0
+for n in counts:
+    um, _ = raw(t + '/u%s.pfm' % n); uv, _ = raw(t + '/u%s_var.pfm' % n)
+    for p in range(npx):
+        if int(cnt[3 * p]) == int(n) and (m[12 * p:12 * p + 12] != um[12 * p:12 * p + 12] or v[12 * p:12 * p + 12] != uv[12 * p:12 * p + 12]):
+            bad += 1
+# black: 0 with variance 0, and so are its 3x3 neighbours (the 3x3 spread gives a black pixel
+# beside a lit one its neighbour's count): the minimum, 4
+mf = struct.unpack('<%df' % (3 * npx), m); vf = struct.unpack('<%df' % (3 * npx), v)
+w = 32
+def dark(i): return max(mf[3 * i:3 * i + 3]) == 0 and max(vf[3 * i:3 * i + 3]) == 0
+black = [y * w + x for y in range(npx // w) for x in range(w)
+         if all(dark(yy * w + xx) for yy in range(max(y - 1, 0), min(y + 2, npx // w)) for xx in range(max(x - 1, 0), min(x + 2, w)))]
+over = sum(cnt[3 * i] != 4 for i in black)
+print('%d of %d pixels differ from the --spp n(x) render; %d black pixels, %d with more than 4 samples; %d counts: %s'
+      % (bad, npx, len(black), over, len(counts), ' '.join(counts)))
+sys.exit(1 if bad or over or len(black) < 100 else 0)
+EOF
+) && pass "every pixel is byte for byte its --spp n(x) render, black ones have 4 ($msg)" || fail "exactness: $msg"
+[ "$(echo $counts | wc -w)" -ge 4 ] && pass "the small render has several counts ($counts)" || fail "too few distinct counts: $counts"
+
+# 3 and 4. Cornell 64x64 at the references' size against ref/cornell.pfm (4096 spp)
+$R --size 64x64 --seed 4242 --target-error 0.1 --spp 4096 -o "$TMP/a.pfm" --variance "$TMP/a_var.pfm" \
+    --sample-count "$TMP/a_n.pfm" || fail "the adaptive render failed"
+grep -q "^kind sample-count$" "$TMP/a_n.pfm.meta" && grep -q "^sample-count a_n.pfm$" "$TMP/a.pfm.meta" &&
+    grep -q "^adaptive --adaptive --target-error 0.1 --pilot 16 --min-spp 4$" "$TMP/a.pfm.meta" &&
+    grep -q "^spp-cap 4096$" "$TMP/a.pfm.meta" && pass "the count image and the sidecars name each other and the settings" ||
+    fail "sidecars: $(cat "$TMP/a.pfm.meta" "$TMP/a_n.pfm.meta" | tr '\n' '|')"
+msg=$(python3 - "$TMP/a_n.pfm" ref/cornell.pfm ref/cornell_var.pfm "$TMP/a.pfm.meta" <<'EOF'
+import struct, sys
+def read(p):
+    d = open(p, 'rb').read().split(b'\n', 3)
+    w, h = map(int, d[1].split())
+    return struct.unpack('<%df' % (3 * w * h), d[3])
+n, ref, rv = (read(p) for p in sys.argv[1:4])
+cnt = n[0::3]
+errs = []
+if any(c != n[3 * i + 1] or c != n[3 * i + 2] for i, c in enumerate(cnt)): errs.append('channels differ')
+if any(c % 4 or c < 4 or c > 4096 for c in cnt): errs.append('a count not a multiple of 4 in [4, 4096]')
+mean = sum(cnt) / len(cnt)
+meta = float([l.split()[1] for l in open(sys.argv[4]) if l.startswith('spp-mean ')][0])
+if abs(meta - mean) > 1e-3 * mean: errs.append('spp-mean %g is not the mean count %g' % (meta, mean))
+# the reference's per-sample relative variance (max over channels), pixels that see something
+rel = []
+for i in range(len(cnt)):
+    r = max((rv[3 * i + c] * 4096) / ref[3 * i + c] ** 2 for c in range(3) if ref[3 * i + c] > 0) if max(ref[3 * i:3 * i + 3]) > 0 else None
+    if r is not None: rel.append((r, cnt[i]))
+rel.sort()
+q = len(rel) // 4
+lo = sum(c for _, c in rel[:q]) / q; hi = sum(c for _, c in rel[-q:]) / q
+if hi < 3 * lo: errs.append('the noisiest quarter has %.0f spp, the quietest %.0f: not 3x' % (hi, lo))
+print('mean %.0f spp, noisiest quarter (by the reference) %.0f spp vs quietest %.0f (%.1fx)%s'
+      % (mean, hi, lo, hi / lo, ''.join('; ' + e for e in errs)))
+sys.exit(1 if errs else 0)
+EOF
+) && pass "the sample counts are plausible: $msg" || fail "sample counts: $msg"
+
+zc() {   # zc NAME WANT A VA: against ref/cornell.pfm, per pixel at 0.01 and blocks and image at 0.005
+    local name=$1 want=$2 o1 o2 r1 r2
+    o1=$("$ZCHECK" "$3" "$4" ref/cornell.pfm ref/cornell_var.pfm --alpha 0.01 --block 0 --pixel-pass 0.995 2>&1); r1=$?
+    o2=$("$ZCHECK" "$3" "$4" ref/cornell.pfm ref/cornell_var.pfm --alpha 0.005 --block 8 --pixel-pass 0 2>&1); r2=$?
+    if [ $r1 -ge 2 ] || [ $r2 -ge 2 ]; then fail "$name: zcheck could not compare: $o1 $o2"; return; fi
+    if [ $((r1 | r2)) -eq "$want" ]; then pass "$name ($(grep -oE 'pixels [0-9.]+ pass' <<< "$o1"); $(grep -oE 'blocks [0-9]+/[0-9]+ fail' <<< "$o2"), $(grep -oE 'image \|z\| [0-9.]+' <<< "$o2"))"
+    else fail "$name: wanted $([ "$want" = 0 ] && echo agree || echo differ): $o1 | $o2"; fi
+}
+zc "--target-error 0.1 agrees with ref/cornell.pfm" 0 "$TMP/a.pfm" "$TMP/a_var.pfm"
+"$PFMTOOL" scale "$TMP/a.pfm" 1.02 "$TMP/a102.pfm"
+zc "the same render 2% too bright is told apart" 1 "$TMP/a102.pfm" "$TMP/a_var.pfm"
+start=$(date +%s%N)
+$R --size 64x64 --seed 4343 --adaptive --time 3 -o "$TMP/t.pfm" --variance "$TMP/t_var.pfm" --sample-count "$TMP/t_n.pfm" ||
+    fail "the --adaptive --time render failed"
+ms=$((($(date +%s%N) - start) / 1000000))
+zc "--adaptive --time 3 agrees with ref/cornell.pfm (ran ${ms} ms)" 0 "$TMP/t.pfm" "$TMP/t_var.pfm"
+
+# 5. merge and resume refuse
+expect_status "merge refuses an adaptive render" 2 $PATHLAB merge "$TMP/m.pfm" "$TMP/a.pfm" "$TMP/x.pfm"
+expect_err "merge says why" "is an adaptive render"
+expect_status "--resume refuses an adaptive render" 2 $R --size 64x64 --seed 4242 --spp 8192 -o "$TMP/a.pfm" --resume
+expect_err "--resume says why" "is an adaptive render"
+echo "test_adaptive: $(( $(date +%s) - t0 )) s"

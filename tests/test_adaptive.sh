@@ -83,6 +83,47 @@ print('%d of %d pixels differ from the --spp n(x) render; %d black pixels, %d wi
 sys.exit(1 if bad or over or len(black) < 100 else 0)
 EOF
 ) && pass "every pixel is byte for byte its --spp n(x) render, black ones have 4 ($msg)" || fail "exactness: $msg"
+# 2b. the counts are the documented allocation of the PILOT (a --spp 16 render with the sidecar's
+# pilot-seed), and not that of the kept samples 0..15 (a --spp 16 render with the seed): the pilot
+# is not kept. Formula (docs/adaptive.md): rel = max over channels of 16 v / max(|m|, d)^2, d = 0.1 x
+# the mean of |m| over the pixels and channels, its 3x3 max, n = ceil(rel / E^2) up to a multiple
+# of 4 in [4, 64]. Among the pixels with 4 < n < 64 (neither the minimum nor the cap), the pilot's
+# allocation must agree on 99% (measured: all), the kept samples' on at most half (measured 0.11;
+# the mutant adaptive-pilot-kept of tests/mutants/list.sh: all).
+ps=$(sed -n 's/^pilot-seed //p' "$TMP/x.pfm.meta")
+$R $A --spp 16 --seed "$ps" -o "$TMP/p.pfm" --variance "$TMP/p_var.pfm" && $R $A --spp 16 -o "$TMP/k.pfm" --variance "$TMP/k_var.pfm" ||
+    fail "the --spp 16 renders failed"
+alloc() {   # alloc MEAN VAR COUNTS: of the pixels with 4 < n < 64, the fraction whose count is the allocation of MEAN, VAR
+    python3 - "$@" <<'EOF'
+import math, struct, sys
+def read(p):
+    d = open(p, 'rb').read().split(b'\n', 3); w, h = map(int, d[1].split())
+    return w, h, struct.unpack('<%df' % (3 * w * h), d[3])
+w, h, m = read(sys.argv[1]); _, _, v = read(sys.argv[2]); _, _, n = read(sys.argv[3])
+d = 0.0
+for x in m: d += abs(x)
+d = 0.1 * d / len(m)
+rel = []
+for p in range(w * h):
+    r = 0.0
+    for c in range(3):
+        level = max(abs(m[3 * p + c]), d); s2 = v[3 * p + c] * 16
+        if level > 0 and s2 / (level * level) > r: r = s2 / (level * level)
+    rel.append(r)
+same = lit = 0
+for y in range(h):
+    for x in range(w):
+        r = max(rel[yy * w + xx] for yy in range(max(y - 1, 0), min(y + 2, h)) for xx in range(max(x - 1, 0), min(x + 2, w)))
+        k = min(math.ceil(max(min(r / (0.3 * 0.3), 128.0), 4) / 4) * 4, 64)
+        if 4 < n[3 * (y * w + x)] < 64: lit += 1; same += k == n[3 * (y * w + x)]
+print('%.4f' % (same / lit))
+EOF
+}
+fp=$(alloc "$TMP/p.pfm" "$TMP/p_var.pfm" "$TMP/x_n.pfm"); fk=$(alloc "$TMP/k.pfm" "$TMP/k_var.pfm" "$TMP/x_n.pfm")
+awk -v p="$fp" 'BEGIN { exit !(p != "" && p >= 0.99) }' && pass "the counts are the allocation of the pilot (pilot-seed $ps): $fp of the pixels" ||
+    fail "the counts are not the documented allocation of the pilot: $fp of the pixels agree"
+awk -v k="$fk" 'BEGIN { exit !(k != "" && k <= 0.5) }' && pass "the kept samples 0..15 did not choose the counts (their allocation agrees on $fk of the pixels)" ||
+    fail "the counts are the allocation of the kept samples 0..15 ($fk of the pixels): the pilot is kept in the image"
 [ "$(echo $counts | wc -w)" -ge 4 ] && pass "the small render has several counts ($counts)" || fail "too few distinct counts: $counts"
 
 # 3 and 4. Cornell 64x64 at the references' size against ref/cornell.pfm (4096 spp)

@@ -153,6 +153,7 @@ static int finish_meta(sidecar *m, const render_args *a, const render_result *r,
     m->range[0][1] = a->ro.first + r->spp;
     m->spp_cap = a->ro.spp;
     m->spp_mean = ar->mean_spp;
+    m->pilot_seed = ar->pilot_seed;
     if (r->interrupted) snprintf(m->stopped, sizeof m->stopped, "%s", interrupt_name(r->interrupted));
     else if (a->adaptive && a->target_given && r->spp < ar->max_spp) snprintf(m->stopped, sizeof m->stopped, "time");
     else if (!a->adaptive && r->spp < a->ro.spp && a->ro.time_limit > 0 && a->spp_given) snprintf(m->stopped, sizeof m->stopped, "time");

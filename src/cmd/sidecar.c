@@ -42,8 +42,8 @@ int sidecar_write_to(const sidecar *m, const char *image_path, const char *path)
     fprintf(f, "# pathlab: what made %s (read by pathlab merge, render --resume and grade)\n", image_path);
     fprintf(f, "kind %s\nlayer %s\nsamples %s\n", m->kind, m->layer, ranges);
     if (m->adaptive[0])   /* the range is of the pixel with the most samples: its width is no spp */
-        fprintf(f, "spp adaptive: per pixel, mean %.6g, at most %" PRId64 "\nspp-mean %.9g\nspp-cap %" PRId64 "\nadaptive %s\n",
-                m->spp_mean, m->spp_cap, m->spp_mean, m->spp_cap, m->adaptive);
+        fprintf(f, "spp adaptive: per pixel, mean %.6g, at most %" PRId64 "\nspp-mean %.9g\nspp-cap %" PRId64 "\nadaptive %s\n"
+                   "pilot-seed %" PRIu64 "\n", m->spp_mean, m->spp_cap, m->spp_mean, m->spp_cap, m->adaptive, m->pilot_seed);
     else fprintf(f, "spp %" PRId64 "\n", sidecar_spp(m));
     if (m->sample_count[0]) fprintf(f, "sample-count %s\n", m->sample_count);
     fprintf(f, "seed %" PRIu64 "\n", m->seed);
@@ -107,6 +107,10 @@ static int parse_line(sidecar *m, const char *key, const char *v)
     if (!strcmp(key, "sample-count")) return set_text(m->sample_count, sizeof m->sample_count, v);
     if (!strcmp(key, "spp-mean")) {
         m->spp_mean = strtod(v, &end);
+        return end == v || *end != '\0';
+    }
+    if (!strcmp(key, "pilot-seed")) {
+        m->pilot_seed = strtoull(v, &end, 10);
         return end == v || *end != '\0';
     }
     if (!strcmp(key, "spp-cap")) {

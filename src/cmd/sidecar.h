@@ -5,7 +5,7 @@
  *   kind mean | variance       samples 0:384[,1000:1200]     seed 1         layer total | L3
  *   scene PATH   scene-id ID   flags ...   camera ...   variance FILE   layers A:B   revision R
  * and for an adaptive render (docs/adaptive.md), whose pixel x holds the samples 0 .. n(x) - 1:
- *   adaptive FLAGS   spp-cap N   spp-mean X   sample-count FILE */
+ *   adaptive FLAGS   spp-cap N   spp-mean X   pilot-seed S   sample-count FILE */
 #ifndef PATHLAB_SIDECAR_H
 #define PATHLAB_SIDECAR_H
 #include <stddef.h>
@@ -31,6 +31,7 @@ typedef struct {
     char adaptive[SIDECAR_TEXT];   /* the adaptive flags ("--target-error 0.01 --pilot 16 ..."); "" if uniform */
     int64_t spp_cap;               /* adaptive: the --spp cap of n(x) */
     double spp_mean;               /* adaptive: the mean over the pixels of their sample counts */
+    uint64_t pilot_seed;           /* adaptive: the seed of the pilot's streams (never kept) */
     char sample_count[SIDECAR_TEXT];   /* adaptive: the sample-count image's file name ("" if none) */
 } sidecar;
 

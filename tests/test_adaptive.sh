@@ -183,6 +183,14 @@ $R --size 64x64 --seed 4343 --adaptive --time $T -o "$TMP/t.pfm" --variance "$TM
 ms=$((($(date +%s%N) - start) / 1000000))
 zc "--adaptive --time $T agrees with ref/cornell.pfm (ran ${ms} ms)" 0 "$TMP/t.pfm" "$TMP/t_var.pfm"
 
+# a target that --time cuts short: the sidecar says so, the counts say what each pixel got
+$R --size 32x24 --target-error 0.001 --time 1 -o "$TMP/s.pfm" --sample-count "$TMP/s_n.pfm" 2> "$TMP/err"
+end=$(sed -n 's/^samples 0://p' "$TMP/s.pfm.meta")
+max=$("$PATHLAB" convert "$TMP/s_n.pfm" "$TMP/s_n.ppm" 2>&1 | sed -n 's/^ *red .* max \([0-9]*\).*/\1/p')
+grep -q "^stopped time$" "$TMP/s.pfm.meta" && [ -n "$end" ] && [ "$max" = "$end" ] && grep -q "stopped at sample $end of the" "$TMP/err" &&
+    pass "--target-error cut short by --time: 'stopped time', the largest count is the samples reached ($end)" ||
+    fail "--time stop: samples 0:$end, largest count '$max', $(grep stopped "$TMP/s.pfm.meta"), $(cat "$TMP/err")"
+
 # 5. merge and resume refuse
 expect_status "merge refuses an adaptive render" 2 $PATHLAB merge "$TMP/m.pfm" "$TMP/a.pfm" "$TMP/x.pfm"
 expect_err "merge says why" "is an adaptive render"

@@ -161,19 +161,23 @@ static int finish_meta(sidecar *m, const render_args *a, const render_result *r,
 }
 
 /* After a stop by a signal or --time: what was written, and how to go on. */
-static void report_stop(const render_args *a, const render_result *r, const sidecar *m)
+static void report_stop(const render_args *a, const render_result *r, const sidecar *m, const adaptive_result *ar)
 {
     char el[32];
     int64_t spp = sidecar_spp(m), asked = spp - r->spp + a->ro.spp;
     progress_duration(el, sizeof el, r->seconds);
-    if (r->interrupted)
+    if (r->interrupted && a->adaptive)
+        fprintf(stderr, "pathlab render: interrupted (%s) after %s at sample %d of the %d the noisiest pixels wanted "
+                "(a mean of %.1f spp per pixel, see the sample count): written %s\n", interrupt_name(r->interrupted), el, r->spp,
+                ar->max_spp, ar->mean_spp, a->out);
+    else if (r->interrupted)
         fprintf(stderr, "pathlab render: interrupted (%s) at %" PRId64 " of %" PRId64 " spp after %s: written %s%s%s "
                 "(add samples with --resume)\n", interrupt_name(r->interrupted), spp, asked, el, a->out,
                 a->variance ? " and " : "", a->variance ? a->variance : "");
     else if (a->adaptive && !strcmp(m->stopped, "time"))
         fprintf(stderr, "pathlab render: --time %.9g s: stopped at sample %d of the %d the noisiest pixels wanted: those pixels "
                         "have fewer samples than --target-error asks (see the sample count), written %s\n", a->ro.time_limit, r->spp,
-                a->ro.spp, a->out);
+                ar->max_spp, a->out);
     else if (!a->adaptive && r->spp < a->ro.spp && a->spp_given)
         fprintf(stderr, "pathlab render: --time %.9g s: %" PRId64 " of %" PRId64 " spp fitted, written %s\n", a->ro.time_limit, spp, asked, a->out);
 }
@@ -200,7 +204,7 @@ static int render_and_write(render_args *a, const scene *s, const camera *cam)
     err = finish_meta(&m, a, &r, &prev, &ar) || (prev.nlayers && combine_with(&prev, sidecar_spp(&prev.meta), &r));
     err = err || render_files_write_all(a->out, a->variance, a->sample_count, &ar.count, a->exposure, &m, r.mean, r.var,
                                         r.nlayers, a->ro.io.bmin);
-    if (!err) report_stop(a, &r, &m);
+    if (!err) report_stop(a, &r, &m, &ar);
     if (!err && r.interrupted) rc = 128 + r.interrupted;
     render_result_free(&r);
     render_files_free(&prev);

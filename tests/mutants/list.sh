@@ -85,3 +85,6 @@ mutant merge-var-within-only src/stats/combine.c \
 mutant adaptive-pilot-kept src/tracer/adaptive.c \
     's/return splitmix64_mix(seed ^ 0x70696c6f74ULL) + SPLITMIX64_GAMMA;/return seed;/' \
     test_adaptive - 'the pilot that chose n(x) is the first samples kept in the image: counts depend on the kept samples (biased)'
+mutant adaptive-count-as-done src/tracer/render.c \
+    's/int n = pixel_spp \&\& pixel_spp\[p\] < done ? pixel_spp\[p\] : done;/int n = done;/' \
+    test_adaptive - 'each pixel sum divided by the passes done instead of its own sample count'

@@ -289,10 +289,12 @@ static int grade_one(grade_row *row, const reference *R, const grade_args *a, in
 /* What made the reference, from its sidecar: a teacher checks the spp, seed and camera at a glance. */
 static void print_provenance(const sidecar *m, const char *ref)
 {
-    char ranges[256];
+    char ranges[256], spp[96];
     sidecar_ranges_text(m, ranges, sizeof ranges);
-    printf("reference %s: %lld spp (samples %s), seed %llu, %s %s, camera %s, pathlab %s%s%s\n", ref,
-           (long long)sidecar_spp(m), ranges, (unsigned long long)m->seed, m->scene, m->flags, m->camera, m->revision,
+    if (m->adaptive[0]) snprintf(spp, sizeof spp, "adaptive, a mean of %.1f spp per pixel", m->spp_mean);   /* not the range's width */
+    else snprintf(spp, sizeof spp, "%lld spp", (long long)sidecar_spp(m));
+    printf("reference %s: %s (samples %s), seed %llu, %s %s, camera %s, pathlab %s%s%s\n", ref,
+           spp, ranges, (unsigned long long)m->seed, m->scene, m->flags, m->camera, m->revision,
            m->stopped[0] ? ", stopped by " : "", m->stopped);
 }
 

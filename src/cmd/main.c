@@ -65,6 +65,19 @@ static const char *USAGE =
     "  --rr D|off           Russian roulette after D bounces (default 3)\n"
     "  --variance FILE.pfm  also write the variance of each pixel's mean (with --split, one per bounce too)\n";
 
+/* The third part: adaptive sampling (docs/adaptive.md). */
+static const char *USAGE_ADAPTIVE =
+    "adaptive sampling (docs/adaptive.md): a pilot of --pilot samples per pixel, from another seed and never kept,\n"
+    "decides each pixel's count n(x); pixel x then gets the samples 0..n(x)-1 of the uniform render (unbiased)\n"
+    "  --target-error E     n(x) for a relative standard error E of each pixel's mean (e.g. 0.01; the largest of\n"
+    "                       R, G, B; pixels darker than 0.1x the image's mean are held to that level); implies --adaptive\n"
+    "  --adaptive           with --time SEC alone: the time after the pilot is shared out, n(x) proportional to the\n"
+    "                       pilot's relative standard deviation; with --target-error, --time stops it early\n"
+    "  --spp N              the cap of n(x) (default 65536 with --target-error, none with --time alone)\n"
+    "  --pilot P            pilot samples per pixel (default 16)     --min-spp N   the fewest per pixel (default 4)\n"
+    "  --sample-count F.pfm also write each pixel's number of samples (counts are multiples of 4)\n"
+    "  not with --samples, --resume or merge: pixels with different counts do not combine\n";
+
 /* C99 compilers need only take string literals of 4095 characters: the help is in two parts. */
 static const char *USAGE_TOOLS =
     "grade (exit 0 all pass, 1 a fail, 2 an input error), on d = IMAGE - REF per pixel-channel, at family-wise level\n"
@@ -97,6 +110,7 @@ static const command COMMANDS[] = {
 static void help(FILE *f)
 {
     help_print(f, USAGE);
+    help_print(f, USAGE_ADAPTIVE);
     help_print(f, USAGE_TOOLS);
 }
 

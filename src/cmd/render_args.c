@@ -202,6 +202,7 @@ void render_args_init(render_args *a)
     a->ro.io.bmin = 0;
     a->ro.io.bmax = BOUNCES_INF;
     a->ro.io.rr_depth = 3;
+    adaptive_opts_init(&a->ao);
 }
 
 /* --orbiter FILE into a->vw; 0, or 1 after printing why. An old file without an f line leaves fov

@@ -3,6 +3,7 @@
 #ifndef PATHLAB_RENDER_ARGS_H
 #define PATHLAB_RENDER_ARGS_H
 #include "util/cli.h"
+#include "tracer/adaptive.h"
 #include "tracer/render.h"
 
 typedef struct {
@@ -14,6 +15,10 @@ typedef struct {
     int spp_given, samples_given, resume;
     const char *orbiter, *view_file, *write_view;  /* --orbiter, --view, --write-view (NULL if not given) */
     render_opts ro;
+    /* render only (cmd/render_adaptive.h): adaptive sampling */
+    int adaptive, target_given, pilot_given, min_given;
+    const char *sample_count;        /* --sample-count FILE.pfm (NULL if not given) */
+    adaptive_opts ao;
 } render_args;
 
 #define RENDER_NFLAGS 28   /* the flags of render_flag_table, and its closing NULL entry */

@@ -6,6 +6,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "cmd/render_args.h"
+#include "cmd/render_adaptive.h"
 #include "cmd/render_files.h"
 #include "cmd/version.h"
 #include "stats/combine.h"
@@ -42,20 +43,23 @@ static int check_render_args(render_args *a)
         fprintf(stderr, "pathlab render: --resume needs --spp N (the samples wanted in all) or --time SEC\n");
         return 1;
     }
-    if (a->ro.time_limit > 0 && !a->spp_given && !a->samples_given) a->ro.spp = 1 << 30;   /* --time alone: no cap */
+    if (render_adaptive_check(a)) return 1;
+    if (a->ro.time_limit > 0 && !a->spp_given && !a->samples_given && !a->target_given) a->ro.spp = 1 << 30;   /* --time alone: no cap */
     return 0;
 }
 
 static int parse_render_args(render_args *a, int argc, char **argv)
 {
-    cli_flag t[RENDER_NFLAGS];
-    const cli_flag *tables[2];
+    cli_flag t[RENDER_NFLAGS], ta[RENDER_ADAPTIVE_NFLAGS];
+    const cli_flag *tables[3];
     const char *words[1];
     int nwords;
     render_args_init(a);
     render_flag_table(a, t);
+    render_adaptive_flag_table(a, ta);
     tables[0] = t;
-    tables[1] = NULL;
+    tables[1] = ta;
+    tables[2] = NULL;
     if (cli_parse("render", argc, argv, tables, a, words, 1, &nwords)) return 1;
     a->scene = nwords ? words[0] : NULL;
     return check_render_args(a);
@@ -83,6 +87,7 @@ static void describe_render(const render_args *a, const scene *s, sidecar *m)
              v->eye.x, v->eye.y, v->eye.z, v->target.x, v->target.y, v->target.z, v->up.x, v->up.y, v->up.z, v->fov,
              v->width, v->height);
     snprintf(m->revision, sizeof m->revision, "%s", pathlab_revision());
+    render_adaptive_describe(a, m);
 }
 
 /* --resume: reads the render at -o, checks it is this render, and sets the samples still to do
@@ -139,28 +144,41 @@ static int combine_with(const render_files *prev, int64_t n, render_result *r)
     return 0;
 }
 
-/* What was rendered, into the sidecar: the samples (with those of the resumed render), and why it stopped. */
-static int finish_meta(sidecar *m, const render_args *a, const render_result *r, const render_files *prev)
+/* What was rendered, into the sidecar: the samples (with those of the resumed render), and why it
+ * stopped; adaptive: the range of the pixels with the most samples, and the counts' cap and mean. */
+static int finish_meta(sidecar *m, const render_args *a, const render_result *r, const render_files *prev, const adaptive_result *ar)
 {
     m->nranges = 1;
     m->range[0][0] = a->ro.first;
     m->range[0][1] = a->ro.first + r->spp;
+    m->spp_cap = a->ro.spp;
+    m->spp_mean = ar->mean_spp;
+    m->pilot_seed = ar->pilot_seed;
     if (r->interrupted) snprintf(m->stopped, sizeof m->stopped, "%s", interrupt_name(r->interrupted));
-    else if (r->spp < a->ro.spp && a->ro.time_limit > 0 && a->spp_given) snprintf(m->stopped, sizeof m->stopped, "time");
+    else if (a->adaptive && a->target_given && r->spp < ar->max_spp) snprintf(m->stopped, sizeof m->stopped, "time");
+    else if (!a->adaptive && r->spp < a->ro.spp && a->ro.time_limit > 0 && a->spp_given) snprintf(m->stopped, sizeof m->stopped, "time");
     return prev->nlayers ? sidecar_add_ranges(m, &prev->meta, "this render", a->out) : 0;
 }
 
 /* After a stop by a signal or --time: what was written, and how to go on. */
-static void report_stop(const render_args *a, const render_result *r, const sidecar *m)
+static void report_stop(const render_args *a, const render_result *r, const sidecar *m, const adaptive_result *ar)
 {
     char el[32];
     int64_t spp = sidecar_spp(m), asked = spp - r->spp + a->ro.spp;
     progress_duration(el, sizeof el, r->seconds);
-    if (r->interrupted)
+    if (r->interrupted && a->adaptive)
+        fprintf(stderr, "pathlab render: interrupted (%s) after %s at sample %d of the %d the noisiest pixels wanted "
+                "(a mean of %.1f spp per pixel, see the sample count): written %s\n", interrupt_name(r->interrupted), el, r->spp,
+                ar->max_spp, ar->mean_spp, a->out);
+    else if (r->interrupted)
         fprintf(stderr, "pathlab render: interrupted (%s) at %" PRId64 " of %" PRId64 " spp after %s: written %s%s%s "
                 "(add samples with --resume)\n", interrupt_name(r->interrupted), spp, asked, el, a->out,
                 a->variance ? " and " : "", a->variance ? a->variance : "");
-    else if (r->spp < a->ro.spp && a->spp_given)
+    else if (a->adaptive && !strcmp(m->stopped, "time"))
+        fprintf(stderr, "pathlab render: --time %.9g s: stopped at sample %d of the %d the noisiest pixels wanted: those pixels "
+                        "have fewer samples than --target-error asks (see the sample count), written %s\n", a->ro.time_limit, r->spp,
+                ar->max_spp, a->out);
+    else if (!a->adaptive && r->spp < a->ro.spp && a->spp_given)
         fprintf(stderr, "pathlab render: --time %.9g s: %" PRId64 " of %" PRId64 " spp fitted, written %s\n", a->ro.time_limit, spp, asked, a->out);
 }
 
@@ -168,24 +186,29 @@ static int render_and_write(render_args *a, const scene *s, const camera *cam)
 {
     render_files prev;
     render_result r;
+    adaptive_result ar;
     sidecar m;
     char var_out[4096];
     int rc = 0, err;
     memset(&prev, 0, sizeof prev);
+    memset(&ar, 0, sizeof ar);
     describe_render(a, s, &m);
     if (a->resume && (rc = prepare_resume(a, &m, &prev, var_out, sizeof var_out)) != 0) {
         render_files_free(&prev);
         return rc == 1 ? 0 : 2;
     }
     interrupt_install();   /* from here, a first Ctrl-C stops after the pass and writes what it reached */
-    if (render(s, cam, &a->ro, &r)) { render_files_free(&prev); return 1; }
-    if (!a->ro.quiet) render_print_stats(&r, r.spp, cam->width * cam->height);
-    err = finish_meta(&m, a, &r, &prev) || (prev.nlayers && combine_with(&prev, sidecar_spp(&prev.meta), &r));
-    err = err || render_files_write(a->out, a->variance, a->exposure, &m, r.mean, r.var, r.nlayers, a->ro.io.bmin);
-    if (!err) report_stop(a, &r, &m);
+    if (a->adaptive ? adaptive_render(s, cam, &a->ro, &a->ao, &r, &ar) : render(s, cam, &a->ro, &r)) { render_files_free(&prev); return 1; }
+    if (!a->ro.quiet && a->adaptive) render_adaptive_print(&ar, r.seconds);
+    else if (!a->ro.quiet) render_print_stats(&r, r.spp, cam->width * cam->height);
+    err = finish_meta(&m, a, &r, &prev, &ar) || (prev.nlayers && combine_with(&prev, sidecar_spp(&prev.meta), &r));
+    err = err || render_files_write_all(a->out, a->variance, a->sample_count, &ar.count, a->exposure, &m, r.mean, r.var,
+                                        r.nlayers, a->ro.io.bmin);
+    if (!err) report_stop(a, &r, &m, &ar);
     if (!err && r.interrupted) rc = 128 + r.interrupted;
     render_result_free(&r);
     render_files_free(&prev);
+    adaptive_result_free(&ar);
     return err ? 1 : rc;
 }
 

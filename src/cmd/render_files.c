@@ -113,10 +113,18 @@ static int write_one(file_set *fs, const char *path, const image *im, float expo
 int render_files_write(const char *out, const char *var_out, float exposure, const sidecar *meta,
                        const image *mean, const image *var, int nlayers, int bmin)
 {
+    return render_files_write_all(out, var_out, NULL, NULL, exposure, meta, mean, var, nlayers, bmin);
+}
+
+int render_files_write_all(const char *out, const char *var_out, const char *count_out, const image *count,
+                           float exposure, const sidecar *meta, const image *mean, const image *var, int nlayers, int bmin)
+{
     char path[4096], vpath[4096];
     sidecar m = *meta;
     file_set fs = {NULL, NULL, 0, 0};
     int i, err = 0;
+    if (count_out) variance_name(m.sample_count, sizeof m.sample_count, out, count_out);
+    else m.sample_count[0] = '\0';
     for (i = 0; i < nlayers && !err; i++) {
         if (i == 0) snprintf(path, sizeof path, "%s", out), snprintf(m.layer, sizeof m.layer, "total");
         else render_files_layer_path(path, sizeof path, out, bmin + i - 1), snprintf(m.layer, sizeof m.layer, "L%d", bmin + i - 1);
@@ -133,6 +141,13 @@ int render_files_write(const char *out, const char *var_out, float exposure, con
             m.variance[0] = m.layers[0] = '\0';
             err = write_one(&fs, vpath, &var[i], 0.0f, &m);
         }
+        if (i == 0) m.sample_count[0] = '\0';   /* only the total names the counts */
+    }
+    if (!err && count_out) {
+        strcpy(m.kind, "sample-count");
+        strcpy(m.layer, "total");
+        m.variance[0] = m.layers[0] = '\0';
+        err = write_one(&fs, count_out, count, 0.0f, &m);
     }
     return finish(&fs, !err) || err;
 }

@@ -24,6 +24,10 @@ void render_files_variance_path(char *dst, size_t cap, const char *image_path, c
  * none of them (and the previous files, if any, whole). 0, or 1 after printing why. */
 int render_files_write(const char *out, const char *var_out, float exposure, const sidecar *meta,
                        const image *mean, const image *var, int nlayers, int bmin);
+/* The same, and if count_out the per-pixel sample counts of an adaptive render (`count`, kind
+ * sample-count, named in the image's sidecar), written and renamed together with the others. */
+int render_files_write_all(const char *out, const char *var_out, const char *count_out, const image *count,
+                           float exposure, const sidecar *meta, const image *mean, const image *var, int nlayers, int bmin);
 /* Reads the render at path (a .pfm with its sidecar), its layers if its sidecar lists some, and its
  * variance files if with_var. 0, or 1 after printing why (messages start with "pathlab CMD: "). */
 int render_files_read(render_files *rf, const char *path, int with_var, const char *cmd);

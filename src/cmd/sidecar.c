@@ -40,8 +40,13 @@ int sidecar_write_to(const sidecar *m, const char *image_path, const char *path)
     if (!(f = textfile_open(path, tmp, sizeof tmp))) return 1;
     sidecar_ranges_text(m, ranges, sizeof ranges);
     fprintf(f, "# pathlab: what made %s (read by pathlab merge, render --resume and grade)\n", image_path);
-    fprintf(f, "kind %s\nlayer %s\nsamples %s\nspp %" PRId64 "\nseed %" PRIu64 "\n", m->kind, m->layer, ranges,
-            sidecar_spp(m), m->seed);
+    fprintf(f, "kind %s\nlayer %s\nsamples %s\n", m->kind, m->layer, ranges);
+    if (m->adaptive[0])   /* the range is of the pixel with the most samples: its width is no spp */
+        fprintf(f, "spp adaptive: per pixel, mean %.6g, at most %" PRId64 "\nspp-mean %.9g\nspp-cap %" PRId64 "\nadaptive %s\n"
+                   "pilot-seed %" PRIu64 "\n", m->spp_mean, m->spp_cap, m->spp_mean, m->spp_cap, m->adaptive, m->pilot_seed);
+    else fprintf(f, "spp %" PRId64 "\n", sidecar_spp(m));
+    if (m->sample_count[0]) fprintf(f, "sample-count %s\n", m->sample_count);
+    fprintf(f, "seed %" PRIu64 "\n", m->seed);
     fprintf(f, "scene %s\nscene-id %s\nflags %s\ncamera %s\n", m->scene, m->scene_id, m->flags, m->camera);
     if (m->variance[0]) fprintf(f, "variance %s\n", m->variance);
     if (m->layers[0]) fprintf(f, "layers %s\n", m->layers);
@@ -98,6 +103,20 @@ static int parse_line(sidecar *m, const char *key, const char *v)
     if (!strcmp(key, "layers")) return set_text(m->layers, sizeof m->layers, v);
     if (!strcmp(key, "revision")) return set_text(m->revision, sizeof m->revision, v);
     if (!strcmp(key, "stopped")) return set_text(m->stopped, sizeof m->stopped, v);
+    if (!strcmp(key, "adaptive")) return set_text(m->adaptive, sizeof m->adaptive, v);
+    if (!strcmp(key, "sample-count")) return set_text(m->sample_count, sizeof m->sample_count, v);
+    if (!strcmp(key, "spp-mean")) {
+        m->spp_mean = strtod(v, &end);
+        return end == v || *end != '\0';
+    }
+    if (!strcmp(key, "pilot-seed")) {
+        m->pilot_seed = strtoull(v, &end, 10);
+        return end == v || *end != '\0';
+    }
+    if (!strcmp(key, "spp-cap")) {
+        m->spp_cap = strtoll(v, &end, 10);
+        return end == v || *end != '\0';
+    }
     return 0;
 }
 
@@ -172,6 +191,12 @@ static int differ(const char *cmd, const char *a_name, const char *b_name, const
 int sidecar_check_same(const sidecar *a, const sidecar *b, const char *cmd, const char *a_name, const char *b_name)
 {
     char sa[32], sb[32];
+    if (a->adaptive[0] || b->adaptive[0]) {
+        fprintf(stderr, "pathlab %s: %s is an adaptive render (%s): its pixels hold different numbers of samples, "
+                        "which %s cannot combine; render it again with a larger --spp cap or a smaller --target-error\n",
+                cmd, a->adaptive[0] ? a_name : b_name, a->adaptive[0] ? a->adaptive : b->adaptive, cmd);
+        return 1;
+    }
     if (strcmp(a->kind, b->kind)) return differ(cmd, a_name, b_name, "kind", a->kind, b->kind);
     if (strcmp(a->layer, b->layer)) return differ(cmd, a_name, b_name, "layer", a->layer, b->layer);
     if (strcmp(a->scene_id, b->scene_id)) return differ(cmd, a_name, b_name, "scene (its triangles or materials)", a->scene, b->scene);
@@ -189,8 +214,8 @@ int sidecar_render_command(const sidecar *m, int w, int h, const char *stem, cha
     int sw, sh;
     if (sscanf(m->camera, "eye %127s target %127s up %127s fov %63s size %dx%d", eye, target, up, fov, &sw, &sh) != 6) return 1;
     if (w <= 0 || h <= 0) w = sw, h = sh;
-    snprintf(out, cap, "pathlab render %s --eye %s --target %s --up %s --fov %s --size %dx%d %s --seed %llu --spp %lld "
+    snprintf(out, cap, "pathlab render %s --eye %s --target %s --up %s --fov %s --size %dx%d %s --seed %llu --spp %lld%s%s "
              "-o %s.pfm --variance %s_var.pfm", m->scene, eye, target, up, fov, w, h, m->flags, (unsigned long long)m->seed,
-             (long long)sidecar_spp(m), stem, stem);
+             (long long)(m->adaptive[0] ? m->spp_cap : sidecar_spp(m)), m->adaptive[0] ? " " : "", m->adaptive, stem, stem);
     return 0;
 }

@@ -3,7 +3,9 @@
  * merge and render --resume read it to refuse pieces that are not of the same render; grade prints it.
  * One "key value" per line, '#' starts a comment, unknown keys are skipped (later versions may add some):
  *   kind mean | variance       samples 0:384[,1000:1200]     seed 1         layer total | L3
- *   scene PATH   scene-id ID   flags ...   camera ...   variance FILE   layers A:B   revision R */
+ *   scene PATH   scene-id ID   flags ...   camera ...   variance FILE   layers A:B   revision R
+ * and for an adaptive render (docs/adaptive.md), whose pixel x holds the samples 0 .. n(x) - 1:
+ *   adaptive FLAGS   spp-cap N   spp-mean X   pilot-seed S   sample-count FILE */
 #ifndef PATHLAB_SIDECAR_H
 #define PATHLAB_SIDECAR_H
 #include <stddef.h>
@@ -26,6 +28,11 @@ typedef struct {
     char layers[32];               /* "A:B" when --split wrote FILE_LA.pfm .. FILE_LB.pfm ("" if none) */
     char revision[64];             /* pathlab's version (git describe) */
     char stopped[32];              /* "SIGINT", "SIGTERM" or "time" when stopped before the samples asked */
+    char adaptive[SIDECAR_TEXT];   /* the adaptive flags ("--target-error 0.01 --pilot 16 ..."); "" if uniform */
+    int64_t spp_cap;               /* adaptive: the --spp cap of n(x) */
+    double spp_mean;               /* adaptive: the mean over the pixels of their sample counts */
+    uint64_t pilot_seed;           /* adaptive: the seed of the pilot's streams (never kept) */
+    char sample_count[SIDECAR_TEXT];   /* adaptive: the sample-count image's file name ("" if none) */
 } sidecar;
 
 /* FILE -> FILE.meta */
@@ -45,7 +52,9 @@ void sidecar_ranges_text(const sidecar *m, char *dst, size_t cap);
  * one of a (the same samples twice), or there are too many ranges. */
 int sidecar_add_ranges(sidecar *a, const sidecar *b, const char *a_name, const char *b_name);
 /* Compares what must match for two renders to be merged (scene, flags, camera, seed); 0 if they
- * match, else 1 after printing "pathlab CMD: A and B differ in KEY: 'x' vs 'y'". */
+ * match, else 1 after printing "pathlab CMD: A and B differ in KEY: 'x' vs 'y'". Adaptive renders
+ * never match (1, saying so): their pixels hold different sample counts, which merge and --resume
+ * do not combine. */
 int sidecar_check_same(const sidecar *a, const sidecar *b, const char *cmd, const char *a_name, const char *b_name);
 /* The pathlab render command that makes this render again at w x h (0: its own size), with
  * -o STEM.pfm --variance STEM_var.pfm and as many spp as it holds. 0, or 1 if the camera line is unreadable. */

@@ -33,6 +33,7 @@ typedef struct {
     int64_t s0, s1;          /* the current pass: sample indices [s0, s1) */
     int done;                /* samples of the passes done */
     int tiles_x, ntiles;
+    int *tile_spp;           /* with pixel_spp: the largest count of each tile's pixels (else NULL) */
     int done_tiles;          /* of the current pass, under lock, for the progress line */
     progress pr;
     pthread_mutex_t lock;
@@ -63,8 +64,9 @@ static void render_pixel(const job *j, thread_state *t, int px, int py)
     const render_opts *o = j->o;
     int idx = py * j->cam->width + px;
     double *a = j->sums + (size_t)idx * NSUM * (size_t)j->out->nlayers;
-    int64_t i;
-    for (i = j->s0; i < j->s1; i++) {
+    int64_t i, end = j->s1;
+    if (o->pixel_spp && o->first + o->pixel_spp[idx] < end) end = o->first + o->pixel_spp[idx];
+    for (i = j->s0; i < end; i++) {
         pcg32 rng;
         float jx, jy;
         ray r;
@@ -89,10 +91,25 @@ static void describe(const job *j, char *buf, size_t cap, int spp)
     else snprintf(buf, cap, "%d of %d spp", spp, j->o->spp);
 }
 
-/* The fraction done: of the samples, or of the time with --time. */
+/* The pixel-samples of sample indices first + a .. first + b - 1: npixels * (b - a), or with
+ * pixel_spp only those of the pixels whose count goes past a (a pass costs what it renders). */
+static double work(const job *j, double a, double b)
+{
+    size_t npx = (size_t)j->cam->width * (size_t)j->cam->height, p;
+    double w = 0;
+    if (!j->o->pixel_spp) return (b - a) * (double)npx;
+    for (p = 0; p < npx; p++) {
+        double n = j->o->pixel_spp[p];
+        w += (n < b ? n : b) - (n < a ? n : a);
+    }
+    return w;
+}
+
+/* The fraction done: of the pixel-samples, or of the time with --time. */
 static double fraction(const job *j, double spp_now)
 {
-    double f = j->o->time_limit > 0 ? (clock_seconds() - j->pr.t0) / j->o->time_limit : spp_now / j->o->spp;
+    double f = j->o->time_limit > 0 ? (clock_seconds() - j->pr.t0) / j->o->time_limit
+                                    : work(j, 0, spp_now) / work(j, 0, j->o->spp);
     return f < 0 ? 0 : f > 1 ? 1 : f;
 }
 
@@ -105,6 +122,7 @@ static void render_tiles(void *ctx, int thread, int begin, int end)
     char what[96];
     for (tile = begin; tile < end; tile++) {
         int x0 = (tile % j->tiles_x) * TILE, y0 = (tile / j->tiles_x) * TILE;
+        if (j->tile_spp && j->o->first + j->tile_spp[tile] <= j->s0) continue;   /* every pixel done: costs nothing */
         for (y = y0; y < y0 + TILE && y < j->cam->height; y++)
             for (x = x0; x < x0 + TILE && x < j->cam->width; x++) render_pixel(j, &t, x, y);
         pthread_mutex_lock(&j->lock);
@@ -120,23 +138,41 @@ static void render_tiles(void *ctx, int thread, int begin, int end)
     j->ts[thread].nonfinite = t.nonfinite;
 }
 
+/* The most samples (up to left) after those done whose pixel-samples take at most `seconds` at
+ * per_work seconds each; work grows with n, so by bisection (exact division when uniform). */
+static int fit(const job *j, double seconds, double per_work, int left)
+{
+    int lo = 0, hi = left;
+    if (per_work <= 0) return left;
+    if (!j->o->pixel_spp) {
+        double n = floor(seconds / (per_work * (double)j->cam->width * j->cam->height));
+        return n < 0 ? 0 : n < left ? (int)n : left;
+    }
+    while (lo < hi) {   /* the largest n in [lo, hi] that fits */
+        int mid = lo + (hi - lo + 1) / 2;
+        if (work(j, j->done, (double)j->done + mid) * per_work <= seconds) lo = mid;
+        else hi = mid - 1;
+    }
+    return lo;
+}
+
 /* The samples of the next pass: 1 first, then about PASS_SECONDS' worth at the speed measured so
  * far, never past --spp, and with --time only if they fit in the time left (0: stop). */
 static int next_pass(const job *j)
 {
-    double elapsed = clock_seconds() - j->pr.t0, per_spp, n;
-    int left = j->o->spp - j->done;
+    double elapsed = clock_seconds() - j->pr.t0, per_work;
+    int left = j->o->spp - j->done, n;
     if (left <= 0) return 0;
     if (j->done == 0) return 1;
-    per_spp = elapsed / j->done;
-    n = per_spp > 0 ? floor(PASS_SECONDS / per_spp) : left;
+    per_work = elapsed / work(j, 0, j->done);
+    n = fit(j, PASS_SECONDS, per_work, left);
     if (n < 1) n = 1;
     if (j->o->time_limit > 0) {
-        double fit = per_spp > 0 ? floor((j->o->time_limit - elapsed) / per_spp) : left;
-        if (fit < n) n = fit;
+        int room = fit(j, j->o->time_limit - elapsed, per_work, left);
+        if (room < n) n = room;
         if (n < 1) return 0;
     }
-    return n < left ? (int)n : left;
+    return n;
 }
 
 /* The passes, until --spp is reached, --time is spent, or a signal asked to stop. */
@@ -156,13 +192,15 @@ static void run_passes(job *j, int nthreads)
     progress_end(&j->pr, fraction(j, j->done), what);
 }
 
-/* The means and the variances of the means of every layer, from the sums of n samples. */
-static void store_images(render_result *out, const double *sums, int n)
+/* The means and the variances of the means of every layer, from the sums of `done` samples (with
+ * pixel_spp, of min(pixel_spp[p], done) at pixel p). */
+static void store_images(render_result *out, const double *sums, int done, const int *pixel_spp)
 {
     size_t npx = (size_t)out->mean[0].w * (size_t)out->mean[0].h, p;
     int layer, ch;
     for (p = 0; p < npx; p++)
         for (layer = 0; layer < out->nlayers; layer++) {
+            int n = pixel_spp && pixel_spp[p] < done ? pixel_spp[p] : done;
             const double *a = sums + (p * (size_t)out->nlayers + (size_t)layer) * NSUM;
             float *m = out->mean[layer].px + 3 * p, *v = out->var[layer].px + 3 * p;
             for (ch = 0; ch < 3; ch++) {
@@ -215,6 +253,21 @@ static int alloc_layers(render_result *out, int n, int w, int h)
     return 0;
 }
 
+/* j->tile_spp: the largest pixel_spp of each tile; 1 if memory ran out. */
+static int tile_counts(job *j)
+{
+    int x, y, w = j->cam->width, h = j->cam->height;
+    j->tiles_x = (w + TILE - 1) / TILE;
+    j->ntiles = j->tiles_x * ((h + TILE - 1) / TILE);
+    if (!(j->tile_spp = calloc((size_t)j->ntiles, sizeof(int)))) return 1;
+    for (y = 0; y < h; y++)
+        for (x = 0; x < w; x++) {
+            int *t = &j->tile_spp[(y / TILE) * j->tiles_x + x / TILE], n = j->o->pixel_spp[y * w + x];
+            if (n > *t) *t = n;
+        }
+    return 0;
+}
+
 /* The job's buffers: per-thread states, the result's layers, the sums; 1 if memory ran out. */
 static int setup(job *j, int nthreads, render_result *out)
 {
@@ -224,7 +277,7 @@ static int setup(job *j, int nthreads, render_result *out)
     j->ts = alloc_thread_states(nthreads, o->split ? o->io.bmax + 1 : 0);
     if (!j->ts || alloc_layers(out, nlayers, j->cam->width, j->cam->height)) return 1;
     j->sums = calloc(npx * (size_t)nlayers, NSUM * sizeof(double));
-    return j->sums == NULL;
+    return j->sums == NULL || (o->pixel_spp && tile_counts(j));
 }
 
 int render(const scene *sc, const camera *cam, const render_opts *o, render_result *out)
@@ -238,6 +291,7 @@ int render(const scene *sc, const camera *cam, const render_opts *o, render_resu
         fprintf(stderr, "pathlab: out of memory for a %dx%d image%s\n", cam->width, cam->height, o->split ? " and its layers" : "");
         free_thread_states(j.ts, nthreads);
         free(j.sums);
+        free(j.tile_spp);
         render_result_free(out);
         return 1;
     }
@@ -250,13 +304,14 @@ int render(const scene *sc, const camera *cam, const render_opts *o, render_resu
     pthread_mutex_destroy(&j.lock);
     out->seconds = clock_seconds() - j.pr.t0;
     out->spp = j.done;
-    store_images(out, j.sums, j.done);
+    store_images(out, j.sums, j.done, o->pixel_spp);
     for (t = 0; t < nthreads; t++) {
         add_stats(&out->st, &j.ts[t].st);
         out->nonfinite += j.ts[t].nonfinite;
     }
     free_thread_states(j.ts, nthreads);
     free(j.sums);
+    free(j.tile_spp);
     return 0;
 }
 

@@ -22,12 +22,16 @@ typedef struct {
     int split;              /* --split: also one image layer per L_k */
     uint64_t seed;
     integrator_opts io;
+    const int *pixel_spp;   /* adaptive sampling: pixel p (row-major) gets only the samples first ..
+                               first + pixel_spp[p] - 1, each <= spp, chosen before the render
+                               (tracer/adaptive.h); NULL: every pixel gets spp */
 } render_opts;
 
 typedef struct {
     int nlayers;            /* 1 + (bmax - bmin + 1 with split) */
     image *mean, *var;      /* [0] the total, [1 + k - bmin] L_k with split; var: of the pixel's mean */
-    int spp;                /* the samples reached: first .. first + spp - 1 (fewer than asked if stopped) */
+    int spp;                /* the samples reached: first .. first + spp - 1 (fewer than asked if stopped);
+                               with pixel_spp, pixel p has min(pixel_spp[p], spp) of them */
     int interrupted;        /* the signal that stopped it after a pass (0: it ran to its end) */
     trace_stats st;
     uint64_t nonfinite;     /* samples that were NaN or infinite (counted, and dropped) */

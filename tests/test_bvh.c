@@ -7,11 +7,17 @@
  *     and from outside aimed exactly at shared vertices and at points of shared edges never miss.
  *  3. tmax: a hit at t is reported with tmax = next float above t, not with tmax = t.
  *  4. Builds with 1, 2, 3 and 8 threads give the same hits.
- *  5. offset_ray_origin: rays leaving points of triangles 1e5 from the origin never hit their own.
+ *  5. offset_ray_origin: rays leaving points of triangles 1e5 from the origin never hit their own;
+ *     its move is 16 ldexpf(1, ilogbf(fmaxf(scale, FLT_MIN)) - 23) (the libm formula it replaced)
+ *     for every kind of scale, and triangle_scale is the largest |coordinate|.
+ *  6. big_array (the BVH's arrays): aligned, writable, NULL when n * size overflows.
  * Sanitizer builds, and PATHLAB_TEST_QUICK=1, shrink the sizes. */
 #include "geometry/bvh.h"
 #include "geometry/ray.h"
+#include "sys/big_array.h"
 #include "check.h"
+#include <float.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -463,6 +469,36 @@ static void test_offset(void)
     soup_free(&s);
 }
 
+/* ---- offset_ray_origin's move, triangle_scale, big_array ------------------------------------ */
+static void test_offset_formula(void)
+{
+    static const float special[] = {0.0f, FLT_MIN, FLT_MIN / 2, 0x1p-149f, 1.0f, 1.5f, 0x1.fffffep0f, 2.0f,
+                                    1e-30f, 3e5f, FLT_MAX, INFINITY, NAN};
+    int bad = 0, i, n = (int)(sizeof special / sizeof special[0]);
+    for (i = 0; i < n + 100000; i++) {
+        float s = i < n ? special[i] : ldexpf(rnd_range(1.0f, 2.0f), (int)rnd_range(-140.0f, 127.0f));
+        float want = 16.0f * ldexpf(1.0f, ilogbf(fmaxf(s, FLT_MIN)) - 23);
+        vec3 o = offset_ray_origin(v3(0, 0, 0), v3(1, 0, 0), s);
+        if (memcmp(&o.x, &want, sizeof want) != 0) bad++;
+    }
+    check(bad == 0, "offset_libm_formula", "%d of %d scales moved otherwise than 16 ldexpf(1, ilogbf(fmaxf(s, FLT_MIN)) - 23)", bad, n + 100000);
+    check(triangle_scale(v3(1, -7, 2), v3(3, 0.5f, -6.5f), v3(-2, 4, 0)) == 7.0f &&
+          triangle_scale(v3(0, 0, 0), v3(0, 0, 0), v3(0, 0, -0.25f)) == 0.25f,
+          "triangle_scale", "the largest |coordinate| of the three corners");
+}
+
+static void test_big_array(void)
+{
+    size_t n = (size_t)1 << 20, i;   /* 8 MiB: the huge-page advice applies */
+    double *a = big_array(n, sizeof(double), 64), sum = 0;
+    for (i = 0; a && i < n; i++) a[i] = (double)i;
+    for (i = 0; a && i < n; i++) sum += a[i];
+    check(a && (uintptr_t)a % 64 == 0 && sum == (double)n * (double)(n - 1) / 2, "big_array",
+          "8 MiB: %s", a ? "aligned to 64, every element written and read back" : "NULL");
+    free(a);
+    check(big_array((size_t)-1 / 16 + 1, 16, 64) == NULL, "big_array_overflow", "n * size past SIZE_MAX gives NULL");
+}
+
 int main(void)
 {
     static const int sizes[] = {1, 2, 5, 17, 100, 1000, 20000};
@@ -479,5 +515,7 @@ int main(void)
     test_threads();
     test_watertight();
     test_offset();
+    test_offset_formula();
+    test_big_array();
     return check_summary();
 }

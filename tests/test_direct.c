@@ -62,7 +62,8 @@ static int build_scene(scene *s)
     m->mats = calloc((size_t)m->nmats, sizeof(material));
     s->Ng = malloc(sizeof(vec3) * 8);
     s->area = malloc(sizeof(float) * 8);
-    if (!m->P || !m->tri || !m->tri_mat || !m->mats || !s->Ng || !s->area) return 1;
+    s->scale = malloc(sizeof(float) * 8);
+    if (!m->P || !m->tri || !m->tri_mat || !m->mats || !s->Ng || !s->area || !s->scale) return 1;
     for (i = 0; i < 13; i++) m->P[i] = v3(P[i][0], P[i][1], P[i][2]);
     for (i = 0; i < 8; i++) {
         vec3 c;
@@ -71,6 +72,7 @@ static int build_scene(scene *s)
         c = v3_cross(v3_sub(m->P[T[i][1]], m->P[T[i][0]]), v3_sub(m->P[T[i][2]], m->P[T[i][0]]));
         s->area[i] = 0.5f * v3_length(c);
         s->Ng[i] = v3_normalize(c);
+        s->scale[i] = triangle_scale(m->P[T[i][0]], m->P[T[i][1]], m->P[T[i][2]]);
     }
     strcpy(m->mats[0].name, "diffuse");
     m->mats[0].Kd = v3(KD, KD, KD);

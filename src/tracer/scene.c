@@ -12,13 +12,15 @@ static int triangle_geometry(scene *sc)
     int i;
     sc->Ng = malloc(sizeof(vec3) * (size_t)m->ntris);
     sc->area = malloc(sizeof(float) * (size_t)m->ntris);
-    if (!sc->Ng || !sc->area) return 1;
+    sc->scale = malloc(sizeof(float) * (size_t)m->ntris);
+    if (!sc->Ng || !sc->area || !sc->scale) return 1;
     for (i = 0; i < m->ntris; i++) {
         const int *t = m->tri + 3 * i;
         vec3 c = v3_cross(v3_sub(m->P[t[1]], m->P[t[0]]), v3_sub(m->P[t[2]], m->P[t[0]]));
         float len = v3_length(c);
         sc->area[i] = 0.5f * len;
         sc->Ng[i] = v3_scale(c, 1.0f / len);   /* the parser dropped zero-area triangles */
+        sc->scale[i] = triangle_scale(m->P[t[0]], m->P[t[1]], m->P[t[2]]);
     }
     return 0;
 }
@@ -52,6 +54,7 @@ void scene_free(scene *sc)
     light_free(&sc->lights);
     free(sc->Ng);
     free(sc->area);
+    free(sc->scale);
     mesh_free(&sc->m);
 }
 
@@ -64,6 +67,5 @@ vec3 scene_hit_point(const scene *sc, const hit *h)
 
 float scene_triangle_scale(const scene *sc, int tri)
 {
-    const int *t = sc->m.tri + 3 * tri;
-    return triangle_scale(sc->m.P[t[0]], sc->m.P[t[1]], sc->m.P[t[2]]);
+    return sc->scale[tri];
 }

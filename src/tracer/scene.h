@@ -12,6 +12,7 @@ typedef struct {
     bvh *accel;
     vec3 *Ng;        /* unit geometric normal per triangle, (b-a) x (c-a): the front side */
     float *area;
+    float *scale;    /* triangle_scale per triangle (for offset_ray_origin): computed once, at load */
     light_set lights;
     double load_seconds, bvh_seconds;   /* parse time, BVH build time */
 } scene;
@@ -22,6 +23,6 @@ int scene_load(scene *sc, const char *path, int threads, int quiet);
 void scene_free(scene *sc);
 /* Hit point on triangle h->tri from its barycentrics. */
 vec3 scene_hit_point(const scene *sc, const hit *h);
-/* The largest |coordinate| of triangle tri's corners: the scale of its rounding errors. */
+/* The largest |coordinate| of triangle tri's corners: the scale of its rounding errors (stored). */
 float scene_triangle_scale(const scene *sc, int tri);
 #endif

@@ -28,7 +28,8 @@
 # PATHLAB_FLAGS="; --sampler sobol" gives two columns: default flags and sobol); a set whose first
 # word is a path to an executable uses that program instead (e.g. "/tmp/sobolsnap/pathlab --sampler sobol").
 # Prints the Markdown table; --doc also writes it into docs/performance.md under the heading
-# "Efficiency against Blender Cycles" (replacing that section). Raw data: OUT/cycles.tsv.
+# "Efficiency against Blender Cycles" (replacing that section). Raw data: OUT/cycles.tsv; the last
+# round's images: OUT/cycles_img/SCENE_LEVEL_cycles.exr, ..._columnN.pfm.
 #
 # Usage (from the project's root): make bench-cycles, or bench/cycles.sh [--doc]
 # Environment: PATHLAB, PATHLAB_FLAGS, REF_PATHLAB (first column's program), REF_PATHLAB_FLAGS (""),
@@ -70,7 +71,7 @@ command -v blender >/dev/null || die "blender missing (make bench-cycles install
 $PY -c 'import OpenImageIO' 2>/dev/null || die "python3-openimageio missing for $PY (make bench-cycles installs it)"
 [ -f "$CYCLES_REF" ] || die "$CYCLES_REF missing"
 for b in "${COL_BIN[@]}" "$REF_PATHLAB"; do [ -x "$b" ] || die "$b missing: build it first (make)"; done
-mkdir -p "$OUT" "$REF_DIR"
+mkdir -p "$OUT/cycles_img" "$REF_DIR"
 T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
 W=${SIZE%x*} H=${SIZE#*x}
 loadavg() { cut -d' ' -f1-3 /proc/loadavg; }
@@ -151,12 +152,14 @@ for r in $(seq 1 "$ROUNDS"); do
             read -r _ mp <<< "$($HELP mse "$T/c.exr" "${PREF[$sc]}" "${PVAR[$sc]}")"
             printf '%s\t%s\t%s\tCycles\t%s\t%s\t%s\t%s\n' "$r" "$sc" "$lv" "$t" "$lv" "$mc" "$mp" >> "$TSV"
             echo "round $r, $sc, $lv spp: Cycles $t s, MSE $mc (Cycles ref) $mp (pathlab ref)"
+            cp "$T/c.exr" "$OUT/cycles_img/${sc}_${lv}_cycles.exr"
             for i in "${!COL_BIN[@]}"; do
                 read -r pt pn <<< "$(pathlab "${COL_BIN[$i]}" "${COL_FLAGS[$i]}" "$sc" "$r" "$T/p.pfm" --time "$t")"
                 read -r _ mc <<< "$($HELP mse "$T/p.pfm" "${CREF[$sc]}" "${CVAR[$sc]}")"
                 read -r _ mp <<< "$($HELP mse "$T/p.pfm" "${PREF[$sc]}" "${PVAR[$sc]}")"
                 printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$r" "$sc" "$lv" "$i" "$pt" "$pn" "$mc" "$mp" >> "$TSV"
                 echo "  ${COL_LABEL[$i]}: $pt s, $pn spp, MSE $mc (Cycles ref) $mp (pathlab ref)"
+                cp "$T/p.pfm" "$OUT/cycles_img/${sc}_${lv}_column$((i + 1)).pfm"
             done
             LOADS="$LOADS $(cut -d' ' -f1 /proc/loadavg)"
         done
@@ -170,6 +173,9 @@ rev() { git -C "$(dirname "$1")" describe --always --dirty 2>/dev/null || echo '
 CPU=$(lscpu 2>/dev/null | sed -n 's/^Model name:[[:space:]]*//p' | head -n 1)
 {
     echo "## Efficiency against Blender Cycles"
+    echo
+    echo "Written by \`bench/cycles.sh --doc\` (\`make bench-cycles\`), which replaces this section when rerun; how it"
+    echo "measures: the script's head. What the figures show: the next section."
     echo
     echo "$DATE_START UTC, \`bench/cycles.sh\` ($((SEC_END - SEC_START)) s in all), ${CPU:-unknown CPU}, $(nproc) cores, Blender $BLENDER_VERSION."
     echo "Load average (1, 5, 15 min): $LOAD_START at the start, $LOAD_RENDERS before the renders, $LOAD_END at the end;"
@@ -233,7 +239,7 @@ echo "written: $MD (raw data $TSV)"
 if [ $DOC = 1 ]; then
     # replace the section (its heading to the next "## " heading) or append it
     awk -v md="$MD" '
-        /^## Efficiency against Blender Cycles/ { skip = 1; while ((getline l < md) > 0) print l; done = 1; print ""; next }
+        $0 == "## Efficiency against Blender Cycles" { skip = 1; while ((getline l < md) > 0) print l; done = 1; print ""; next }
         skip && /^## / { skip = 0 }
         !skip { print }
         END { if (!done) { print ""; while ((getline l < md) > 0) print l } }' docs/performance.md > "$T/perf.md"

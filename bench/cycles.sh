@@ -169,7 +169,7 @@ LOAD_END=$(loadavg) SEC_END=$(date +%s)
 
 # 3. the table
 MD=$OUT/cycles.md
-rev() { git -C "$(dirname "$1")" describe --always --dirty 2>/dev/null || echo '?'; }
+rev() { "$1" --version 2>/dev/null | awk '{ print $2 }' | grep . || echo '?'; }  # the revision built into it
 CPU=$(lscpu 2>/dev/null | sed -n 's/^Model name:[[:space:]]*//p' | head -n 1)
 {
     echo "## Efficiency against Blender Cycles"

@@ -106,8 +106,9 @@ bench-portable:
 # and 256 spp; writes the table into docs/performance.md. Optional: installs Debian's blender and
 # python3-openimageio if missing (not needed by anything else). Runs the NATIVE=1 build like `make
 # bench`; PATHLAB=PROG and PATHLAB_FLAGS="; --sampler sobol" (';' between columns) choose the columns.
-# About 10 minutes on 2 cores, plus about 12 the first time (references, cached outside git in
-# ~/.cache/pathlab-bench-cycles).
+# Each column costs as long as the Cycles renders (equal time): one column, one round took about 4
+# minutes on the loaded machine (load 6-9 on 2 cores), plus 15 the first time (the four references,
+# cached outside git in ~/.cache/pathlab-bench-cycles).
 bench-cycles-deps:
 	@command -v blender >/dev/null 2>&1 || { echo "installing blender (Cycles) for bench/cycles.sh"; \
 	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \

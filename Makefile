@@ -101,6 +101,26 @@ bench-portable:
 	$(MAKE) NATIVE=1 build-native/pathlab
 	bench/portable.sh ./pathlab build-native/pathlab $(BENCH_MESHES)
 
+# Efficiency against Blender Cycles 3.4 (bench/cycles.sh, issue 12): MSE x time at equal time on the
+# diffuse Cornell boxes (scenes/cornell and ../shared's CornellBox-Original), 200x200, 2 threads, 64
+# and 256 spp; writes the table into docs/performance.md. Optional: installs Debian's blender and
+# python3-openimageio if missing (not needed by anything else). Runs the NATIVE=1 build like `make
+# bench`; PATHLAB=PROG and PATHLAB_FLAGS="; --sampler sobol" (';' between columns) choose the columns.
+# Each column costs as long as the Cycles renders (equal time): one column, one round took about 4
+# minutes on the loaded machine (load 6-9 on 2 cores), plus 15 the first time (the four references,
+# cached outside git in ~/.cache/pathlab-bench-cycles).
+bench-cycles-deps:
+	@command -v blender >/dev/null 2>&1 || { echo "installing blender (Cycles) for bench/cycles.sh"; \
+	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
+	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq blender >/dev/null; }
+	@/usr/bin/python3 -c 'import OpenImageIO' >/dev/null 2>&1 || { echo "installing python3-openimageio for bench/cycles_images.py"; \
+	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
+	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq python3-openimageio >/dev/null; }
+
+bench-cycles: bench-cycles-deps
+	$(MAKE) NATIVE=1 build-native/pathlab
+	PATHLAB="$(or $(PATHLAB),build-native/pathlab)" PATHLAB_FLAGS="$(PATHLAB_FLAGS)" bench/cycles.sh --doc
+
 # How far `pathlab grade` can be trusted (tests/grade_calibration.sh): false alarms on >= 200 honest
 # renders of every estimator at 1 to 1024 spp, and the smallest bias found per size, spp and region.
 # About 13 minutes on 2 cores (renders cached in CALIB_DIR, default /tmp/pathlab-calib; a rerun only
@@ -131,4 +151,4 @@ mutants:
 clean:
 	rm -rf build build-san build-native pathlab
 
-.PHONY: all run test test-deps stress refs bench bench-native bench-portable grade-calibration clean mutants test-parallel test-slurm
+.PHONY: all run test test-deps stress refs bench bench-native bench-portable bench-cycles bench-cycles-deps grade-calibration clean mutants test-parallel test-slurm

@@ -76,9 +76,11 @@ static void describe_render(const render_args *a, const scene *s, sidecar *m)
     snprintf(m->scene_id, sizeof m->scene_id, "fnv1a64:%016" PRIx64, mesh_fingerprint(&s->m));
     snprintf(bmax, sizeof bmax, io->bmax == BOUNCES_INF ? "inf" : "%d", io->bmax);
     snprintf(rr, sizeof rr, io->rr_depth < 0 ? "off" : "%d", io->rr_depth);
-    snprintf(m->flags, sizeof m->flags, "--bounces %d:%s --light %s --dir %s --direct %s --rr %s --pixel-offset %.9g%s",
+    /* --sampler only when not the default: the sidecars written before it existed stay comparable */
+    snprintf(m->flags, sizeof m->flags, "--bounces %d:%s --light %s --dir %s --direct %s --rr %s --pixel-offset %.9g%s%s%s",
              io->bmin, bmax, LIGHT_STRATEGY_NAMES[io->light], DIR_STRATEGY_NAMES[io->dir], DIRECT_STRATEGY_NAMES[io->direct],
-             rr, o->pixel_offset, o->pixel_center ? " --pixel-center" : "");
+             rr, o->pixel_offset, o->pixel_center ? " --pixel-center" : "", o->sampler != SAMPLER_INDEPENDENT ? " --sampler " : "",
+             o->sampler != SAMPLER_INDEPENDENT ? SAMPLER_NAMES[o->sampler] : "");
     snprintf(m->camera, sizeof m->camera, "eye %.9g,%.9g,%.9g target %.9g,%.9g,%.9g up %.9g,%.9g,%.9g fov %.9g size %dx%d",
              v->eye.x, v->eye.y, v->eye.z, v->target.x, v->target.y, v->target.z, v->up.x, v->up.y, v->up.z, v->fov,
              v->width, v->height);

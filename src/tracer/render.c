@@ -57,7 +57,7 @@ static void add_sample(const job *j, const thread_state *t, double *a, vec3 L)
     }
 }
 
-/* The samples s0..s1-1 of pixel (px, py), each from its own stream (seed, pixel, sample index). */
+/* The samples s0..s1-1 of pixel (px, py), each addressed by (seed, pixel, sample index) in --sampler. */
 static void render_pixel(const job *j, thread_state *t, int px, int py)
 {
     const render_opts *o = j->o;
@@ -65,16 +65,15 @@ static void render_pixel(const job *j, thread_state *t, int px, int py)
     double *a = j->sums + (size_t)idx * NSUM * (size_t)j->out->nlayers;
     int64_t i;
     for (i = j->s0; i < j->s1; i++) {
-        pcg32 rng;
-        float jx, jy;
+        sampler smp;
+        float jx = 0.5f, jy = 0.5f;
         ray r;
         vec3 L;
-        pcg32_for_sample(&rng, o->seed, (uint64_t)idx, (uint64_t)i);
-        jx = o->pixel_center ? 0.5f : pcg32_float(&rng);
-        jy = o->pixel_center ? 0.5f : pcg32_float(&rng);
+        sampler_start(&smp, o->sampler, o->seed, (uint64_t)idx, (uint64_t)i);
+        if (!o->pixel_center) sampler_2d(&smp, SAMPLER_DIM_PIXEL, &jx, &jy);
         /* image rows run top to bottom here, gKit's bottom to top: its (x + o, y + o) is our (x + o, row + 1 - o) */
         r = camera_ray(j->cam, (float)px + (jx + (o->pixel_offset - 0.5f)), (float)py + (jy - (o->pixel_offset - 0.5f)));
-        L = integrate(j->sc, &o->io, &r, &rng, t->Lk, &t->st);
+        L = integrate(j->sc, &o->io, &r, &smp, t->Lk, &t->st);
         if (v3_is_finite(L)) add_sample(j, t, a, L);
         else t->nonfinite++;   /* counted, reported, dropped */
     }

@@ -21,6 +21,7 @@ typedef struct {
                                bottom row as in gKit/OpenGL: 0.5 (pbrt, Mitsuba, gKit's x + .5) or 0 */
     int split;              /* --split: also one image layer per L_k */
     uint64_t seed;
+    sampler_kind sampler;   /* --sampler: independent (the default) or sobol */
     integrator_opts io;
 } render_opts;
 

@@ -1,0 +1,107 @@
+/* sampler.c — independent samples (a PCG32 stream per sample) and padded, shuffled, Owen-scrambled
+ * Sobol samples (Burley 2020). For sobol, dimension d of sample i of a pixel is
+ *   j = owen_scramble(i, shuffle_d)                     a permutation of the indices that maps every
+ *                                                       aligned block of 2^m indices onto another one,
+ *   u = owen_scramble(sobol_dim0(j), scramble_d)        (and sobol_dim1(j) for the second coordinate),
+ * with shuffle_d and scramble_d hashed from (seed, pixel, d). Each 2D set is thus the first two Sobol
+ * dimensions, a (0, 2)-sequence in base 2: the first 2^m samples of a pixel put one point in every
+ * elementary interval of area 2^-m, whatever m; the shuffle decorrelates the sets from one another
+ * (padding), so only the first two Sobol dimensions are needed, never a table of direction numbers. */
+#include "tracer/sampler.h"
+#include <stddef.h>
+
+const char *const SAMPLER_NAMES[] = {"independent", "sobol", 0};
+
+static uint32_t reverse_bits(uint32_t x)
+{
+    x = ((x & 0x55555555u) << 1) | ((x >> 1) & 0x55555555u);
+    x = ((x & 0x33333333u) << 2) | ((x >> 2) & 0x33333333u);
+    x = ((x & 0x0F0F0F0Fu) << 4) | ((x >> 4) & 0x0F0F0F0Fu);
+    x = ((x & 0x00FF00FFu) << 8) | ((x >> 8) & 0x00FF00FFu);
+    return (x << 16) | (x >> 16);
+}
+
+/* Van der Corput: the bits of the index mirrored about the binary point. */
+uint32_t sobol_dim0(uint32_t index) { return reverse_bits(index); }
+
+/* The second Sobol dimension, primitive polynomial x + 1: direction numbers v_1 = 1/2 and
+ * v_k = v_{k-1} xor v_{k-1}/2 (the rows of Pascal's triangle mod 2); u = xor of v_k over the bits k of i. */
+uint32_t sobol_dim1(uint32_t index)
+{
+    uint32_t u = 0, v = 0x80000000u;
+    for (; index; index >>= 1, v ^= v >> 1)
+        if (index & 1u) u ^= v;
+    return u;
+}
+
+/* Owen's nested uniform scrambling of a 32-bit fraction x, by hashing (Burley 2020, section 3): each
+ * bit is flipped or not by a hash of the bits above it and the seed. A hash in which every bit
+ * depends only on the bits below it (Laine and Karras 2011, with Burley's constants) does that to
+ * the bits in reverse order. */
+uint32_t owen_scramble(uint32_t x, uint32_t seed)
+{
+    x = reverse_bits(x);
+    x += seed;
+    x ^= x * 0x6c50b47cu;
+    x ^= x * 0xb82f1e52u;
+    x ^= x * 0xc7afe638u;
+    x ^= x * 0x8d22f6e6u;
+    return reverse_bits(x);
+}
+
+void sampler_start(sampler *s, sampler_kind kind, uint64_t seed, uint64_t pixel, uint64_t index)
+{
+    s->kind = kind;
+    if (kind == SAMPLER_INDEPENDENT) {
+        pcg32_for_sample(&s->rng, seed, pixel, index);
+        return;
+    }
+    s->pixel_seed = splitmix64_mix(splitmix64_mix(seed) ^ pixel);
+    s->index = (uint32_t)index;   /* 2^32 samples a pixel at most: past that the points repeat */
+}
+
+void sampler_from_stream(sampler *s, const pcg32 *r)
+{
+    s->kind = SAMPLER_INDEPENDENT;
+    s->rng = *r;
+}
+
+/* Sobol coordinates of dimension dim: the shuffled index, then coordinate 0 (and 1 if u2). */
+static void sobol_point(const sampler *s, uint32_t dim, uint32_t *u1, uint32_t *u2)
+{
+    uint64_t h = splitmix64_at(s->pixel_seed, dim), h2 = splitmix64_mix(h);
+    uint32_t j = owen_scramble(s->index, (uint32_t)h);
+    *u1 = owen_scramble(sobol_dim0(j), (uint32_t)(h >> 32));
+    if (u2) *u2 = owen_scramble(sobol_dim1(j), (uint32_t)h2);
+}
+
+static float to_float(uint32_t x) { return (float)(x >> 8) * (1.0f / 16777216.0f); }
+
+float sampler_1d(sampler *s, uint32_t dim)
+{
+    uint32_t u;
+    if (s->kind == SAMPLER_INDEPENDENT) return pcg32_float(&s->rng);
+    sobol_point(s, dim, &u, NULL);
+    return to_float(u);
+}
+
+void sampler_2d(sampler *s, uint32_t dim, float *u1, float *u2)
+{
+    uint32_t a, b;
+    if (s->kind == SAMPLER_INDEPENDENT) {
+        *u1 = pcg32_float(&s->rng);
+        *u2 = pcg32_float(&s->rng);
+        return;
+    }
+    sobol_point(s, dim, &a, &b);
+    *u1 = to_float(a);
+    *u2 = to_float(b);
+}
+
+double sampler_1d_32bit(sampler *s, uint32_t dim)
+{
+    uint32_t u;
+    if (s->kind == SAMPLER_INDEPENDENT) return pcg32_double(&s->rng);
+    sobol_point(s, dim, &u, NULL);
+    return (double)u * (1.0 / 4294967296.0);
+}

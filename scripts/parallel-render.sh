@@ -43,6 +43,7 @@ usage() {
     exit 2
 }
 die() { echo "parallel-render: $*" >&2; exit 2; }
+. "$(dirname "$0")/pieces.sh"
 
 pieces=4 jobs='' pathlab=./pathlab retries=0 keep=0 dry=0 spp=''
 logins=() hosts=() pos=() flags=()
@@ -61,19 +62,11 @@ while [ $# -gt 0 ]; do
         --spp) [ $# -ge 2 ] || usage; spp=$2; shift 2 ;;
         -h|--help) usage ;;
         -*) flags+=("$1"); shift ;;
-        *) if [ ${#pos[@]} -lt 2 ] && [ ${#flags[@]} -eq 0 ]; then pos+=("$1"); else flags+=("$1"); fi; shift ;;
+        *) pieces_word "$1"; shift ;;
     esac
 done
-[ ${#pos[@]} -eq 2 ] || usage
-scene=${pos[0]} out=${pos[1]}
-[ -n "$spp" ] || die "give the samples per pixel: --spp N"
-
-case $spp in ''|*[!0-9]*) die "--spp must be a positive whole number, not '$spp'" ;; esac
-case $pieces in ''|*[!0-9]*) die "--pieces must be a positive whole number, not '$pieces'" ;; esac
+pieces_words_done
 case $retries in ''|*[!0-9]*) die "--retries must be a whole number, not '$retries'" ;; esac
-[ "$spp" -ge 1 ] || die "--spp must be at least 1"
-[ "$pieces" -ge 1 ] || die "--pieces must be at least 1"
-[ "$pieces" -le "$spp" ] || die "$pieces pieces of $spp samples: some would be empty; use at most --pieces $spp"
 case $out in *.pfm) ;; *) die "the output must be a .pfm file (linear float, what merge writes), not '$out'" ;; esac
 command -v parallel >/dev/null 2>&1 || die "GNU parallel is not installed: apt-get install parallel (Debian/Ubuntu)"
 [ -x "$pathlab" ] || die "no pathlab program at '$pathlab' (run make, or give --pathlab PROG)"
@@ -93,7 +86,7 @@ dir=$out.pieces
 # The pieces: k, first sample, end sample (k*N/J rounded down, so sizes differ by at most one).
 ranges=()
 for ((k = 0; k < pieces; k++)); do
-    ranges+=("$k $((k * spp / pieces)) $(((k + 1) * spp / pieces))")
+    ranges+=("$k $(piece_first "$k" "$spp" "$pieces") $(piece_end "$k" "$spp" "$pieces")")
 done
 
 echo "parallel-render: $scene, $spp samples per pixel in $pieces pieces: ${flags[*]+${flags[*]}}"

@@ -31,6 +31,7 @@ usage() {
     exit 2
 }
 die() { echo "submit: $*" >&2; exit 2; }
+. "$here/../pieces.sh"
 
 pieces=8 cpus=1 time='' pathlab=./pathlab dep=afterany keep=0 dry=0 spp=''
 pos=() flags=()
@@ -48,20 +49,12 @@ while [ $# -gt 0 ]; do
         --spp) [ $# -ge 2 ] || usage; spp=$2; shift 2 ;;
         -h|--help) usage ;;
         -*) flags+=("$1"); shift ;;
-        *) if [ ${#pos[@]} -lt 2 ] && [ ${#flags[@]} -eq 0 ]; then pos+=("$1"); else flags+=("$1"); fi; shift ;;
+        *) pieces_word "$1"; shift ;;
     esac
 done
-[ ${#pos[@]} -eq 2 ] || usage
-scene=${pos[0]} out=${pos[1]}
-[ -n "$spp" ] || die "give the samples per pixel: --spp N"
-
-case $spp in ''|*[!0-9]*) die "--spp must be a positive whole number, not '$spp'" ;; esac
-case $pieces in ''|*[!0-9]*) die "--pieces must be a positive whole number, not '$pieces'" ;; esac
+pieces_words_done
 case $cpus in ''|*[!0-9]*) die "--cpus must be a positive whole number, not '$cpus'" ;; esac
-[ "$spp" -ge 1 ] || die "--spp must be at least 1"
-[ "$pieces" -ge 1 ] || die "--pieces must be at least 1"
 [ "$cpus" -ge 1 ] || die "--cpus must be at least 1"
-[ "$pieces" -le "$spp" ] || die "$pieces pieces of $spp samples: some would be empty; use at most --pieces $spp"
 case $out in *.pfm) ;; *) die "the output must be a .pfm file (linear float, what merge writes), not '$out'" ;; esac
 for f in "${flags[@]+"${flags[@]}"}"; do
     case $f in
@@ -88,7 +81,7 @@ merge_cmd=(sbatch --parsable --dependency="$dep:ARRAY_ID" --kill-on-invalid-dep=
 
 echo "submit: $scene, $spp samples per pixel in $pieces tasks of $cpus CPU(s), merged into $out (files in $dir/)"
 for ((k = 0; k < pieces; k++)); do
-    printf '  task %d: samples %d:%d\n' "$k" $((k * spp / pieces)) $(((k + 1) * spp / pieces))
+    printf '  task %d: samples %d:%d\n' "$k" "$(piece_first "$k" "$spp" "$pieces")" "$(piece_end "$k" "$spp" "$pieces")"
 done
 if [ $dry = 1 ]; then
     echo "  ${array_cmd[*]}"

@@ -14,7 +14,7 @@
 #include "cmd/grade_class.h"
 #include "cmd/grade_diagnose.h"
 #include "cmd/grade_print.h"
-#include "cmd/sidecar.h"
+#include "cmd/render_files.h"
 
 #define GRADE_USAGE \
     "usage: pathlab grade IMAGE.pfm... | FOLDER --ref REF.pfm [--alpha A] [--report FILE.md|FILE.csv]\n" \
@@ -187,8 +187,7 @@ static int read_reference(reference *R, const grade_args *a)
     snprintf(var_path, sizeof var_path, "%.*s_var.pfm", (int)stem, a->ref);
     R->has_meta = sidecar_read(&R->meta, a->ref) == 0;
     if (!a->var && !access_ok(var_path) && R->has_meta && R->meta.variance[0])   /* the variance its sidecar names */
-        snprintf(var_path, sizeof var_path, "%.*s%s", strchr(R->meta.variance, '/') || !strrchr(a->ref, '/') ? 0
-                 : (int)(strrchr(a->ref, '/') + 1 - a->ref), a->ref, R->meta.variance);
+        render_files_variance_path(var_path, sizeof var_path, a->ref, R->meta.variance);
     R->var_path = a->var ? a->var : (access_ok(var_path) ? var_path : NULL);
     if (R->var_path) {
         if (img_read_pfm(&R->var, R->var_path)) return 2;

@@ -112,9 +112,7 @@ static int prepare_resume(render_args *a, const sidecar *now, render_files *prev
         return 2;
     }
     if (had.variance[0] && !a->variance) {   /* keep its variance up to date, where it is */
-        const char *slash = strrchr(a->out, '/');
-        if (strchr(had.variance, '/')) snprintf(var_out, cap, "%s", had.variance);
-        else snprintf(var_out, cap, "%.*s%s", slash ? (int)(slash + 1 - a->out) : 0, a->out, had.variance);
+        render_files_variance_path(var_out, cap, a->out, had.variance);
         a->variance = var_out;
     }
     have = sidecar_spp(&had);

@@ -137,8 +137,7 @@ int render_files_write(const char *out, const char *var_out, float exposure, con
     return finish(&fs, !err) || err;
 }
 
-/* The variance file named by the sidecar of image_path: beside the image if a bare name. */
-static void variance_path(char *dst, size_t cap, const char *image_path, const char *name)
+void render_files_variance_path(char *dst, size_t cap, const char *image_path, const char *name)
 {
     char dir[4096];
     int n;
@@ -195,7 +194,7 @@ static int read_layer(render_files *rf, int i, const char *path, int with_var, c
         fprintf(stderr, "pathlab %s: %s was rendered without --variance: its variance is unknown\n", cmd, p);
         return 1;
     }
-    variance_path(vp, sizeof vp, p, i ? m.variance : rf->meta.variance);
+    render_files_variance_path(vp, sizeof vp, p, i ? m.variance : rf->meta.variance);
     return read_one(cmd, vp, "variance", &rf->meta, &rf->var[i], &vm);
 }
 

@@ -15,6 +15,9 @@ typedef struct {
 
 /* out.pfm, layer k -> out_Lk.pfm */
 void render_files_layer_path(char *dst, size_t cap, const char *out, int k);
+/* The variance file that the sidecar of image_path names (name): beside the image if a bare name,
+ * else the path as written ("" if too long). */
+void render_files_variance_path(char *dst, size_t cap, const char *image_path, const char *name);
 /* Writes mean[0..nlayers-1] to out (layer i >= 1 to out_L{bmin+i-1}) and, if var_out, var[] the same
  * way, each with its sidecar: meta with kind, layer and variance filled in per file. All files are
  * written under temporary names first and renamed together: a failure or a second Ctrl-C leaves

@@ -44,12 +44,14 @@ static void draw(progress *p, double frac, const char *what, int final)
     p->last = clock_seconds();
 }
 
+int progress_due(const progress *p)
+{
+    return p->on && clock_seconds() - p->last >= (p->tty ? 0.1 : PROGRESS_LOG_SECONDS);
+}
+
 void progress_update(progress *p, double frac, const char *what)
 {
-    double now;
-    if (!p->on) return;
-    now = clock_seconds();
-    if (now - p->last >= (p->tty ? 0.1 : PROGRESS_LOG_SECONDS)) draw(p, frac, what, 0);
+    if (progress_due(p)) draw(p, frac, what, 0);
 }
 
 void progress_end(progress *p, double frac, const char *what)

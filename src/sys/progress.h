@@ -13,6 +13,8 @@ typedef struct {
 
 /* Starts the clock; draws nothing if on is 0. */
 void progress_start(progress *p, int on);
+/* 1 if progress_update would draw now: callers build their `what` only then. */
+int progress_due(const progress *p);
 /* frac in [0, 1] done; `what` says where ("384 of 4096 spp"). Draws when due, with the elapsed time and the ETA. */
 void progress_update(progress *p, double frac, const char *what);
 /* The last draw (100% or where it stopped) and a newline on a terminal. */

@@ -108,7 +108,7 @@ static void render_tiles(void *ctx, int thread, int begin, int end)
             for (x = x0; x < x0 + TILE && x < j->cam->width; x++) render_pixel(j, &t, x, y);
         pthread_mutex_lock(&j->lock);
         j->done_tiles++;
-        if (j->pr.on) {
+        if (progress_due(&j->pr)) {   /* the line is built only when it is drawn */
             double spp_now = j->done + (double)(j->s1 - j->s0) * j->done_tiles / j->ntiles;
             describe(j, what, sizeof what, j->done);
             progress_update(&j->pr, fraction(j, spp_now), what);

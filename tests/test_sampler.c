@@ -3,7 +3,8 @@
  *      pathlab before --sampler, bit for bit);
  *   2. the first two Sobol dimensions, and each scrambled, shuffled 2D set of --sampler sobol, are
  *      (0, m, 2)-nets for every m <= 10: one point in every elementary interval of area 2^-m, for
- *      every shape 2^-a x 2^-(m-a); a 1D dimension puts one point in each of 2^m strata;
+ *      every shape 2^-a x 2^-(m-a); a 1D dimension puts one point in each of 2^m strata; each of
+ *      the SAMPLER_GROUPS groups of a pixel (indices g, g + K, g + 2K...) is such a net on its own;
  *   3. the same sample is the same numbers (addressable), and different pixels and dimensions
  *      give different points;
  *   4. averages over pixels of a few coordinates are 1/2 within 5 standard errors (a gross bias). */
@@ -29,14 +30,14 @@ static int is_net(const uint32_t *x, const uint32_t *y, int m)
 }
 
 /* 1 if sampler_1d at dimension dim puts one of the first 2^m samples of the pixel in each of 2^m strata. */
-static int one_per_stratum(uint32_t pixel, uint32_t dim, int m)
+static int one_per_stratum(uint32_t pixel, uint32_t dim, int m, int g)
 {
     static unsigned char seen[1 << 10];
     int i;
     memset(seen, 0, sizeof seen);
     for (i = 0; i < 1 << m; i++) {
         sampler s;
-        sampler_start(&s, SAMPLER_SOBOL, 7, pixel, (uint64_t)i);
+        sampler_start(&s, SAMPLER_SOBOL, 7, pixel, (uint64_t)i * SAMPLER_GROUPS + (uint64_t)g);
         if (seen[(int)(sampler_1d(&s, dim) * (float)(1 << m))]++) return 0;
     }
     return 1;
@@ -71,21 +72,23 @@ static void check_sobol_nets(void)
     check(plain, "sobol_dim0, sobol_dim1: the first 2^m points are a (0, m, 2)-net, m = 0..10", NULL);
     for (m = 0; m <= 10; m++) {
         uint32_t pixel, dim;
+        int g;
         for (pixel = 0; pixel < 20; pixel++)
-            for (dim = 0; dim < 12; dim++) {
-                for (i = 0; i < 1 << m; i++) {
-                    sampler s;
-                    float u1, u2;
-                    sampler_start(&s, SAMPLER_SOBOL, 7, pixel, (uint64_t)i);
-                    sampler_2d(&s, dim, &u1, &u2);
-                    x[i] = (uint32_t)(u1 * 16777216.0f) << 8, y[i] = (uint32_t)(u2 * 16777216.0f) << 8;
+            for (dim = 0; dim < 12; dim++)
+                for (g = 0; g < SAMPLER_GROUPS; g++) {
+                    for (i = 0; i < 1 << m; i++) {
+                        sampler s;
+                        float u1, u2;
+                        sampler_start(&s, SAMPLER_SOBOL, 7, pixel, (uint64_t)i * SAMPLER_GROUPS + (uint64_t)g);
+                        sampler_2d(&s, dim, &u1, &u2);
+                        x[i] = (uint32_t)(u1 * 16777216.0f) << 8, y[i] = (uint32_t)(u2 * 16777216.0f) << 8;
+                    }
+                    scrambled = scrambled && is_net(x, y, m);
+                    strata = strata && one_per_stratum(pixel, dim, m, g);
                 }
-                scrambled = scrambled && is_net(x, y, m);
-                strata = strata && one_per_stratum(pixel, dim, m);
-            }
     }
-    check(scrambled, "sobol: each 2D set of 20 pixels x 12 dimensions is a (0, m, 2)-net for m = 0..10", NULL);
-    check(strata, "sobol: sampler_1d puts one of the first 2^m samples in each of 2^m strata", NULL);
+    check(scrambled, "sobol: each group's 2D set, 20 pixels x 12 dimensions x 4 groups, is a (0, m, 2)-net for m = 0..10", NULL);
+    check(strata, "sobol: sampler_1d puts one of a group's first 2^m samples in each of 2^m strata", NULL);
 }
 
 static void check_sobol_addressable(void)
@@ -102,6 +105,11 @@ static void check_sobol_addressable(void)
     sampler_2d(&b, 4, &v1, &v2);
     sampler_2d(&a, 5, &u2, &u1);
     check(v1 != u1 || v2 != u2, "sobol: another pixel or dimension, another point", NULL);
+    sampler_start(&a, SAMPLER_SOBOL, 3, 500, 8);
+    sampler_start(&b, SAMPLER_SOBOL, 3, 500, 9);   /* the same point index 2 of groups 0 and 1 */
+    sampler_2d(&a, 4, &u1, &u2);
+    sampler_2d(&b, 4, &v1, &v2);
+    check(v1 != u1 || v2 != u2, "sobol: the groups of a pixel are scrambled differently", NULL);
 }
 
 /* The mean of coordinate dim over n pixels x 16 samples, as a z-score against 1/2. */

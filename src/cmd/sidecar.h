@@ -3,7 +3,9 @@
  * merge and render --resume read it to refuse pieces that are not of the same render; grade prints it.
  * One "key value" per line, '#' starts a comment, unknown keys are skipped (later versions may add some):
  *   kind mean | variance       samples 0:384[,1000:1200]     seed 1         layer total | L3
- *   scene PATH   scene-id ID   flags ...   camera ...   variance FILE   layers A:B   revision R */
+ *   scene PATH   scene-id ID   flags ...   camera ...   variance FILE   layers A:B   revision R
+ *   sampler sobol    variance-dof 3     (only when not independent: absent means independent, whatever
+ *                                        the default of --sampler, and a variance with many dof) */
 #ifndef PATHLAB_SIDECAR_H
 #define PATHLAB_SIDECAR_H
 #include <stddef.h>
@@ -26,6 +28,8 @@ typedef struct {
     char layers[32];               /* "A:B" when --split wrote FILE_LA.pfm .. FILE_LB.pfm ("" if none) */
     char revision[64];             /* pathlab's version (git describe) */
     char stopped[32];              /* "SIGINT", "SIGTERM" or "time" when stopped before the samples asked */
+    char sampler[16];              /* --sampler: "" (no line) is independent, in every sidecar ever written */
+    int variance_dof;              /* degrees of freedom of the variance of the mean: 0 (no line) many */
 } sidecar;
 
 /* FILE -> FILE.meta */
@@ -37,6 +41,8 @@ int sidecar_write_to(const sidecar *m, const char *image_path, const char *file)
 /* Reads the sidecar of image_path. 0; -1 if it does not exist (nothing printed); 1 after printing
  * "FILE.meta:LINE: why" for a malformed one. */
 int sidecar_read(sidecar *m, const char *image_path);
+/* 1 if the render was made with --sampler sobol (absent: independent). */
+int sidecar_is_sobol(const sidecar *m);
 /* The number of samples of the ranges. */
 int64_t sidecar_spp(const sidecar *m);
 /* "0:384,1000:1200" */

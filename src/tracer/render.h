@@ -28,6 +28,7 @@ typedef struct {
 typedef struct {
     int nlayers;            /* 1 + (bmax - bmin + 1 with split) */
     image *mean, *var;      /* [0] the total, [1 + k - bmin] L_k with split; var: of the pixel's mean */
+    int variance_dof;       /* the degrees of freedom of var: 0 many (independent), 3 sobol (pixel_sums.h) */
     int spp;                /* the samples reached: first .. first + spp - 1 (fewer than asked if stopped) */
     int interrupted;        /* the signal that stopped it after a pass (0: it ran to its end) */
     trace_stats st;

@@ -3,7 +3,10 @@
  *   j = owen_scramble(i, shuffle_d)                     a permutation of the indices that maps every
  *                                                       aligned block of 2^m indices onto another one,
  *   u = owen_scramble(sobol_dim0(j), scramble_d)        (and sobol_dim1(j) for the second coordinate),
- * with shuffle_d and scramble_d hashed from (seed, pixel, d). Each 2D set is thus the first two Sobol
+ * with shuffle_d and scramble_d hashed from (seed, pixel, g, d), where the sample belongs to group
+ * g = index mod SAMPLER_GROUPS and i = index div SAMPLER_GROUPS is its index in the group: the K
+ * groups are K independent scramblings of one Sobol sequence, so the spread between their means
+ * estimates the variance of the pixel's mean (pixel_sums.c). Each 2D set is thus the first two Sobol
  * dimensions, a (0, 2)-sequence in base 2: the first 2^m samples of a pixel put one point in every
  * elementary interval of area 2^-m, whatever m; the shuffle decorrelates the sets from one another
  * (padding), so only the first two Sobol dimensions are needed, never a table of direction numbers. */
@@ -56,8 +59,9 @@ void sampler_start(sampler *s, sampler_kind kind, uint64_t seed, uint64_t pixel,
         pcg32_for_sample(&s->rng, seed, pixel, index);
         return;
     }
-    s->pixel_seed = splitmix64_mix(splitmix64_mix(seed) ^ pixel);
-    s->index = (uint32_t)index;   /* 2^32 samples a pixel at most: past that the points repeat */
+    /* group g = index mod SAMPLER_GROUPS: its own scrambling (seeds from (seed, pixel, g)), Sobol index i div K */
+    s->pixel_seed = splitmix64_at(splitmix64_mix(splitmix64_mix(seed) ^ pixel), index % SAMPLER_GROUPS);
+    s->index = (uint32_t)(index / SAMPLER_GROUPS);   /* render refuses indices past SAMPLER_SOBOL_MAX_INDEX */
 }
 
 void sampler_from_stream(sampler *s, const pcg32 *r)

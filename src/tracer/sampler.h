@@ -6,21 +6,28 @@
  *                the dimension argument is ignored, which keeps pathlab's images bit for bit.
  *   sobol        Owen-scrambled Sobol points (Burley 2020, "Practical Hash-based Owen Scrambling",
  *                JCGT 9(4)), padded: every dimension is its own shuffled, scrambled 1D or 2D Sobol
- *                set, with seeds hashed from (seed, pixel, dimension). Within one pixel the samples
- *                are NOT independent: their sample variance does not estimate the variance of the mean. */
+ *                set, with seeds hashed from (seed, pixel, group, dimension). Sample `index` belongs
+ *                to group index mod SAMPLER_GROUPS, whose scrambling is independent of the other
+ *                groups', and is point index div SAMPLER_GROUPS of it. Within one group the samples
+ *                are NOT independent: their sample variance does not estimate the variance of the
+ *                mean; the spread between the group means does (tracer/pixel_sums.h). */
 #ifndef PATHLAB_SAMPLER_H
 #define PATHLAB_SAMPLER_H
 #include <stdint.h>
 #include "math/rng.h"
 
 typedef enum { SAMPLER_INDEPENDENT, SAMPLER_SOBOL } sampler_kind;   /* --sampler */
+/* sobol: independent scramblings per pixel (K; the variance of the mean has K - 1 degrees of
+ * freedom), and the sample indices it takes: 2^32 points per group (past that they would repeat). */
+#define SAMPLER_GROUPS 4
+#define SAMPLER_SOBOL_MAX_INDEX (4294967296LL * SAMPLER_GROUPS)
 extern const char *const SAMPLER_NAMES[];                            /* in enum order, NULL-terminated */
 
 typedef struct {
     sampler_kind kind;
     pcg32 rng;              /* independent: the sample's stream */
-    uint64_t pixel_seed;    /* sobol: hashed from (seed, pixel); each dimension's seeds derive from it */
-    uint32_t index;         /* sobol: the sample index (its low 32 bits) */
+    uint64_t pixel_seed;    /* sobol: hashed from (seed, pixel, group); each dimension's seeds derive from it */
+    uint32_t index;         /* sobol: the point's index in its group (sample index div SAMPLER_GROUPS) */
 } sampler;
 
 /* The dimensions of a sample: the pixel jitter, then SAMPLER_DIMS_PER_VERTEX per path vertex k >= 1. */

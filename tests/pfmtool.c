@@ -148,7 +148,7 @@ static int varratio(int argc, char **a)
     for (i = 0; i < k; i++) jm += (rj[i] = ratio_without(im, k, i)) / k;
     for (i = 0; i < k; i++) j2 += (rj[i] - jm) * (rj[i] - jm);
     se = sqrt(j2 * (k - 1) / k);
-    printf("ratio %.4f se %.4f z %.2f renders %d pixel-channels %d\n", r, se, se > 0 ? (r - 1.0) / se : 0.0, k, 3 * im[0].w * im[0].h);
+    printf("ratio %.4f se %.4f z %.2f renders %d pixel-channels %d\n", r, se, se > 0 ? (r - 1.0) / se : r == 1.0 ? 0.0 : r > 1.0 ? 1e9 : -1e9, k, 3 * im[0].w * im[0].h);
     return 0;
 }
 

@@ -61,6 +61,28 @@ static void check_independent(void)
     check(same, "independent: the stream pcg32_for_sample, read in the order of the calls", NULL);
 }
 
+/* The definition of the second Sobol dimension: the xor of the direction numbers of the index's bits. */
+static uint32_t sobol_dim1_by_definition(uint32_t index)
+{
+    uint32_t u = 0, v = 0x80000000u;
+    for (; index; index >>= 1, v ^= v >> 1)
+        if (index & 1u) u ^= v;
+    return u;
+}
+
+static void check_sobol_dim1(void)
+{
+    pcg32 r;
+    uint32_t i, bad = 0;
+    pcg32_init(&r, 5, 1);
+    for (i = 0; i < 100000; i++) {
+        uint32_t x = i < 50000 ? i : pcg32_next(&r);
+        bad += sobol_dim1(x) != sobol_dim1_by_definition(x);
+    }
+    bad += sobol_dim1(0xFFFFFFFFu) != sobol_dim1_by_definition(0xFFFFFFFFu);
+    check(bad == 0, "sobol_dim1 (subset transform) equals the xor of direction numbers: 0..49999 and 50000 random indices", "%u differ", bad);
+}
+
 static void check_sobol_nets(void)
 {
     static uint32_t x[1 << 10], y[1 << 10];
@@ -137,6 +159,7 @@ int main(void)
     uint32_t dim;
     double worst = 0;
     check_independent();
+    check_sobol_dim1();
     check_sobol_nets();
     check_sobol_addressable();
     for (dim = 0; dim < 8; dim++) {

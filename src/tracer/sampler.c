@@ -28,29 +28,39 @@ static uint32_t reverse_bits(uint32_t x)
 uint32_t sobol_dim0(uint32_t index) { return reverse_bits(index); }
 
 /* The second Sobol dimension, primitive polynomial x + 1: direction numbers v_1 = 1/2 and
- * v_k = v_{k-1} xor v_{k-1}/2 (the rows of Pascal's triangle mod 2); u = xor of v_k over the bits k of i. */
-uint32_t sobol_dim1(uint32_t index)
+ * v_k = v_{k-1} xor v_{k-1}/2 (the rows of Pascal's triangle mod 2); u = xor of v_k over the bits k
+ * of i. Row k has a 1 in column p iff C(k, p) is odd, i.e. iff the bits of p are among those of k
+ * (Lucas): bit p of u (p = 0 the 1/2 place) is the xor of the index bits k that contain p. On the
+ * reversed index, where bit 31 - k holds index bit k, that is the xor over the bit numbers q that
+ * are subsets of q' (31 - k is k's 5-bit complement), the subset transform, done one bit b of q at
+ * a time: 5 shifts instead of a loop over 32 index bits (tests/test_sampler.c checks it against it). */
+static uint32_t subset_transform(uint32_t y)
 {
-    uint32_t u = 0, v = 0x80000000u;
-    for (; index; index >>= 1, v ^= v >> 1)
-        if (index & 1u) u ^= v;
-    return u;
+    y ^= (y << 1) & 0xAAAAAAAAu;
+    y ^= (y << 2) & 0xCCCCCCCCu;
+    y ^= (y << 4) & 0xF0F0F0F0u;
+    y ^= (y << 8) & 0xFF00FF00u;
+    y ^= (y << 16) & 0xFFFF0000u;
+    return y;
 }
+
+uint32_t sobol_dim1(uint32_t index) { return subset_transform(reverse_bits(index)); }
 
 /* Owen's nested uniform scrambling of a 32-bit fraction x, by hashing (Burley 2020, section 3): each
  * bit is flipped or not by a hash of the bits above it and the seed. A hash in which every bit
  * depends only on the bits below it (Laine and Karras 2011, with Burley's constants) does that to
  * the bits in reverse order. */
-uint32_t owen_scramble(uint32_t x, uint32_t seed)
+static uint32_t laine_karras(uint32_t x, uint32_t seed)
 {
-    x = reverse_bits(x);
     x += seed;
     x ^= x * 0x6c50b47cu;
     x ^= x * 0xb82f1e52u;
     x ^= x * 0xc7afe638u;
     x ^= x * 0x8d22f6e6u;
-    return reverse_bits(x);
+    return x;
 }
+
+uint32_t owen_scramble(uint32_t x, uint32_t seed) { return reverse_bits(laine_karras(reverse_bits(x), seed)); }
 
 void sampler_start(sampler *s, sampler_kind kind, uint64_t seed, uint64_t pixel, uint64_t index)
 {
@@ -73,10 +83,13 @@ void sampler_from_stream(sampler *s, const pcg32 *r)
 /* Sobol coordinates of dimension dim: the shuffled index, then coordinate 0 (and 1 if u2). */
 static void sobol_point(const sampler *s, uint32_t dim, uint32_t *u1, uint32_t *u2)
 {
-    uint64_t h = splitmix64_at(s->pixel_seed, dim), h2 = splitmix64_mix(h);
-    uint32_t j = owen_scramble(s->index, (uint32_t)h);
-    *u1 = owen_scramble(sobol_dim0(j), (uint32_t)(h >> 32));
-    if (u2) *u2 = owen_scramble(sobol_dim1(j), (uint32_t)h2);
+    uint64_t h = splitmix64_at(s->pixel_seed, dim);
+    /* j = owen_scramble(index), and since sobol_dim0 is a bit reversal, owen_scramble(sobol_dim0(j))
+     * = reverse(laine_karras(j)) and sobol_dim1(j) = subset_transform(rj): the same numbers with four
+     * bit reversals less */
+    uint32_t rj = laine_karras(reverse_bits(s->index), (uint32_t)h), j = reverse_bits(rj);
+    *u1 = reverse_bits(laine_karras(j, (uint32_t)(h >> 32)));
+    if (u2) *u2 = owen_scramble(subset_transform(rj), (uint32_t)splitmix64_mix(h));   /* sobol_dim1(j) */
 }
 
 static float to_float(uint32_t x) { return (float)(x >> 8) * (1.0f / 16777216.0f); }

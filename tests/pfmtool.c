@@ -149,6 +149,9 @@ static int varratio(int argc, char **a)
     for (i = 0; i < k; i++) j2 += (rj[i] - jm) * (rj[i] - jm);
     se = sqrt(j2 * (k - 1) / k);
     printf("ratio %.4f se %.4f z %.2f renders %d pixel-channels %d\n", r, se, se > 0 ? (r - 1.0) / se : r == 1.0 ? 0.0 : r > 1.0 ? 1e9 : -1e9, k, 3 * im[0].w * im[0].h);
+    for (i = 0; i < 2 * k; i++) img_free(&im[i]);
+    free(im);
+    free(rj);
     return 0;
 }
 

@@ -9,6 +9,8 @@
 #  2. The per-pixel test with 3 dof: two sobol renders (seeds 1 and 2, 64 spp) are the same up to
 #     noise for zcheck, which reads variance-dof 3 from the sidecars (Student's t, Welch's dof);
 #     the normal per-pixel test on the same two (--dof-a 0 --dof-b 0) fails them: its tails are too thin.
+#     grade's per-pixel test (information only) on a sobol reference: at most 7 of 3072 pixel-channels
+#     (0.25%) fail on its 3-dof t; more fail once the sidecar's variance-dof line is removed.
 #  3. Known answers (a subset of test_known.sh): furnace and sphere furnace with several estimators
 #     against the exact constant (block and whole-image tests, zcheck --precision 1e-3), two bounce-
 #     by-bounce --split renders (L_k = Le a^k), and a wrong answer (L0..L3) told apart.
@@ -42,6 +44,15 @@ grep -q '^variance-dof 3$' "$TMP/v1.pfm.meta" && grep -q '^sampler sobol$' "$TMP
 for s in 1 2; do $PATHLAB render scenes/cornell.obj $S --quiet --size 32x32 --spp 64 --seed $s -o "$TMP/p$s.pfm" --variance "$TMP/pv$s.pfm"; done
 zcheck_expect "two sobol renders (seeds 1, 2) agree on Student's t with 3 dof" 0 "$TMP/p1.pfm" "$TMP/pv1.pfm" "$TMP/p2.pfm" "$TMP/pv2.pfm"
 zcheck_expect "the same two on the normal per-pixel test (dof ignored) fail: too thin tails" 1 "$TMP/p1.pfm" "$TMP/pv1.pfm" "$TMP/p2.pfm" "$TMP/pv2.pfm" --dof-a 0 --dof-b 0
+
+# grade's per-pixel test (information only) reads the reference's variance-dof: a sobol reference
+# (seed 1) and a sobol image (seed 2), 64 spp each; without the dof line, the normal test fails many
+$PATHLAB render scenes/cornell.obj $S --quiet --size 32x32 --spp 64 --seed 2 -o "$TMP/g.pfm"
+gpix() { $PATHLAB grade "$TMP/g.pfm" --ref "$TMP/p1.pfm" --var "$TMP/pv1.pfm" --spp 64 --ref-spp 64 | sed -n 's/.* \([0-9]*\) of \([0-9]*\) pixel-channels beyond.*/\1/p'; }
+n3=$(gpix); sed -i '/^variance-dof/d' "$TMP/p1.pfm.meta"; n0=$(gpix)
+if [ -n "$n3" ] && [ "$n3" -le 7 ] && [ -n "$n0" ] && [ "$n0" -gt "$n3" ]; then
+    pass "grade's per-pixel test on a sobol reference: $n3 of 3072 fail on Student's t (3 dof), $n0 on the normal (dof line removed)"
+else fail "grade's per-pixel test on a sobol reference: '$n3' fail with 3 dof (<= 7 wanted), '$n0' without (more wanted)"; fi
 
 # ---- 3. known answers
 known() {   # name scene value size spp precision flags...

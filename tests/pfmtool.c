@@ -8,6 +8,11 @@
  *       rmse_ref sqrt(max(0, rmse^2 - var_b)): the RMSE against B's expectation, B's own noise removed
  *   pfmtool close A.pfm B.pfm REL    every value of A within REL x max(|a|, |b|) of B's (float rounding);
  *       prints the worst relative difference; exit 1 if one is farther
+ *   pfmtool varratio K A_1..A_K V_1..V_K   K renders of one scene with different seeds (A_i, each with
+ *       its variance of the pixel mean V_i): is the mean of the V_i the variance between the A_i? Per
+ *       pixel-channel, s2 = the sample variance of the K values, v = the mean of the K variances;
+ *       prints "ratio R se S z Z ..." with R = sum v / sum s2 and S its jackknife standard error
+ *       over the K renders (no normality assumed; K >= 3)
  * Exit 0 on success, 2 on bad input. */
 #include <math.h>
 #include <stdio.h>
@@ -102,13 +107,62 @@ static int close_to(char **a)
     return worst <= rel ? 0 : 1;
 }
 
+/* Reads the K images of names[0..K-1] into im (same size); 0, or 2. */
+static int read_all(image *im, char **names, int k)
+{
+    int i;
+    for (i = 0; i < k; i++)
+        if (img_read_pfm(&im[i], names[i]) || im[i].w != im[0].w || im[i].h != im[0].h) return 2;
+    return 0;
+}
+
+/* sum v / sum s2 over the pixel-channels of the K renders, render `out` left out (-1: none). */
+static double ratio_without(const image *im, int k, int out)
+{
+    double sv = 0, ss = 0;
+    int i, c, n = 3 * im[0].w * im[0].h, kk = out >= 0 ? k - 1 : k;
+    for (c = 0; c < n; c++) {
+        double m = 0, q = 0;
+        for (i = 0; i < k; i++)
+            if (i != out) m += im[i].px[c] / (double)kk;
+        for (i = 0; i < k; i++)
+            if (i != out) {
+                q += (im[i].px[c] - m) * (im[i].px[c] - m);
+                sv += im[k + i].px[c] / (double)kk;
+            }
+        ss += q / (kk - 1);
+    }
+    return ss > 0 ? sv / ss : 0;
+}
+
+/* The ratio, and its standard error by the jackknife over the K renders (the seeds are the
+ * independent units: a render that drew a rare large sample moves both sums together). */
+static int varratio(int argc, char **a)
+{
+    int k = atoi(a[0]), i;
+    image *im;
+    double r, jm = 0, j2 = 0, *rj, se;
+    if (k < 3 || argc != 1 + 2 * k || !(im = calloc((size_t)(2 * k), sizeof *im)) || !(rj = calloc((size_t)k, sizeof *rj))) return 2;
+    if (read_all(im, a + 1, 2 * k)) return 2;
+    r = ratio_without(im, k, -1);
+    for (i = 0; i < k; i++) jm += (rj[i] = ratio_without(im, k, i)) / k;
+    for (i = 0; i < k; i++) j2 += (rj[i] - jm) * (rj[i] - jm);
+    se = sqrt(j2 * (k - 1) / k);
+    printf("ratio %.4f se %.4f z %.2f renders %d pixel-channels %d\n", r, se, se > 0 ? (r - 1.0) / se : r == 1.0 ? 0.0 : r > 1.0 ? 1e9 : -1e9, k, 3 * im[0].w * im[0].h);
+    for (i = 0; i < 2 * k; i++) img_free(&im[i]);
+    free(im);
+    free(rj);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
+    if (argc >= 3 && !strcmp(argv[1], "varratio")) return varratio(argc - 2, argv + 2);
     if (argc == 5 && !strcmp(argv[1], "close")) return close_to(argv + 2);
     if (argc == 8 && !strcmp(argv[1], "const")) return constant(argv + 2);
     if (argc == 5 && !strcmp(argv[1], "scale")) return scale(argv + 2);
     if (argc >= 4 && !strcmp(argv[1], "sum")) return sum(argc - 2, argv + 2);
     if ((argc == 4 || argc == 5) && !strcmp(argv[1], "rmse")) return rmse(argc - 2, argv + 2);
-    fprintf(stderr, "usage: pfmtool const W H R G B OUT | scale IN F OUT | sum OUT IN... | rmse A B [B_VAR]\n");
+    fprintf(stderr, "usage: pfmtool const W H R G B OUT | scale IN F OUT | sum OUT IN... | rmse A B [B_VAR] | varratio K A.. V..\n");
     return 2;
 }

@@ -172,11 +172,13 @@ static void *run_job(void *arg)
 {
     job *j = arg;
     trace_stats st;
+    sampler smp;
     long k;
     int i;
     memset(&st, 0, sizeof st);
+    sampler_from_stream(&smp, &j->rng);   /* independent samples, one stream read in turn */
     for (k = 0; k < j->a.n; k++) {
-        vec3 L = integrate(j->s, j->o, j->r, &j->rng, NULL, &st);
+        vec3 L = integrate(j->s, j->o, j->r, &smp, NULL, &st);
         j->a.nonzero += !v3_is_zero(L);
         for (i = 0; i < 3; i++) {
             double c = v3_comp(L, i);
@@ -294,6 +296,7 @@ static void check_emission(const scene *s)
     integrator_opts o;
     ray up, down;
     pcg32 rng;
+    sampler smp;
     trace_stats st;
     vec3 Lu, Ld;
     int e = s->lights.emitter_of_tri[2];   /* triangle 2 contains (-0.3, -0.45, 1)... */
@@ -303,8 +306,9 @@ static void check_emission(const scene *s)
     pcg32_init(&rng, 1, 1);
     up.o = v3(0.0f, -0.45f, 0.3f), up.d = v3(0.0f, 0.0f, 1.0f), up.tmax = INFINITY;
     down.o = v3(0.0f, -0.45f, 1.5f), down.d = v3(0.0f, 0.0f, -1.0f), down.tmax = INFINITY;
-    Lu = integrate(s, &o, &up, &rng, NULL, &st);
-    Ld = integrate(s, &o, &down, &rng, NULL, &st);
+    sampler_from_stream(&smp, &rng);
+    Lu = integrate(s, &o, &up, &smp, NULL, &st);
+    Ld = integrate(s, &o, &down, &smp, NULL, &st);
     check(e >= 0 && v3_is_zero(v3_sub(Lu, s->lights.e[e].Le)) && v3_is_zero(Ld), "L0 of the light: Le from the front, 0 from the back",
           "front %g %g %g (Le %g %g %g), back %g %g %g", Lu.x, Lu.y, Lu.z, s->lights.e[e].Le.x, s->lights.e[e].Le.y,
           s->lights.e[e].Le.z, Ld.x, Ld.y, Ld.z);

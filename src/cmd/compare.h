@@ -15,8 +15,8 @@
     "(LABEL.pfm, .png), its error heatmap (heat-LABEL.png), a labelled mosaic (mosaic.ppm, .png) and the table\n" \
     "(table.md, .csv: RMSE, relMSE, MAE, efficiency 1/(MSE*time)). Estimators are comma-separated, each a list of\n" \
     "render flags and names: {direct } = --direct X; {light } = --light X;\n" \
-    "{dir } = --dir X, brdf written dir-brdf (brdf alone is --direct brdf); join names with + or spaces:\n" \
-    "\"light+solid-angle\", \"mis-power --rr off\"; LABEL=FLAGS names one:\n" \
+    "{dir } = --dir X, brdf written dir-brdf (brdf alone is --direct brdf); {sampler } = --sampler X;\n" \
+    "join names with + or spaces: \"light+solid-angle\", \"mis-power --rr off\", \"mis-power+sobol\"; LABEL=FLAGS names one:\n" \
     "\"solid angle=--direct light --light solid-angle\". Flags outside --estimators apply to all; an estimator's\n" \
     "own flags win. Without --ref the reference is rendered with --direct mis-power --light solid-angle\n" \
     "--dir brdf at 16x the largest spp (--ref-spp M) into DIR/reference.pfm; the reference's variance (its own,\n" \

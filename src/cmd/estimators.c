@@ -5,13 +5,15 @@
 #include <string.h>
 #include "tracer/integrator.h"
 #include "tracer/light.h"
+#include "tracer/sampler.h"
 
 #define MAX_FLAGS 64   /* of one estimator, its names expanded */
 
 /* The names of the strategy tables beside their enums are shorthands: name X means FLAG X. */
 typedef struct { const char *flag; const char *const *names; } strategy_table;
 static const strategy_table STRATEGIES[] = {
-    {"--direct", DIRECT_STRATEGY_NAMES}, {"--dir", DIR_STRATEGY_NAMES}, {"--light", LIGHT_STRATEGY_NAMES}};
+    {"--direct", DIRECT_STRATEGY_NAMES}, {"--dir", DIR_STRATEGY_NAMES}, {"--light", LIGHT_STRATEGY_NAMES},
+    {"--sampler", SAMPLER_NAMES}};   /* "sobol": stratification beside importance sampling */
 #define NSTRATEGIES (int)(sizeof STRATEGIES / sizeof *STRATEGIES)
 
 /* The shorthand of strategy `name` of table t: the name itself, with one exception: --dir brdf is

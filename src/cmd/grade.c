@@ -69,6 +69,7 @@
 #include "math/vec.h"
 #include "stats/imgstat.h"
 #include "stats/significance.h"
+#include "stats/tdist.h"
 
 /* Rounding allowed per value, relative (see imgstat.c): added linearly over a mean. */
 #define GRADE_ROUNDING 4e-7
@@ -569,17 +570,23 @@ static void test_plain(grade_report *r, const image *img, const image *ref)
     }
 }
 
-/* Information only: z per pixel-channel with the student's variance taken as var_ref M / N. */
+/* Information only: z per pixel-channel with the student's variance taken as var_ref M / N. A
+ * reference variance with few degrees of freedom (a sobol reference: 3) makes that z a Student t:
+ * it fails when its t tail (Welch-Satterthwaite with the exact rounding term) is below the Sidak
+ * level, i.e. when the z with the same tail passes the critical z. */
 static void test_pixels(grade_report *r, const image *img, const image *ref, const image *var, const grade_opts *o)
 {
     size_t i, n = 3 * (size_t)img->w * img->h;
-    double k = 1.0 + (double)o->ref_spp / o->spp;
+    double k = 1.0 + (double)o->ref_spp / o->spp, level = sidak_level(r->alpha, (long)n);
     r->pixel_test = 1;
     r->pixel_n = (long)n;
     r->pixel_zcrit = sidak_zcrit(r->alpha, (long)n);
     for (i = 0; i < n; i++) {
         double d = (double)img->px[i] - ref->px[i], rounding = GRADE_ROUNDING * (fabs(ref->px[i]) + fabs(img->px[i]));
-        if (fabs(t_stat(d, var->px[i] * k + rounding * rounding)) > r->pixel_zcrit) r->pixel_fail++;
+        double t = t_stat(d, var->px[i] * k + rounding * rounding);
+        if (o->ref_var_dof > 0 && isfinite(t))   /* |z| > zcrit, i.e. the tail below the level, on t's tail */
+            r->pixel_fail += t_two_sided_tail(t, welch_dof(var->px[i] * k, o->ref_var_dof, rounding * rounding, 0)) < level;
+        else if (fabs(t) > r->pixel_zcrit) r->pixel_fail++;
     }
 }
 

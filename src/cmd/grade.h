@@ -9,6 +9,7 @@ typedef struct {
     double alpha;        /* family-wise level of the verdict (default 0.01) */
     int block;           /* block side in pixels; 0: chosen from the image size */
     int spp, ref_spp;    /* the image's and the reference's samples per pixel; 0 if not given */
+    int ref_var_dof;     /* degrees of freedom of the reference's variance (its sidecar's variance-dof); 0: many */
 } grade_opts;
 
 /* A group of pixels tested together: a block of the image, or a level (the pixels whose reference

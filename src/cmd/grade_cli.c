@@ -311,6 +311,7 @@ int grade_main(int argc, char **argv)
     if (!rows || read_reference(&R, &a)) { free_reference(&R); free_args(&a); free(rows); return 2; }
     loud = a.nimages == 1 || a.details;
     if (R.has_meta) print_provenance(&R.meta, a.ref);
+    if (R.has_meta) a.o.ref_var_dof = R.meta.variance_dof;   /* a sobol reference's variance: 3 dof */
     if (!loud) grade_print_class_header(&a.o, a.ref, a.nimages, &R.refs, R.var_path, R.layer_prefix);
     for (k = 0; k < a.nimages; k++) {
         grade_args one = a;

@@ -3,11 +3,13 @@
 #include <string.h>
 #include "tracer/integrator.h"
 #include "tracer/light.h"
+#include "tracer/sampler.h"
 
 typedef struct { const char *key; const char *const *names; } name_table;
 
 static const name_table TABLES[] = {
-    {"light", LIGHT_STRATEGY_NAMES}, {"dir", DIR_STRATEGY_NAMES}, {"direct", DIRECT_STRATEGY_NAMES}};
+    {"light", LIGHT_STRATEGY_NAMES}, {"dir", DIR_STRATEGY_NAMES}, {"direct", DIRECT_STRATEGY_NAMES},
+    {"sampler", SAMPLER_NAMES}};
 
 /* If text starts with {KEY|} or {KEY }, prints the table's names joined by that character and
  * returns the length of the token; else 0. */

@@ -63,6 +63,7 @@ static const char *USAGE =
     "  --dir {dir|}        how a direction is chosen at a surface (default brdf)\n"
     "  --direct {direct|}   the estimator of direct light (default mis-power)\n"
     "  --rr D|off           Russian roulette after D bounces (default 3)\n"
+    "  --sampler S          independent (default) or sobol: 4 scrambled Sobol sets a pixel (docs/sampler.md)\n"
     "  --variance FILE.pfm  also write the variance of each pixel's mean (with --split, one per bounce too)\n";
 
 /* The third part: adaptive sampling (docs/adaptive.md). */

@@ -7,6 +7,7 @@
 #include <string.h>
 #include "cmd/render_files.h"
 #include "stats/combine.h"
+#include "tracer/sampler.h"
 #include "util/cli.h"
 
 #define MAX_INPUTS 4096
@@ -32,6 +33,13 @@ static int check_inputs(input *in, int n, sidecar *all)
         if (rc < 0) fprintf(stderr, "pathlab merge: %s has no sidecar %s.meta: merge needs to know its samples "
                                     "(was it written by pathlab render? copy the .meta with it)\n", in[i].path, in[i].path);
         if (rc) return 1;
+        if (sidecar_is_sobol(&in[i].meta)) {
+            fprintf(stderr, "pathlab merge: %s was rendered with --sampler sobol: sobol renders cannot be merged: the file "
+                            "keeps the mean and the variance, not the sums of its %d scramblings that the variance needs, "
+                            "and pieces of one scrambled sequence are not independent. Render pieces to merge with "
+                            "--sampler independent\n", in[i].path, SAMPLER_GROUPS);
+            return 1;
+        }
         if (strcmp(in[i].meta.kind, "mean")) {
             fprintf(stderr, "pathlab merge: %s is a %s image: give the images, their variances come along\n", in[i].path, in[i].meta.kind);
             return 1;

@@ -111,6 +111,16 @@ static int parse_direct(void *ctx, const char *flag, const char *v)
     return 0;
 }
 
+/* --sampler independent|sobol */
+static int parse_sampler(void *ctx, const char *flag, const char *v)
+{
+    render_args *a = ctx;
+    int k;
+    if (parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, SAMPLER_NAMES)) return 1;
+    a->ro.sampler = (sampler_kind)k;
+    return 0;
+}
+
 /* --orbiter FILE and --view FILE: two sources of the same view, so one only */
 static int parse_camera_file(void *ctx, const char *flag, const char *v)
 {
@@ -166,6 +176,7 @@ void render_flag_table(render_args *a, cli_flag t[RENDER_NFLAGS])
         {"--view", CLI_CUSTOM, NULL, 0, 0, NULL, parse_camera_file, NULL},
         {"--write-view", CLI_STRING, &a->write_view, 0, 0, NULL, NULL, NULL},
         {"--pixel-offset", CLI_CUSTOM, NULL, 0, 0, NULL, parse_pixel_offset, NULL},
+        {"--sampler", CLI_CUSTOM, NULL, 0, 0, NULL, parse_sampler, NULL},
         {NULL, CLI_SWITCH, NULL, 0, 0, NULL, NULL, NULL}};
     memcpy(t, flags, sizeof flags);
 }
@@ -196,6 +207,7 @@ void render_args_init(render_args *a)
     a->ro.seed = 1;
     a->ro.pixel_offset = 0.5f;
     a->ro.threads = parallel_default_threads();
+    a->ro.sampler = SAMPLER_INDEPENDENT;
     a->ro.io.light = LIGHT_AREA;
     a->ro.io.dir = DIR_BRDF;
     a->ro.io.direct = DIRECT_MIS_POWER;

@@ -21,9 +21,9 @@ typedef struct {
     adaptive_opts ao;
 } render_args;
 
-#define RENDER_NFLAGS 28   /* the flags of render_flag_table, and its closing NULL entry */
+#define RENDER_NFLAGS 29   /* the flags of render_flag_table, and its closing NULL entry */
 
-/* The defaults of pathlab render (16 spp, seed 1, every core, area, brdf, mis-power, 0:inf, rr 3). */
+/* The defaults of pathlab render (16 spp, seed 1, every core, independent, area, brdf, mis-power, 0:inf, rr 3). */
 void render_args_init(render_args *a);
 /* Fills t with render's flags, each writing into *a; parse them with cli_parse(..., ctx = a, ...). */
 void render_flag_table(render_args *a, cli_flag t[RENDER_NFLAGS]);

@@ -45,6 +45,12 @@ static int check_render_args(render_args *a)
     }
     if (render_adaptive_check(a)) return 1;
     if (a->ro.time_limit > 0 && !a->spp_given && !a->samples_given && !a->target_given) a->ro.spp = 1 << 30;   /* --time alone: no cap */
+    if (a->ro.sampler == SAMPLER_SOBOL && a->ro.first + a->ro.spp > SAMPLER_SOBOL_MAX_INDEX) {
+        fprintf(stderr, "pathlab render: --sampler sobol takes sample indices below %lld (2^32 points in each of its %d "
+                "scramblings; past that the points would repeat): use --sampler independent\n",
+                (long long)SAMPLER_SOBOL_MAX_INDEX, SAMPLER_GROUPS);
+        return 1;
+    }
     return 0;
 }
 
@@ -80,14 +86,30 @@ static void describe_render(const render_args *a, const scene *s, sidecar *m)
     snprintf(m->scene_id, sizeof m->scene_id, "fnv1a64:%016" PRIx64, mesh_fingerprint(&s->m));
     snprintf(bmax, sizeof bmax, io->bmax == BOUNCES_INF ? "inf" : "%d", io->bmax);
     snprintf(rr, sizeof rr, io->rr_depth < 0 ? "off" : "%d", io->rr_depth);
-    snprintf(m->flags, sizeof m->flags, "--bounces %d:%s --light %s --dir %s --direct %s --rr %s --pixel-offset %.9g%s",
+    /* --sampler only when not independent (whatever the default): the sidecars written before it
+     * existed stay comparable, and a sidecar without it is independent */
+    snprintf(m->flags, sizeof m->flags, "--bounces %d:%s --light %s --dir %s --direct %s --rr %s --pixel-offset %.9g%s%s%s",
              io->bmin, bmax, LIGHT_STRATEGY_NAMES[io->light], DIR_STRATEGY_NAMES[io->dir], DIRECT_STRATEGY_NAMES[io->direct],
-             rr, o->pixel_offset, o->pixel_center ? " --pixel-center" : "");
+             rr, o->pixel_offset, o->pixel_center ? " --pixel-center" : "", o->sampler != SAMPLER_INDEPENDENT ? " --sampler " : "",
+             o->sampler != SAMPLER_INDEPENDENT ? SAMPLER_NAMES[o->sampler] : "");
     snprintf(m->camera, sizeof m->camera, "eye %.9g,%.9g,%.9g target %.9g,%.9g,%.9g up %.9g,%.9g,%.9g fov %.9g size %dx%d",
              v->eye.x, v->eye.y, v->eye.z, v->target.x, v->target.y, v->target.z, v->up.x, v->up.y, v->up.z, v->fov,
              v->width, v->height);
     snprintf(m->revision, sizeof m->revision, "%s", pathlab_revision());
     render_adaptive_describe(a, m);
+    if (o->sampler != SAMPLER_INDEPENDENT) snprintf(m->sampler, sizeof m->sampler, "%s", SAMPLER_NAMES[o->sampler]);
+}
+
+/* --sampler sobol cannot be resumed: 1 after saying why. */
+static int refuse_sobol_resume(const render_args *a, const sidecar *had)
+{
+    if (!sidecar_is_sobol(had) && a->ro.sampler != SAMPLER_SOBOL) return 0;
+    fprintf(stderr, "pathlab render: --resume: %s%s: a sobol render cannot be resumed: its file keeps the mean and the "
+            "variance, not the sums of its %d scramblings that the variance needs, and more points of the same "
+            "scrambled sequences are not independent of those it has. Render it again with the --spp wanted, "
+            "or use --sampler independent for renders to resume\n", a->out,
+            sidecar_is_sobol(had) ? " was rendered with --sampler sobol" : " (this render: --sampler sobol)", SAMPLER_GROUPS);
+    return 1;
 }
 
 /* --resume: reads the render at -o, checks it is this render, and sets the samples still to do
@@ -102,7 +124,7 @@ static int prepare_resume(render_args *a, const sidecar *now, render_files *prev
         return 2;
     }
     if (rc < 0) render_files_read(prev, a->out, 0, "render");   /* says that it has no sidecar */
-    if (rc) return 2;
+    if (rc || refuse_sobol_resume(a, &had)) return 2;
     if (render_files_read(prev, a->out, had.variance[0] != '\0', "render")) return 2;
     if (sidecar_check_same(&prev->meta, now, "render --resume", a->out, "this render")) return 2;
     if (a->variance && !had.variance[0]) {
@@ -154,6 +176,7 @@ static int finish_meta(sidecar *m, const render_args *a, const render_result *r,
     m->spp_cap = a->ro.spp;
     m->spp_mean = ar->mean_spp;
     m->pilot_seed = ar->pilot_seed;
+    m->variance_dof = r->variance_dof;
     if (r->interrupted) snprintf(m->stopped, sizeof m->stopped, "%s", interrupt_name(r->interrupted));
     else if (a->adaptive && a->target_given && r->spp < ar->max_spp) snprintf(m->stopped, sizeof m->stopped, "time");
     else if (!a->adaptive && r->spp < a->ro.spp && a->ro.time_limit > 0 && a->spp_given) snprintf(m->stopped, sizeof m->stopped, "time");

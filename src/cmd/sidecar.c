@@ -9,6 +9,8 @@
 
 void sidecar_path(char *dst, size_t cap, const char *image_path) { snprintf(dst, cap, "%s.meta", image_path); }
 
+int sidecar_is_sobol(const sidecar *m) { return !strcmp(m->sampler, "sobol"); }
+
 int64_t sidecar_spp(const sidecar *m)
 {
     int64_t n = 0;
@@ -51,6 +53,8 @@ int sidecar_write_to(const sidecar *m, const char *image_path, const char *path)
     if (m->variance[0]) fprintf(f, "variance %s\n", m->variance);
     if (m->layers[0]) fprintf(f, "layers %s\n", m->layers);
     if (m->stopped[0]) fprintf(f, "stopped %s\n", m->stopped);
+    if (m->sampler[0]) fprintf(f, "sampler %s\n", m->sampler);
+    if (m->variance_dof > 0) fprintf(f, "variance-dof %d\n", m->variance_dof);
     fprintf(f, "revision %s\n", m->revision);
     return textfile_close(f, tmp, path);
 }
@@ -116,6 +120,12 @@ static int parse_line(sidecar *m, const char *key, const char *v)
     if (!strcmp(key, "spp-cap")) {
         m->spp_cap = strtoll(v, &end, 10);
         return end == v || *end != '\0';
+    }
+    if (!strcmp(key, "sampler")) return set_text(m->sampler, sizeof m->sampler, v);
+    if (!strcmp(key, "variance-dof")) {
+        long d = strtol(v, &end, 10);
+        m->variance_dof = (int)d;
+        return end == v || *end != '\0' || d < 1 || d > 1000000;
     }
     return 0;
 }
@@ -201,6 +211,8 @@ int sidecar_check_same(const sidecar *a, const sidecar *b, const char *cmd, cons
     if (strcmp(a->layer, b->layer)) return differ(cmd, a_name, b_name, "layer", a->layer, b->layer);
     if (strcmp(a->scene_id, b->scene_id)) return differ(cmd, a_name, b_name, "scene (its triangles or materials)", a->scene, b->scene);
     if (strcmp(a->flags, b->flags)) return differ(cmd, a_name, b_name, "flags", a->flags, b->flags);
+    if (strcmp(a->sampler, b->sampler))
+        return differ(cmd, a_name, b_name, "sampler", a->sampler[0] ? a->sampler : "independent", b->sampler[0] ? b->sampler : "independent");
     if (strcmp(a->camera, b->camera)) return differ(cmd, a_name, b_name, "camera", a->camera, b->camera);
     snprintf(sa, sizeof sa, "%" PRIu64, a->seed);
     snprintf(sb, sizeof sb, "%" PRIu64, b->seed);
@@ -214,8 +226,10 @@ int sidecar_render_command(const sidecar *m, int w, int h, const char *stem, cha
     int sw, sh;
     if (sscanf(m->camera, "eye %127s target %127s up %127s fov %63s size %dx%d", eye, target, up, fov, &sw, &sh) != 6) return 1;
     if (w <= 0 || h <= 0) w = sw, h = sh;
-    snprintf(out, cap, "pathlab render %s --eye %s --target %s --up %s --fov %s --size %dx%d %s --seed %llu --spp %lld%s%s "
-             "-o %s.pfm --variance %s_var.pfm", m->scene, eye, target, up, fov, w, h, m->flags, (unsigned long long)m->seed,
+    /* the sampler said explicitly: the command means the same if the default of --sampler changes */
+    snprintf(out, cap, "pathlab render %s --eye %s --target %s --up %s --fov %s --size %dx%d %s%s --seed %llu --spp %lld%s%s "
+             "-o %s.pfm --variance %s_var.pfm", m->scene, eye, target, up, fov, w, h, m->flags,
+             strstr(m->flags, "--sampler") ? "" : " --sampler independent", (unsigned long long)m->seed,
              (long long)(m->adaptive[0] ? m->spp_cap : sidecar_spp(m)), m->adaptive[0] ? " " : "", m->adaptive, stem, stem);
     return 0;
 }

@@ -5,7 +5,10 @@
  *   kind mean | variance       samples 0:384[,1000:1200]     seed 1         layer total | L3
  *   scene PATH   scene-id ID   flags ...   camera ...   variance FILE   layers A:B   revision R
  * and for an adaptive render (docs/adaptive.md), whose pixel x holds the samples 0 .. n(x) - 1:
- *   adaptive FLAGS   spp-cap N   spp-mean X   pilot-seed S   sample-count FILE */
+ *   adaptive FLAGS   spp-cap N   spp-mean X   pilot-seed S   sample-count FILE
+ * and when the sampler is not independent (docs/sampler.md):
+ *   sampler sobol    variance-dof 3     (only when not independent: absent means independent, whatever
+ *                                        the default of --sampler, and a variance with many dof) */
 #ifndef PATHLAB_SIDECAR_H
 #define PATHLAB_SIDECAR_H
 #include <stddef.h>
@@ -33,6 +36,8 @@ typedef struct {
     double spp_mean;               /* adaptive: the mean over the pixels of their sample counts */
     uint64_t pilot_seed;           /* adaptive: the seed of the pilot's streams (never kept) */
     char sample_count[SIDECAR_TEXT];   /* adaptive: the sample-count image's file name ("" if none) */
+    char sampler[16];              /* --sampler: "" (no line) is independent, in every sidecar ever written */
+    int variance_dof;              /* degrees of freedom of the variance of the mean: 0 (no line) many */
 } sidecar;
 
 /* FILE -> FILE.meta */
@@ -44,6 +49,8 @@ int sidecar_write_to(const sidecar *m, const char *image_path, const char *file)
 /* Reads the sidecar of image_path. 0; -1 if it does not exist (nothing printed); 1 after printing
  * "FILE.meta:LINE: why" for a malformed one. */
 int sidecar_read(sidecar *m, const char *image_path);
+/* 1 if the render was made with --sampler sobol (absent: independent). */
+int sidecar_is_sobol(const sidecar *m);
 /* The number of samples of the ranges. */
 int64_t sidecar_spp(const sidecar *m);
 /* "0:384,1000:1200" */

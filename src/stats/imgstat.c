@@ -3,6 +3,7 @@
 #include <math.h>
 #include <string.h>
 #include "stats/significance.h"
+#include "stats/tdist.h"
 
 static double zscore(double d, double var) { return var > 0.0 ? d / sqrt(var) : (d == 0.0 ? 0.0 : HUGE_VAL); }
 
@@ -35,8 +36,25 @@ static void block_test(zreport *r, const image *a, const image *va, const image 
             }
 }
 
+/* The per-pixel test: |z| beyond the critical value, or with few degrees of freedom its t tail below the level. */
+static int pixel_fails(const zreport *r, double d, double v1, double dof1, double v2, double dof2, double rnd2)
+{
+    double dof, level;
+    if (dof1 <= 0.0 && dof2 <= 0.0) return fabs(zscore(d, v1 + v2 + rnd2)) > r->pixel_zcrit;
+    dof = welch_dof(v1, dof1, v2, dof2);   /* the rounding term is exact: infinitely many */
+    level = sidak_level(r->alpha, r->npix);
+    if (v1 + v2 + rnd2 <= 0.0) return d != 0.0;
+    return t_two_sided_tail(d / sqrt(v1 + v2 + rnd2), dof) < level;
+}
+
 int zreport_compute(zreport *r, const image *a, const image *va, const image *b, const image *vb,
                     double alpha, int block)
+{
+    return zreport_compute_dof(r, a, va, 0.0, b, vb, 0.0, alpha, block);
+}
+
+int zreport_compute_dof(zreport *r, const image *a, const image *va, double dof_a, const image *b, const image *vb,
+                        double dof_b, double alpha, int block)
 {
     size_t i, n = (size_t)a->w * a->h;
     double d[3] = {0, 0, 0}, v[3] = {0, 0, 0}, rs[3] = {0, 0, 0}, mb[3] = {0, 0, 0};
@@ -48,7 +66,7 @@ int zreport_compute(zreport *r, const image *a, const image *va, const image *b,
     r->pixel_zcrit = sidak_zcrit(alpha, r->npix);
     for (i = 0; i < 3 * n; i++) {
         double di = (double)a->px[i] - b->px[i], vi = (double)va->px[i] + vb->px[i], ri = rounding(a->px[i], b->px[i]);
-        if (fabs(zscore(di, vi + ri * ri)) > r->pixel_zcrit) r->npix_fail++;
+        if (pixel_fails(r, di, va->px[i], dof_a, vb->px[i], dof_b, ri * ri)) r->npix_fail++;
         d[i % 3] += di;
         v[i % 3] += vi;
         rs[i % 3] += ri;

@@ -4,7 +4,12 @@
  *   per block: the same on the mean of B x B pixel blocks (averaging shrinks noise, not bias);
  *   whole image: the same on the mean of all pixels, the most sensitive to a uniform bias.
  * Pixels are independent (one random stream each), so block and image means are sums of
- * independent terms and their variances add. */
+ * independent terms and their variances add.
+ * A variance estimated with few degrees of freedom (--sampler sobol: 3, from 4 group means; the
+ * sidecar's variance-dof) makes the per-pixel z a Student t: its tails are far heavier, and the
+ * pixel test compares its two-sided tail P(|T| > |t|) (Welch-Satterthwaite degrees of freedom
+ * when both variances are estimated) with the Sidak level instead. Block and image sums add the
+ * variances of 64 pixels or more, whose degrees of freedom add too: those tests stay normal. */
 #ifndef PATHLAB_IMGSTAT_H
 #define PATHLAB_IMGSTAT_H
 #include "image/image.h"
@@ -25,4 +30,7 @@ typedef struct {
 /* Runs the three tests; images must have the same size. Returns 0, or 1 if sizes differ. */
 int zreport_compute(zreport *r, const image *a, const image *va, const image *b, const image *vb,
                     double alpha, int block);
+/* The same with the degrees of freedom of va and vb (0: many, the normal test of zreport_compute). */
+int zreport_compute_dof(zreport *r, const image *a, const image *va, double dof_a, const image *b, const image *vb,
+                        double dof_b, double alpha, int block);
 #endif

@@ -123,6 +123,7 @@ static int run_pilot(const scene *sc, const camera *cam, const render_opts *o, c
     po.split = 0;
     po.time_limit = 0;
     po.pixel_spp = NULL;
+    po.sampler = SAMPLER_INDEPENDENT;   /* its variance per sample must be that of independent samples */
     if (render(sc, cam, &po, pr)) return 1;
     ar->pilot_seconds = pr->seconds;
     ar->pilot_spp = pr->spp;

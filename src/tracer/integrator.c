@@ -80,10 +80,11 @@ static float dir_pdf2_sa(const integrator_opts *opt, const vertex *p, vec3 wi_lo
 
 /* A direction wi_local at p chosen by the --dir strategy, its pdf2 per steradian in *pdf2_sa (0: the
  * BRDF lobe sent it below the surface). */
-static vec3 sample_dir(const integrator_opts *opt, const vertex *p, pcg32 *rng, float *pdf2_sa)
+static vec3 sample_dir(const integrator_opts *opt, const vertex *p, sampler *smp, int k, float *pdf2_sa)
 {
-    float u0 = pcg32_float(rng), u1 = pcg32_float(rng), u2 = pcg32_float(rng);
+    float u0 = sampler_1d(smp, sampler_dim(k, SAMPLER_DIM_LOBE)), u1, u2;
     vec3 wi_local;
+    sampler_2d(smp, sampler_dim(k, SAMPLER_DIM_DIRECTION), &u1, &u2);
     switch (opt->dir) {
     case DIR_UNIFORM: wi_local = sample_uniform_hemisphere(u1, u2); *pdf2_sa = pdf_uniform_hemisphere(wi_local); break;
     case DIR_COSINE: wi_local = sample_cosine_hemisphere(u1, u2); *pdf2_sa = pdf_cosine_hemisphere(wi_local); break;
@@ -106,13 +107,13 @@ static int visible(const scene *sc, const vertex *p, const light_sample *s, trac
 
 /* L_k by light sampling at p: Le(s) f cos(theta_p) cos(theta_s) / d^2 / pdf1_area(s), which is
  * Le(s) f cos(theta_p) / pdf1_sa(s), MIS-weighted against direction sampling. */
-static vec3 direct_from_light(const scene *sc, const integrator_opts *opt, const vertex *p, pcg32 *rng, trace_stats *st)
+static vec3 direct_from_light(const scene *sc, const integrator_opts *opt, const vertex *p, sampler *smp, int k, trace_stats *st)
 {
     light_sample s;
     vec3 to_s, wi_world, wi_local, f;
-    float dist2, dist, cos_p, cos_s, pdf1_sa, w_mis;
-    double u0 = pcg32_double(rng);
-    float u1 = pcg32_float(rng), u2 = pcg32_float(rng);
+    float dist2, dist, cos_p, cos_s, pdf1_sa, w_mis, u1, u2;
+    double u0 = sampler_1d_32bit(smp, sampler_dim(k, SAMPLER_DIM_LIGHT_CHOICE));
+    sampler_2d(smp, sampler_dim(k, SAMPLER_DIM_LIGHT_POINT), &u1, &u2);
     light_sample_point(&sc->lights, opt->light, p->pos, u0, u1, u2, &s);
     to_s = v3_sub(s.pos, p->pos);
     dist2 = v3_dot(to_s, to_s);
@@ -167,11 +168,11 @@ static ray continuation_ray(const vertex *p, vec3 wi_local)
  * follows its throughput, and a surviving path's throughput is divided by p_survive, so that
  * E[beta] is unchanged and no L_k is biased; the clamp at 0.05 bounds that weight by 20.
  * Returns 0 when the path stops. */
-static int survives_roulette(vec3 *beta, pcg32 *rng)
+static int survives_roulette(vec3 *beta, sampler *smp, int k)
 {
     vec3 before = *beta;
     float p_survive = fminf(1.0f, fmaxf(0.05f, v3_max_comp(before)));
-    if (pcg32_float(rng) >= p_survive) return 0;
+    if (sampler_1d(smp, sampler_dim(k, SAMPLER_DIM_ROULETTE)) >= p_survive) return 0;
     *beta = v3_scale(before, 1.0f / p_survive);
     /* when below 1, p_survive is >= every channel of beta, which thus ends <= 1: finite stays finite */
     assert(v3_is_finite(*beta) || !v3_is_finite(before));
@@ -205,7 +206,7 @@ static void add_Lk(radiance_sum *sum, int k, vec3 c)
     if (sum->Lk) sum->Lk[k] = v3_add(sum->Lk[k], c);
 }
 
-vec3 integrate(const scene *sc, const integrator_opts *opt, const ray *camera, pcg32 *rng, vec3 *Lk, trace_stats *st)
+vec3 integrate(const scene *sc, const integrator_opts *opt, const ray *camera, sampler *smp, vec3 *Lk, trace_stats *st)
 {
     radiance_sum sum = radiance_start(opt, Lk);
     ray ray_pq = *camera;     /* from p (first the eye) toward the next vertex q */
@@ -225,13 +226,13 @@ vec3 integrate(const scene *sc, const integrator_opts *opt, const ray *camera, p
 
         /* L_k by light sampling: a point s on a light, with pdf1(s) */
         if (adds_Lk && uses_light_sampling(opt->direct))
-            add_Lk(&sum, k, v3_mul(beta, direct_from_light(sc, opt, &p, rng, st)));
+            add_Lk(&sum, k, v3_mul(beta, direct_from_light(sc, opt, &p, smp, k, st)));
 
         /* the last bounce needs a continuation ray only to find emitters by direction sampling */
         if (k == opt->bmax && !uses_dir_sampling(opt->direct)) break;
 
         /* the next vertex q, in a direction chosen with pdf2: beta *= f G(p, q) / pdf2_area(q) */
-        wi_local = sample_dir(opt, &p, rng, &pdf2_sa);
+        wi_local = sample_dir(opt, &p, smp, k, &pdf2_sa);
         if (!(pdf2_sa > 0.0f)) break;
         f = brdf_eval(p.mat, p.wo_local, wi_local);
         cos_p = wi_local.z;
@@ -246,7 +247,7 @@ vec3 integrate(const scene *sc, const integrator_opts *opt, const ray *camera, p
             add_Lk(&sum, k, v3_mul(beta, direct_from_dir(sc, opt, &p, &q, &ray_pq, pdf2_sa)));
 
         /* "et on arrête quand ?" */
-        if (opt->rr_depth >= 0 && k >= opt->rr_depth && k < opt->bmax && !survives_roulette(&beta, rng)) break;
+        if (opt->rr_depth >= 0 && k >= opt->rr_depth && k < opt->bmax && !survives_roulette(&beta, smp, k)) break;
     }
     return sum.L;
 }

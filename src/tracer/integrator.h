@@ -8,7 +8,7 @@
 #define PATHLAB_INTEGRATOR_H
 #include <stdint.h>
 #include "geometry/ray.h"
-#include "math/rng.h"
+#include "tracer/sampler.h"
 #include "tracer/scene.h"
 
 typedef enum { DIR_UNIFORM, DIR_COSINE, DIR_BRDF } dir_strategy;                /* --dir */
@@ -31,8 +31,9 @@ typedef struct {
     uint64_t camera_rays, continuation_rays, shadow_rays;
 } trace_stats;
 
-/* Returns the radiance L_bmin + ... + L_bmax along the camera ray, summed in path order. If Lk is
+/* Returns the radiance L_bmin + ... + L_bmax along the camera ray, summed in path order, drawing its
+ * numbers from smp at the dimensions of sampler.h (SAMPLER_DIM_*, vertex by vertex). If Lk is
  * not NULL it has o->bmax + 1 entries and receives Lk[k] = L_k for k = 0..bmax (0 outside bmin..bmax).
  * Counts the rays it traces in *st. */
-vec3 integrate(const scene *sc, const integrator_opts *o, const ray *camera, pcg32 *rng, vec3 *Lk, trace_stats *st);
+vec3 integrate(const scene *sc, const integrator_opts *o, const ray *camera, sampler *smp, vec3 *Lk, trace_stats *st);
 #endif

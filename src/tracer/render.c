@@ -1,6 +1,7 @@
 /* render.c — passes of samples over tiles handed to threads by parallel_for, one random stream per
  * sample, per-pixel sums kept across passes, progress, and the stop between passes. */
 #include "tracer/render.h"
+#include "tracer/pixel_sums.h"
 #include "sys/clock.h"
 #include "sys/interrupt.h"
 #include "sys/parallel.h"
@@ -14,7 +15,6 @@
 
 #define TILE 16
 #define PASS_SECONDS 1.0   /* a pass lasts about this long (after the first, of 1 spp): Ctrl-C waits at most that */
-#define NSUM 6             /* per pixel and layer: the sums of the samples and of their squares, RGB */
 
 /* What one thread owns, so that rendering needs no lock; the counts are merged at the end. */
 typedef struct {
@@ -29,7 +29,8 @@ typedef struct {
     const render_opts *o;
     render_result *out;
     thread_state *ts;        /* [thread] */
-    double *sums;            /* [pixel][layer][NSUM], over the samples of the passes done */
+    double *sums;            /* [pixel][layer][nsum], over the samples of the passes done */
+    int nsum;                /* doubles per pixel and layer (tracer/pixel_sums.h: depends on --sampler) */
     int64_t s0, s1;          /* the current pass: sample indices [s0, s1) */
     int done;                /* samples of the passes done */
     int tiles_x, ntiles;
@@ -39,45 +40,38 @@ typedef struct {
     pthread_mutex_t lock;
 } job;
 
-static void accumulate(double *a, vec3 c)
-{
-    a[0] += c.x; a[1] += c.y; a[2] += c.z;
-    a[3] += (double)c.x * c.x; a[4] += (double)c.y * c.y; a[5] += (double)c.z * c.z;
-}
-
-/* One sample into the pixel's sums a: layer 0 is the total; with --split, layer 1 + k - bmin is L_k. */
-static void add_sample(const job *j, const thread_state *t, double *a, vec3 L)
+/* Sample i into the pixel's sums a: layer 0 is the total; with --split, layer 1 + k - bmin is L_k. */
+static void add_sample(const job *j, const thread_state *t, double *a, int64_t i, vec3 L)
 {
     const integrator_opts *io = &j->o->io;
     int k;
-    accumulate(a, L);
+    pixel_sums_add(a, j->o->sampler, i, L);
     for (k = io->bmin; t->Lk && k <= io->bmax; k++) {
         int layer = 1 + k - io->bmin;
         assert(layer < j->out->nlayers);
-        accumulate(a + NSUM * layer, t->Lk[k]);
+        pixel_sums_add(a + j->nsum * layer, j->o->sampler, i, t->Lk[k]);
     }
 }
 
-/* The samples s0..s1-1 of pixel (px, py), each from its own stream (seed, pixel, sample index). */
+/* The samples s0..s1-1 of pixel (px, py), each addressed by (seed, pixel, sample index) in --sampler. */
 static void render_pixel(const job *j, thread_state *t, int px, int py)
 {
     const render_opts *o = j->o;
     int idx = py * j->cam->width + px;
-    double *a = j->sums + (size_t)idx * NSUM * (size_t)j->out->nlayers;
+    double *a = j->sums + (size_t)idx * (size_t)j->nsum * (size_t)j->out->nlayers;
     int64_t i, end = j->s1;
     if (o->pixel_spp && o->first + o->pixel_spp[idx] < end) end = o->first + o->pixel_spp[idx];
     for (i = j->s0; i < end; i++) {
-        pcg32 rng;
-        float jx, jy;
+        sampler smp;
+        float jx = 0.5f, jy = 0.5f;
         ray r;
         vec3 L;
-        pcg32_for_sample(&rng, o->seed, (uint64_t)idx, (uint64_t)i);
-        jx = o->pixel_center ? 0.5f : pcg32_float(&rng);
-        jy = o->pixel_center ? 0.5f : pcg32_float(&rng);
+        sampler_start(&smp, o->sampler, o->seed, (uint64_t)idx, (uint64_t)i);
+        if (!o->pixel_center) sampler_2d(&smp, SAMPLER_DIM_PIXEL, &jx, &jy);
         /* image rows run top to bottom here, gKit's bottom to top: its (x + o, y + o) is our (x + o, row + 1 - o) */
         r = camera_ray(j->cam, (float)px + (jx + (o->pixel_offset - 0.5f)), (float)py + (jy - (o->pixel_offset - 0.5f)));
-        L = integrate(j->sc, &o->io, &r, &rng, t->Lk, &t->st);
-        if (v3_is_finite(L)) add_sample(j, t, a, L);
+        L = integrate(j->sc, &o->io, &r, &smp, t->Lk, &t->st);
+        if (v3_is_finite(L)) add_sample(j, t, a, i, L);
         else t->nonfinite++;   /* counted, reported, dropped */
     }
 }
@@ -194,22 +188,19 @@ static void run_passes(job *j, int nthreads)
 
 /* The means and the variances of the means of every layer, from the sums of `done` samples (with
  * pixel_spp, of min(pixel_spp[p], done) at pixel p). */
-static void store_images(render_result *out, const double *sums, int done, const int *pixel_spp)
+static void store_images(const job *j, render_result *out, int done)
 {
     size_t npx = (size_t)out->mean[0].w * (size_t)out->mean[0].h, p;
-    int layer, ch;
+    const int *pixel_spp = j->o->pixel_spp;
+    int layer, fewest = done;   /* the dof are those of the pixel with the fewest samples */
     for (p = 0; p < npx; p++)
         for (layer = 0; layer < out->nlayers; layer++) {
             int n = pixel_spp && pixel_spp[p] < done ? pixel_spp[p] : done;
-            const double *a = sums + (p * (size_t)out->nlayers + (size_t)layer) * NSUM;
-            float *m = out->mean[layer].px + 3 * p, *v = out->var[layer].px + 3 * p;
-            for (ch = 0; ch < 3; ch++) {
-                double mean = n > 0 ? a[ch] / n : 0.0;
-                double s2 = n > 1 ? (a[3 + ch] - n * mean * mean) / (n - 1) : 0.0;   /* sample variance */
-                m[ch] = (float)mean;
-                v[ch] = (float)(s2 > 0.0 ? s2 / n : 0.0);                             /* of the mean */
-            }
+            const double *a = j->sums + (p * (size_t)out->nlayers + (size_t)layer) * (size_t)j->nsum;
+            if (n < fewest) fewest = n;
+            pixel_sums_store(a, j->o->sampler, j->o->first, n, out->mean[layer].px + 3 * p, out->var[layer].px + 3 * p);
         }
+    out->variance_dof = pixel_sums_dof(j->o->sampler, fewest);
 }
 
 static void free_thread_states(thread_state *ts, int nthreads)
@@ -276,7 +267,8 @@ static int setup(job *j, int nthreads, render_result *out)
     size_t npx = (size_t)j->cam->width * (size_t)j->cam->height;
     j->ts = alloc_thread_states(nthreads, o->split ? o->io.bmax + 1 : 0);
     if (!j->ts || alloc_layers(out, nlayers, j->cam->width, j->cam->height)) return 1;
-    j->sums = calloc(npx * (size_t)nlayers, NSUM * sizeof(double));
+    j->nsum = pixel_sums_size(o->sampler);
+    j->sums = calloc(npx * (size_t)nlayers, (size_t)j->nsum * sizeof(double));
     return j->sums == NULL || (o->pixel_spp && tile_counts(j));
 }
 
@@ -304,7 +296,7 @@ int render(const scene *sc, const camera *cam, const render_opts *o, render_resu
     pthread_mutex_destroy(&j.lock);
     out->seconds = clock_seconds() - j.pr.t0;
     out->spp = j.done;
-    store_images(out, j.sums, j.done, o->pixel_spp);
+    store_images(&j, out, j.done);
     for (t = 0; t < nthreads; t++) {
         add_stats(&out->st, &j.ts[t].st);
         out->nonfinite += j.ts[t].nonfinite;

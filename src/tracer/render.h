@@ -21,6 +21,7 @@ typedef struct {
                                bottom row as in gKit/OpenGL: 0.5 (pbrt, Mitsuba, gKit's x + .5) or 0 */
     int split;              /* --split: also one image layer per L_k */
     uint64_t seed;
+    sampler_kind sampler;   /* --sampler: independent (the default) or sobol */
     integrator_opts io;
     const int *pixel_spp;   /* adaptive sampling: pixel p (row-major) gets only the samples first ..
                                first + pixel_spp[p] - 1, each <= spp, chosen before the render
@@ -30,6 +31,7 @@ typedef struct {
 typedef struct {
     int nlayers;            /* 1 + (bmax - bmin + 1 with split) */
     image *mean, *var;      /* [0] the total, [1 + k - bmin] L_k with split; var: of the pixel's mean */
+    int variance_dof;       /* the degrees of freedom of var: 0 many (independent), 3 sobol (pixel_sums.h) */
     int spp;                /* the samples reached: first .. first + spp - 1 (fewer than asked if stopped);
                                with pixel_spp, pixel p has min(pixel_spp[p], spp) of them */
     int interrupted;        /* the signal that stopped it after a pass (0: it ran to its end) */

@@ -1,0 +1,124 @@
+/* sampler.c — independent samples (a PCG32 stream per sample) and padded, shuffled, Owen-scrambled
+ * Sobol samples (Burley 2020). For sobol, dimension d of sample i of a pixel is
+ *   j = owen_scramble(i, shuffle_d)                     a permutation of the indices that maps every
+ *                                                       aligned block of 2^m indices onto another one,
+ *   u = owen_scramble(sobol_dim0(j), scramble_d)        (and sobol_dim1(j) for the second coordinate),
+ * with shuffle_d and scramble_d hashed from (seed, pixel, g, d), where the sample belongs to group
+ * g = index mod SAMPLER_GROUPS and i = index div SAMPLER_GROUPS is its index in the group: the K
+ * groups are K independent scramblings of one Sobol sequence, so the spread between their means
+ * estimates the variance of the pixel's mean (pixel_sums.c). Each 2D set is thus the first two Sobol
+ * dimensions, a (0, 2)-sequence in base 2: the first 2^m samples of a pixel put one point in every
+ * elementary interval of area 2^-m, whatever m; the shuffle decorrelates the sets from one another
+ * (padding), so only the first two Sobol dimensions are needed, never a table of direction numbers. */
+#include "tracer/sampler.h"
+#include <stddef.h>
+
+const char *const SAMPLER_NAMES[] = {"independent", "sobol", 0};
+
+static uint32_t reverse_bits(uint32_t x)
+{
+    x = ((x & 0x55555555u) << 1) | ((x >> 1) & 0x55555555u);
+    x = ((x & 0x33333333u) << 2) | ((x >> 2) & 0x33333333u);
+    x = ((x & 0x0F0F0F0Fu) << 4) | ((x >> 4) & 0x0F0F0F0Fu);
+    x = ((x & 0x00FF00FFu) << 8) | ((x >> 8) & 0x00FF00FFu);
+    return (x << 16) | (x >> 16);
+}
+
+/* Van der Corput: the bits of the index mirrored about the binary point. */
+uint32_t sobol_dim0(uint32_t index) { return reverse_bits(index); }
+
+/* The second Sobol dimension, primitive polynomial x + 1: direction numbers v_1 = 1/2 and
+ * v_k = v_{k-1} xor v_{k-1}/2 (the rows of Pascal's triangle mod 2); u = xor of v_k over the bits k
+ * of i. Row k has a 1 in column p iff C(k, p) is odd, i.e. iff the bits of p are among those of k
+ * (Lucas): bit p of u (p = 0 the 1/2 place) is the xor of the index bits k that contain p. On the
+ * reversed index, where bit 31 - k holds index bit k, that is the xor over the bit numbers q that
+ * are subsets of q' (31 - k is k's 5-bit complement), the subset transform, done one bit b of q at
+ * a time: 5 shifts instead of a loop over 32 index bits (tests/test_sampler.c checks it against it). */
+static uint32_t subset_transform(uint32_t y)
+{
+    y ^= (y << 1) & 0xAAAAAAAAu;
+    y ^= (y << 2) & 0xCCCCCCCCu;
+    y ^= (y << 4) & 0xF0F0F0F0u;
+    y ^= (y << 8) & 0xFF00FF00u;
+    y ^= (y << 16) & 0xFFFF0000u;
+    return y;
+}
+
+uint32_t sobol_dim1(uint32_t index) { return subset_transform(reverse_bits(index)); }
+
+/* Owen's nested uniform scrambling of a 32-bit fraction x, by hashing (Burley 2020, section 3): each
+ * bit is flipped or not by a hash of the bits above it and the seed. A hash in which every bit
+ * depends only on the bits below it (Laine and Karras 2011, with Burley's constants) does that to
+ * the bits in reverse order. */
+static uint32_t laine_karras(uint32_t x, uint32_t seed)
+{
+    x += seed;
+    x ^= x * 0x6c50b47cu;
+    x ^= x * 0xb82f1e52u;
+    x ^= x * 0xc7afe638u;
+    x ^= x * 0x8d22f6e6u;
+    return x;
+}
+
+uint32_t owen_scramble(uint32_t x, uint32_t seed) { return reverse_bits(laine_karras(reverse_bits(x), seed)); }
+
+void sampler_start(sampler *s, sampler_kind kind, uint64_t seed, uint64_t pixel, uint64_t index)
+{
+    s->kind = kind;
+    if (kind == SAMPLER_INDEPENDENT) {
+        pcg32_for_sample(&s->rng, seed, pixel, index);
+        return;
+    }
+    /* group g = index mod SAMPLER_GROUPS: its own scrambling (seeds from (seed, pixel, g)), Sobol index i div K */
+    s->pixel_seed = splitmix64_at(splitmix64_mix(splitmix64_mix(seed) ^ pixel), index % SAMPLER_GROUPS);
+    s->index = (uint32_t)(index / SAMPLER_GROUPS);   /* render refuses indices past SAMPLER_SOBOL_MAX_INDEX */
+}
+
+void sampler_from_stream(sampler *s, const pcg32 *r)
+{
+    s->kind = SAMPLER_INDEPENDENT;
+    s->rng = *r;
+}
+
+/* Sobol coordinates of dimension dim: the shuffled index, then coordinate 0 (and 1 if u2). */
+static void sobol_point(const sampler *s, uint32_t dim, uint32_t *u1, uint32_t *u2)
+{
+    uint64_t h = splitmix64_at(s->pixel_seed, dim);
+    /* j = owen_scramble(index), and since sobol_dim0 is a bit reversal, owen_scramble(sobol_dim0(j))
+     * = reverse(laine_karras(j)) and sobol_dim1(j) = subset_transform(rj): the same numbers with four
+     * bit reversals less */
+    uint32_t rj = laine_karras(reverse_bits(s->index), (uint32_t)h), j = reverse_bits(rj);
+    *u1 = reverse_bits(laine_karras(j, (uint32_t)(h >> 32)));
+    if (u2) *u2 = owen_scramble(subset_transform(rj), (uint32_t)splitmix64_mix(h));   /* sobol_dim1(j) */
+}
+
+static float to_float(uint32_t x) { return (float)(x >> 8) * (1.0f / 16777216.0f); }
+
+float sampler_1d(sampler *s, uint32_t dim)
+{
+    uint32_t u;
+    if (s->kind == SAMPLER_INDEPENDENT) return pcg32_float(&s->rng);
+    sobol_point(s, dim, &u, NULL);
+    return to_float(u);
+}
+
+void sampler_2d(sampler *s, uint32_t dim, float *u1, float *u2)
+{
+    uint32_t a, b;
+    if (s->kind == SAMPLER_INDEPENDENT) {
+        *u1 = pcg32_float(&s->rng);
+        *u2 = pcg32_float(&s->rng);
+        return;
+    }
+    sobol_point(s, dim, &a, &b);
+    *u1 = to_float(a);
+    *u2 = to_float(b);
+}
+
+double sampler_1d_32bit(sampler *s, uint32_t dim)
+{
+    uint32_t u;
+    if (s->kind == SAMPLER_INDEPENDENT) return pcg32_double(&s->rng);
+    sobol_point(s, dim, &u, NULL);
+    return (double)u * (1.0 / 4294967296.0);
+}

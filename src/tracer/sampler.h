@@ -1,0 +1,63 @@
+/* sampler.h — the uniform numbers of one sample, addressed by (seed, pixel, sample index, dimension).
+ * sampler_start picks the sample; then sampler_1d, sampler_2d and sampler_1d_32bit give its
+ * coordinate at a dimension: one number (or pair) per use at each vertex, named by the SAMPLER_DIM_*
+ * below, so that the same use of every path of a pixel reads the same dimension.
+ *   independent  one PCG32 stream per sample (pcg32_for_sample), read in the order of the calls:
+ *                the dimension argument is ignored, which keeps pathlab's images bit for bit.
+ *   sobol        Owen-scrambled Sobol points (Burley 2020, "Practical Hash-based Owen Scrambling",
+ *                JCGT 9(4)), padded: every dimension is its own shuffled, scrambled 1D or 2D Sobol
+ *                set, with seeds hashed from (seed, pixel, group, dimension). Sample `index` belongs
+ *                to group index mod SAMPLER_GROUPS, whose scrambling is independent of the other
+ *                groups', and is point index div SAMPLER_GROUPS of it. Within one group the samples
+ *                are NOT independent: their sample variance does not estimate the variance of the
+ *                mean; the spread between the group means does (tracer/pixel_sums.h). */
+#ifndef PATHLAB_SAMPLER_H
+#define PATHLAB_SAMPLER_H
+#include <stdint.h>
+#include "math/rng.h"
+
+typedef enum { SAMPLER_INDEPENDENT, SAMPLER_SOBOL } sampler_kind;   /* --sampler */
+/* sobol: independent scramblings per pixel (K; the variance of the mean has K - 1 degrees of
+ * freedom), and the sample indices it takes: 2^32 points per group (past that they would repeat). */
+#define SAMPLER_GROUPS 4
+#define SAMPLER_SOBOL_MAX_INDEX (4294967296LL * SAMPLER_GROUPS)
+extern const char *const SAMPLER_NAMES[];                            /* in enum order, NULL-terminated */
+
+typedef struct {
+    sampler_kind kind;
+    pcg32 rng;              /* independent: the sample's stream */
+    uint64_t pixel_seed;    /* sobol: hashed from (seed, pixel, group); each dimension's seeds derive from it */
+    uint32_t index;         /* sobol: the point's index in its group (sample index div SAMPLER_GROUPS) */
+} sampler;
+
+/* The dimensions of a sample: the pixel jitter, then SAMPLER_DIMS_PER_VERTEX per path vertex k >= 1. */
+enum {
+    SAMPLER_DIM_PIXEL = 0,          /* 2D: the jitter inside the pixel */
+    SAMPLER_DIM_LIGHT_CHOICE = 0,   /* 1D, 32 bits: which emitter (offsets inside a vertex) */
+    SAMPLER_DIM_LIGHT_POINT = 1,    /* 2D: the point s on it */
+    SAMPLER_DIM_LOBE = 2,           /* 1D: which BRDF lobe */
+    SAMPLER_DIM_DIRECTION = 3,      /* 2D: the direction wi */
+    SAMPLER_DIM_ROULETTE = 4,       /* 1D: Russian roulette */
+    SAMPLER_DIMS_PER_VERTEX = 5
+};
+/* The dimension of use `what` (SAMPLER_DIM_LIGHT_CHOICE ... SAMPLER_DIM_ROULETTE) at vertex k >= 1. */
+static inline uint32_t sampler_dim(int k, int what) { return 1u + (uint32_t)(k - 1) * SAMPLER_DIMS_PER_VERTEX + (uint32_t)what; }
+
+/* Sample `index` of pixel `pixel` under seed `seed`: depends on nothing else. */
+void sampler_start(sampler *s, sampler_kind kind, uint64_t seed, uint64_t pixel, uint64_t index);
+/* An independent sampler reading the stream r from where it is (the tests' own streams). */
+void sampler_from_stream(sampler *s, const pcg32 *r);
+
+/* Uniform in [0, 1), 24 bits: never 1. */
+float sampler_1d(sampler *s, uint32_t dim);
+/* Uniform in [0, 1)^2, both coordinates of one 2D set (independent: two numbers in turn). */
+void sampler_2d(sampler *s, uint32_t dim, float *u1, float *u2);
+/* Uniform in [0, 1) with 32 bits: for discrete choices among millions of items. */
+double sampler_1d_32bit(sampler *s, uint32_t dim);
+
+/* The building blocks of sobol, for the tests: the first two Sobol dimensions (van der Corput and
+ * the one of the polynomial x + 1) as 32-bit fractions, and Owen's nested uniform scrambling. */
+uint32_t sobol_dim0(uint32_t index);
+uint32_t sobol_dim1(uint32_t index);
+uint32_t owen_scramble(uint32_t x, uint32_t seed);
+#endif

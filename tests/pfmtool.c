@@ -13,6 +13,9 @@
  *       pixel-channel, s2 = the sample variance of the K values, v = the mean of the K variances;
  *       prints "ratio R se S z Z ..." with R = sum v / sum s2 and S its jackknife standard error
  *       over the K renders (no normality assumed; K >= 3)
+ *   pfmtool seeds OUT.pfm OUT_VAR.pfm IN_1..IN_K   K >= 2 renders with different seeds (independent
+ *       estimates): their mean, and the variance of that mean from their spread (s2 / K, K - 1 dof),
+ *       for samplers whose own --variance is missing (sobol1)
  * Exit 0 on success, 2 on bad input. */
 #include <math.h>
 #include <stdio.h>
@@ -155,14 +158,40 @@ static int varratio(int argc, char **a)
     return 0;
 }
 
+/* The mean of K independent renders and the variance of that mean, from the spread between them. */
+static int seeds(int k, char **a)
+{
+    image *im, m, v;
+    int i, c, rc = 2;
+    if (k < 2 || !(im = calloc((size_t)k, sizeof *im))) return 2;
+    if (!read_all(im, a + 2, k) && !img_alloc(&m, im[0].w, im[0].h)) {
+        if (!img_alloc(&v, im[0].w, im[0].h)) {
+            for (c = 0; c < 3 * im[0].w * im[0].h; c++) {
+                double mean = 0, q = 0;
+                for (i = 0; i < k; i++) mean += im[i].px[c] / (double)k;
+                for (i = 0; i < k; i++) q += (im[i].px[c] - mean) * (im[i].px[c] - mean);
+                m.px[c] = (float)mean;
+                v.px[c] = (float)(q / (k - 1) / k);
+            }
+            rc = img_write_pfm(&m, a[0]) || img_write_pfm(&v, a[1]) ? 2 : 0;
+            img_free(&v);
+        }
+        img_free(&m);
+    }
+    for (i = 0; i < k; i++) img_free(&im[i]);
+    free(im);
+    return rc;
+}
+
 int main(int argc, char **argv)
 {
+    if (argc >= 6 && !strcmp(argv[1], "seeds")) return seeds(argc - 4, argv + 2);
     if (argc >= 3 && !strcmp(argv[1], "varratio")) return varratio(argc - 2, argv + 2);
     if (argc == 5 && !strcmp(argv[1], "close")) return close_to(argv + 2);
     if (argc == 8 && !strcmp(argv[1], "const")) return constant(argv + 2);
     if (argc == 5 && !strcmp(argv[1], "scale")) return scale(argv + 2);
     if (argc >= 4 && !strcmp(argv[1], "sum")) return sum(argc - 2, argv + 2);
     if ((argc == 4 || argc == 5) && !strcmp(argv[1], "rmse")) return rmse(argc - 2, argv + 2);
-    fprintf(stderr, "usage: pfmtool const W H R G B OUT | scale IN F OUT | sum OUT IN... | rmse A B [B_VAR] | varratio K A.. V..\n");
+    fprintf(stderr, "usage: pfmtool const W H R G B OUT | scale IN F OUT | sum OUT IN... | rmse A B [B_VAR] | varratio K A.. V.. | seeds OUT OUT_VAR IN...\n");
     return 2;
 }

@@ -18,6 +18,10 @@
 #     (24x24, --pixel-center), per-pixel test at alpha 0.01 (bar 99.75%) on Student's t with the
 #     render's 3 dof, block and image tests at alpha 1e-3.
 #  5. What sobol refuses: merge, render --resume, sample indices past 2^34 (exit 2, the file named).
+#  6. sobol1 (one scrambling a pixel, no --variance): refuses --variance and --resume; unbiased: the
+#     mean of 8 sobol1 renders (seeds 1..8, independent scramblings; 24x24, --pixel-center, 512 spp,
+#     L0..L4) with the variance of that mean from their spread (7 dof, zcheck --dof-a 7) agrees with
+#     ref/cornell_L0-4 (per pixel alpha 0.01, bar 99.75%; blocks and image alpha 1e-3).
 # Broken on purpose (docs/sampler.md, "Tests under sobol"): the within-pixel variance fails 4 checks,
 # groups sharing one scrambling 28, the roulette reading the direction's dimension 3; a dimension left
 # unscrambled (the index shuffle kept) fails none: it stays unbiased.
@@ -111,12 +115,30 @@ expect_err "render --resume: names the file, says why and suggests --sampler ind
 cmp -s "$TMP/s.pfm" "$TMP/s.bak" && pass "render --resume left the sobol render as it was" || fail "render --resume changed the sobol render"
 $PATHLAB render scenes/cornell.obj --quiet --size 16x16 --spp 8 -o "$TMP/i.pfm"
 expect_status "render --resume --sampler sobol of an independent render: refused (exit 2)" 2 $PATHLAB render scenes/cornell.obj $S --quiet --size 16x16 --spp 16 --resume -o "$TMP/i.pfm"
-expect_err "render --resume --sampler sobol: says why" "i\.pfm \(this render: --sampler sobol\): a sobol render cannot be resumed"
+expect_err "render --resume --sampler sobol: says why" "i\.pfm \(this render: --sampler sobol\): a Sobol render cannot be resumed"
 $PATHLAB render scenes/cornell.obj $S --quiet --size 16x16 --samples 8:16 -o "$TMP/s2.pfm"
 expect_status "merge refuses sobol pieces (exit 2)" 2 $PATHLAB merge "$TMP/m.pfm" "$TMP/s.pfm" "$TMP/s2.pfm"
 expect_err "merge: names the file, says why and suggests --sampler independent" "s\.pfm was rendered with --sampler sobol.*not independent.*--sampler independent"
 expect_no_file "merge of sobol pieces wrote nothing" "$TMP/m.pfm"
 expect_status "sobol refuses sample indices past 2^34 (exit 2)" 2 $PATHLAB render scenes/cornell.obj $S --quiet --size 16x16 --samples 17179869180:17179869185 -o "$TMP/big.pfm"
-expect_err "sobol past 2^34: says why" "below 17179869184 .*2\^32 points in each of its 4 scramblings"
+expect_err "sobol past 2^34: says why" "below 17179869184 .*2\^32 points in each of its 4 scrambling"
 expect_status "sobol takes the last index below 2^34" 0 $PATHLAB render scenes/cornell.obj $S --quiet --size 16x16 --samples 17179869180:17179869184 -o "$TMP/big.pfm"
+
+# ---- 6. sobol1: one scrambling a pixel
+expect_status "sobol1 refuses --variance (exit 2)" 2 $PATHLAB render scenes/cornell.obj --sampler sobol1 --quiet --size 16x16 --spp 8 -o "$TMP/o1.pfm" --variance "$TMP/o1_var.pfm"
+expect_err "sobol1 --variance: says why and what to use" "one scrambled sequence per pixel.*--sampler sobol"
+expect_no_file "sobol1 --variance wrote nothing" "$TMP/o1.pfm" "$TMP/o1_var.pfm"
+$PATHLAB render scenes/cornell.obj --sampler sobol1 --quiet --size 16x16 --spp 8 -o "$TMP/o1.pfm"
+grep -q '^sampler sobol1$' "$TMP/o1.pfm.meta" && pass "the sidecar says sampler sobol1" || fail "the sidecar lacks sampler sobol1: $(cat "$TMP/o1.pfm.meta")"
+expect_status "sobol1 refuses --resume (exit 2)" 2 $PATHLAB render scenes/cornell.obj --sampler sobol1 --quiet --size 16x16 --spp 16 --resume -o "$TMP/o1.pfm"
+expect_err "sobol1 --resume: says why" "was rendered with --sampler sobol1: a Sobol render cannot be resumed"
+for s in 1 2 3 4 5 6 7 8; do
+    $PATHLAB render scenes/cornell.obj --sampler sobol1 --quiet --size 24x24 --pixel-center --spp 512 --seed $s --bounces 0:4 -o "$TMP/q$s.pfm"
+done
+# shellcheck disable=SC2046
+$PFMTOOL seeds "$TMP/q.pfm" "$TMP/qv.pfm" $(for s in 1 2 3 4 5 6 7 8; do echo "$TMP/q$s.pfm"; done)
+out1=$("$ZCHECK" "$TMP/q.pfm" "$TMP/qv.pfm" "$REF/cornell_L0-4.pfm" "$REF/cornell_L0-4_var.pfm" --dof-a 7 --alpha 0.01 --block 0 --pixel-pass 0.9975 2>&1); rc1=$?
+out2=$("$ZCHECK" "$TMP/q.pfm" "$TMP/qv.pfm" "$REF/cornell_L0-4.pfm" "$REF/cornell_L0-4_var.pfm" --dof-a 7 --alpha 0.001 --block 8 --pixel-pass 0 2>&1); rc2=$?
+if [ $rc1 -eq 0 ] && [ $rc2 -eq 0 ]; then pass "sobol1, 8 seeds x 512 spp, against cornell_L0-4 (7 dof): $out1 | $out2"
+else fail "sobol1, 8 seeds x 512 spp, against cornell_L0-4 (7 dof): $out1 | $out2"; fi
 exit 0

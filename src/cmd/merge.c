@@ -34,10 +34,10 @@ static int check_inputs(input *in, int n, sidecar *all)
                                     "(was it written by pathlab render? copy the .meta with it)\n", in[i].path, in[i].path);
         if (rc) return 1;
         if (sidecar_is_sobol(&in[i].meta)) {
-            fprintf(stderr, "pathlab merge: %s was rendered with --sampler sobol: sobol renders cannot be merged: the file "
-                            "keeps the mean and the variance, not the sums of its %d scramblings that the variance needs, "
+            fprintf(stderr, "pathlab merge: %s was rendered with --sampler %s: Sobol renders cannot be merged: the file "
+                            "keeps the mean and the variance, not the sums of each scrambling that the variance needs, "
                             "and pieces of one scrambled sequence are not independent. Render pieces to merge with "
-                            "--sampler independent\n", in[i].path, SAMPLER_GROUPS);
+                            "--sampler independent\n", in[i].path, in[i].meta.sampler);
             return 1;
         }
         if (strcmp(in[i].meta.kind, "mean")) {

@@ -13,6 +13,25 @@
 #include "sys/interrupt.h"
 #include "sys/progress.h"
 
+/* What a Sobol sampler cannot do: 1 after saying why. */
+static int check_sampler_args(const render_args *a)
+{
+    const char *name = SAMPLER_NAMES[a->ro.sampler];
+    if (a->ro.first + a->ro.spp > sampler_max_index(a->ro.sampler)) {
+        fprintf(stderr, "pathlab render: --sampler %s takes sample indices below %lld (2^32 points in each of its %d "
+                "scrambling(s); past that the points would repeat): use --sampler independent\n",
+                name, (long long)sampler_max_index(a->ro.sampler), sampler_groups(a->ro.sampler));
+        return 1;
+    }
+    if (a->ro.sampler == SAMPLER_SOBOL1 && a->variance) {
+        fprintf(stderr, "pathlab render: --variance %s: --sampler sobol1 draws one scrambled sequence per pixel, whose "
+                "samples are not independent: no variance of the mean can be estimated from them. Use --sampler sobol "
+                "(4 independent scramblings a pixel: a variance with 3 degrees of freedom) or independent\n", a->variance);
+        return 1;
+    }
+    return 0;
+}
+
 /* What render needs beyond valid flag values: a scene, an output it can write, a last bounce for
  * --split, sample flags that go together. 0, or 1 after printing why. */
 static int check_render_args(render_args *a)
@@ -45,13 +64,7 @@ static int check_render_args(render_args *a)
     }
     if (render_adaptive_check(a)) return 1;
     if (a->ro.time_limit > 0 && !a->spp_given && !a->samples_given && !a->target_given) a->ro.spp = 1 << 30;   /* --time alone: no cap */
-    if (a->ro.sampler == SAMPLER_SOBOL && a->ro.first + a->ro.spp > SAMPLER_SOBOL_MAX_INDEX) {
-        fprintf(stderr, "pathlab render: --sampler sobol takes sample indices below %lld (2^32 points in each of its %d "
-                "scramblings; past that the points would repeat): use --sampler independent\n",
-                (long long)SAMPLER_SOBOL_MAX_INDEX, SAMPLER_GROUPS);
-        return 1;
-    }
-    return 0;
+    return check_sampler_args(a);
 }
 
 static int parse_render_args(render_args *a, int argc, char **argv)
@@ -103,12 +116,13 @@ static void describe_render(const render_args *a, const scene *s, sidecar *m)
 /* --sampler sobol cannot be resumed: 1 after saying why. */
 static int refuse_sobol_resume(const render_args *a, const sidecar *had)
 {
-    if (!sidecar_is_sobol(had) && a->ro.sampler != SAMPLER_SOBOL) return 0;
-    fprintf(stderr, "pathlab render: --resume: %s%s: a sobol render cannot be resumed: its file keeps the mean and the "
-            "variance, not the sums of its %d scramblings that the variance needs, and more points of the same "
+    if (!sidecar_is_sobol(had) && a->ro.sampler == SAMPLER_INDEPENDENT) return 0;
+    fprintf(stderr, "pathlab render: --resume: %s%s%s%s: a Sobol render cannot be resumed: its file keeps the mean and the "
+            "variance, not the sums of each scrambling that the variance needs, and more points of the same "
             "scrambled sequences are not independent of those it has. Render it again with the --spp wanted, "
             "or use --sampler independent for renders to resume\n", a->out,
-            sidecar_is_sobol(had) ? " was rendered with --sampler sobol" : " (this render: --sampler sobol)", SAMPLER_GROUPS);
+            sidecar_is_sobol(had) ? " was rendered with --sampler " : " (this render: --sampler ",
+            sidecar_is_sobol(had) ? had->sampler : SAMPLER_NAMES[a->ro.sampler], sidecar_is_sobol(had) ? "" : ")");
     return 1;
 }
 

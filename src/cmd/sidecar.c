@@ -9,7 +9,7 @@
 
 void sidecar_path(char *dst, size_t cap, const char *image_path) { snprintf(dst, cap, "%s.meta", image_path); }
 
-int sidecar_is_sobol(const sidecar *m) { return !strcmp(m->sampler, "sobol"); }
+int sidecar_is_sobol(const sidecar *m) { return !strncmp(m->sampler, "sobol", 5); }   /* sobol, sobol1 */
 
 int64_t sidecar_spp(const sidecar *m)
 {

@@ -3,12 +3,12 @@
 
 #define NSUM_INDEPENDENT 6   /* sums of the samples and of their squares, RGB */
 
-int pixel_sums_size(sampler_kind kind) { return kind == SAMPLER_SOBOL ? 3 * SAMPLER_GROUPS : NSUM_INDEPENDENT; }
+int pixel_sums_size(sampler_kind kind) { return kind == SAMPLER_INDEPENDENT ? NSUM_INDEPENDENT : 3 * sampler_groups(kind); }
 
 void pixel_sums_add(double *a, sampler_kind kind, int64_t index, vec3 c)
 {
-    if (kind == SAMPLER_SOBOL) {
-        double *g = a + 3 * (index % SAMPLER_GROUPS);
+    if (kind != SAMPLER_INDEPENDENT) {
+        double *g = a + 3 * (index % sampler_groups(kind));
         g[0] += c.x; g[1] += c.y; g[2] += c.z;
         return;
     }
@@ -17,14 +17,16 @@ void pixel_sums_add(double *a, sampler_kind kind, int64_t index, vec3 c)
 }
 
 /* Indices i in [0, x) with i mod K = g. */
-static int64_t count_below(int64_t x, int g) { return (x + SAMPLER_GROUPS - 1 - g) / SAMPLER_GROUPS; }
+static int64_t count_below(int64_t x, int g, int K) { return (x + K - 1 - g) / K; }
 
-int64_t pixel_sums_group_count(int64_t first, int64_t n, int g) { return count_below(first + n, g) - count_below(first, g); }
+int64_t pixel_sums_group_count(int64_t first, int64_t n, int g, int K) { return count_below(first + n, g, K) - count_below(first, g, K); }
 
 int pixel_sums_dof(sampler_kind kind, int n)
 {
-    if (kind != SAMPLER_SOBOL) return 0;
-    return (n < SAMPLER_GROUPS ? n : SAMPLER_GROUPS) - 1;
+    int K = sampler_groups(kind);
+    if (kind == SAMPLER_INDEPENDENT) return 0;
+    if (K < 2) return -1;   /* sobol1: one scrambling, no variance */
+    return (n < K ? n : K) - 1;
 }
 
 /* The groups' means m_g (n_g samples, n in all) scatter about the mean m. With n a multiple of K the
@@ -34,16 +36,16 @@ int pixel_sums_dof(sampler_kind kind, int n)
  * variance's, sum_g n_g (m_g - m)^2 / ((K' - 1) n) over the K' groups with samples, unbiased if each
  * m_g had variance c / n_g. Sobol's group variance falls faster than 1 / n_g, so this leans a little
  * towards the smaller groups: a bias of order 1 / n_g, nil when n is a multiple of K. */
-static void store_groups(const double *a, int64_t first, int n, float mean[3], float var[3])
+static void store_groups(const double *a, int K, int64_t first, int n, float mean[3], float var[3])
 {
     int g, ch, groups = 0;
     int64_t ng[SAMPLER_GROUPS];
-    for (g = 0; g < SAMPLER_GROUPS; g++) groups += (ng[g] = pixel_sums_group_count(first, n, g)) > 0;
+    for (g = 0; g < K; g++) groups += (ng[g] = pixel_sums_group_count(first, n, g, K)) > 0;
     for (ch = 0; ch < 3; ch++) {
         double sum = 0.0, m, ss = 0.0;
-        for (g = 0; g < SAMPLER_GROUPS; g++) sum += a[3 * g + ch];
+        for (g = 0; g < K; g++) sum += a[3 * g + ch];
         m = n > 0 ? sum / n : 0.0;
-        for (g = 0; g < SAMPLER_GROUPS; g++)
+        for (g = 0; g < K; g++)
             if (ng[g] > 0) {
                 double e = a[3 * g + ch] / (double)ng[g] - m;
                 ss += (double)ng[g] * e * e;
@@ -56,8 +58,8 @@ static void store_groups(const double *a, int64_t first, int n, float mean[3], f
 void pixel_sums_store(const double *a, sampler_kind kind, int64_t first, int n, float mean[3], float var[3])
 {
     int ch;
-    if (kind == SAMPLER_SOBOL) {
-        store_groups(a, first, n, mean, var);
+    if (kind != SAMPLER_INDEPENDENT) {   /* sobol1 (one group): variance 0, and no variance file */
+        store_groups(a, sampler_groups(kind), first, n, mean, var);
         return;
     }
     for (ch = 0; ch < 3; ch++) {

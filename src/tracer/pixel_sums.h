@@ -19,8 +19,9 @@ int pixel_sums_size(sampler_kind kind);
 void pixel_sums_add(double *a, sampler_kind kind, int64_t index, vec3 c);
 /* The mean and the variance of the mean (RGB) of the samples first .. first + n - 1 summed in a. */
 void pixel_sums_store(const double *a, sampler_kind kind, int64_t first, int n, float mean[3], float var[3]);
-/* The degrees of freedom of that variance: 0 for "many" (independent), else groups with samples - 1. */
+/* The degrees of freedom of that variance: 0 for "many" (independent), -1 for none (sobol1: one
+ * scrambling), else groups with samples - 1. */
 int pixel_sums_dof(sampler_kind kind, int n);
-/* The samples of group g among the indices first .. first + n - 1. */
-int64_t pixel_sums_group_count(int64_t first, int64_t n, int g);
+/* The samples of group g (of K) among the indices first .. first + n - 1. */
+int64_t pixel_sums_group_count(int64_t first, int64_t n, int g, int K);
 #endif

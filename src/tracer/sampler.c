@@ -13,7 +13,7 @@
 #include "tracer/sampler.h"
 #include <stddef.h>
 
-const char *const SAMPLER_NAMES[] = {"independent", "sobol", 0};
+const char *const SAMPLER_NAMES[] = {"independent", "sobol", "sobol1", 0};
 
 static uint32_t reverse_bits(uint32_t x)
 {
@@ -70,8 +70,11 @@ void sampler_start(sampler *s, sampler_kind kind, uint64_t seed, uint64_t pixel,
         return;
     }
     /* group g = index mod SAMPLER_GROUPS: its own scrambling (seeds from (seed, pixel, g)), Sobol index i div K */
-    s->pixel_seed = splitmix64_at(splitmix64_mix(splitmix64_mix(seed) ^ pixel), index % SAMPLER_GROUPS);
-    s->index = (uint32_t)(index / SAMPLER_GROUPS);   /* render refuses indices past SAMPLER_SOBOL_MAX_INDEX */
+    {
+        uint64_t K = (uint64_t)sampler_groups(kind);
+        s->pixel_seed = splitmix64_at(splitmix64_mix(splitmix64_mix(seed) ^ pixel), index % K);
+        s->index = (uint32_t)(index / K);   /* render refuses indices past sampler_max_index */
+    }
 }
 
 void sampler_from_stream(sampler *s, const pcg32 *r)

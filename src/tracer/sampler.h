@@ -10,17 +10,21 @@
  *                to group index mod SAMPLER_GROUPS, whose scrambling is independent of the other
  *                groups', and is point index div SAMPLER_GROUPS of it. Within one group the samples
  *                are NOT independent: their sample variance does not estimate the variance of the
- *                mean; the spread between the group means does (tracer/pixel_sums.h). */
+ *                mean; the spread between the group means does (tracer/pixel_sums.h).
+ *   sobol1       the same with a single group: one scrambled sequence per pixel, stratified over
+ *                all of its samples (the lowest error), whose variance cannot be estimated. */
 #ifndef PATHLAB_SAMPLER_H
 #define PATHLAB_SAMPLER_H
 #include <stdint.h>
 #include "math/rng.h"
 
-typedef enum { SAMPLER_INDEPENDENT, SAMPLER_SOBOL } sampler_kind;   /* --sampler */
+typedef enum { SAMPLER_INDEPENDENT, SAMPLER_SOBOL, SAMPLER_SOBOL1 } sampler_kind;   /* --sampler */
 /* sobol: independent scramblings per pixel (K; the variance of the mean has K - 1 degrees of
- * freedom), and the sample indices it takes: 2^32 points per group (past that they would repeat). */
-#define SAMPLER_GROUPS 4
-#define SAMPLER_SOBOL_MAX_INDEX (4294967296LL * SAMPLER_GROUPS)
+ * freedom); sobol1: one scrambling per pixel (K = 1: the best-stratified points, but no variance
+ * estimate). Each takes 2^32 points per group (past that they would repeat). */
+#define SAMPLER_GROUPS 4   /* sobol's K; sampler_groups() gives each kind's */
+static inline int sampler_groups(sampler_kind k) { return k == SAMPLER_SOBOL ? SAMPLER_GROUPS : k == SAMPLER_SOBOL1 ? 1 : 0; }
+static inline int64_t sampler_max_index(sampler_kind k) { return k == SAMPLER_INDEPENDENT ? INT64_MAX : 4294967296LL * sampler_groups(k); }
 extern const char *const SAMPLER_NAMES[];                            /* in enum order, NULL-terminated */
 
 typedef struct {

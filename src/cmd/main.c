@@ -35,6 +35,9 @@ static const char *USAGE =
     "                prints the size and each channel's mean, min and max\n"
     "  pathlab help | --version\n"
     "\n"
+    ;
+/* in parts: ISO C99 promises string literals of 4095 characters only */
+static const char *USAGE_RENDER =
     "render flags:\n"
     "  -o FILE              output image; .pfm (linear float), .ppm or .png (8-bit sRGB)\n"
     "  --spp N              samples per pixel (default 16), rendered in passes: every pixel gets sample i\n"
@@ -63,7 +66,9 @@ static const char *USAGE =
     "  --dir {dir|}        how a direction is chosen at a surface (default brdf)\n"
     "  --direct {direct|}   the estimator of direct light (default mis-power)\n"
     "  --rr D|off           Russian roulette after D bounces (default 3)\n"
-    "  --sampler S          independent (default) or sobol: 4 scrambled Sobol sets a pixel (docs/sampler.md)\n"
+    "  --sampler S          independent (default: the slides' Monte Carlo), sobol (4 scrambled Sobol sets a pixel:\n"
+    "                       less noise, --variance with 3 dof) or sobol1 (1 set: the least noise, no --variance;\n"
+    "                       docs/sampler.md). Sobol renders cannot be resumed or merged\n"
     "  --variance FILE.pfm  also write the variance of each pixel's mean (with --split, one per bounce too)\n";
 
 /* The third part: adaptive sampling (docs/adaptive.md). */
@@ -111,6 +116,7 @@ static const command COMMANDS[] = {
 static void help(FILE *f)
 {
     help_print(f, USAGE);
+    help_print(f, USAGE_RENDER);
     help_print(f, USAGE_ADAPTIVE);
     help_print(f, USAGE_TOOLS);
 }

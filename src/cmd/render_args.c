@@ -111,7 +111,7 @@ static int parse_direct(void *ctx, const char *flag, const char *v)
     return 0;
 }
 
-/* --sampler independent|sobol */
+/* --sampler independent|sobol|sobol1 */
 static int parse_sampler(void *ctx, const char *flag, const char *v)
 {
     render_args *a = ctx;

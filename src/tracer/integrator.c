@@ -82,8 +82,12 @@ static float dir_pdf2_sa(const integrator_opts *opt, const vertex *p, vec3 wi_lo
  * BRDF lobe sent it below the surface). */
 static vec3 sample_dir(const integrator_opts *opt, const vertex *p, sampler *smp, int k, float *pdf2_sa)
 {
-    float u0 = sampler_1d(smp, sampler_dim(k, SAMPLER_DIM_LOBE)), u1, u2;
+    float u0 = 0.0f, u1, u2;
     vec3 wi_local;
+    /* the lobe's number: independent draws it always (its stream's order); a Sobol sampler only when
+     * there is a choice to make (a dimension costs a hash there) */
+    if (smp->kind == SAMPLER_INDEPENDENT || (opt->dir == DIR_BRDF && brdf_glossy_prob(p->mat) > 0.0f && brdf_glossy_prob(p->mat) < 1.0f))
+        u0 = sampler_1d(smp, sampler_dim(k, SAMPLER_DIM_LOBE));
     sampler_2d(smp, sampler_dim(k, SAMPLER_DIM_DIRECTION), &u1, &u2);
     switch (opt->dir) {
     case DIR_UNIFORM: wi_local = sample_uniform_hemisphere(u1, u2); *pdf2_sa = pdf_uniform_hemisphere(wi_local); break;
@@ -112,9 +116,14 @@ static vec3 direct_from_light(const scene *sc, const integrator_opts *opt, const
     light_sample s;
     vec3 to_s, wi_world, wi_local, f;
     float dist2, dist, cos_p, cos_s, pdf1_sa, w_mis, u1, u2;
-    double u0 = sampler_1d_32bit(smp, sampler_dim(k, SAMPLER_DIM_LIGHT_CHOICE));
-    sampler_2d(smp, sampler_dim(k, SAMPLER_DIM_LIGHT_POINT), &u1, &u2);
-    light_sample_point(&sc->lights, opt->light, p->pos, u0, u1, u2, &s);
+    if (smp->kind == SAMPLER_INDEPENDENT) {   /* three numbers, in the order of pathlab before the samplers */
+        double u0 = sampler_1d_32bit(smp, sampler_dim(k, SAMPLER_DIM_LIGHT_CHOICE));
+        sampler_2d(smp, sampler_dim(k, SAMPLER_DIM_LIGHT_POINT), &u1, &u2);
+        light_sample_point(&sc->lights, opt->light, p->pos, u0, u1, u2, &s);
+    } else {                                  /* one stratified 2D set for the choice and the point */
+        double u0 = sampler_2d_32bit(smp, sampler_dim(k, SAMPLER_DIM_LIGHT_POINT), &u2);
+        light_sample_point_joint(&sc->lights, opt->light, p->pos, u0, u2, &s);
+    }
     to_s = v3_sub(s.pos, p->pos);
     dist2 = v3_dot(to_s, to_s);
     dist = sqrtf(dist2);

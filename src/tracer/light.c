@@ -161,14 +161,11 @@ float light_pdf_area(const light_set *ls, light_strategy strategy, int i, vec3 p
     return choice_prob(ls, strategy, i) / e->area;
 }
 
-void light_sample_point(const light_set *ls, light_strategy strategy, vec3 p, double u0, float u1, float u2, light_sample *out)
+/* The point on emitter i (chosen already) from u1, u2. */
+static void sample_on_emitter(const light_set *ls, light_strategy strategy, int i, vec3 p, float u1, float u2, light_sample *out)
 {
-    int i;
-    const emitter *e;
+    const emitter *e = &ls->e[i];
     float b1, b2;
-    assert(ls->n > 0);   /* callers sample lights only in a scene that has some */
-    i = pick(ls->cdf[choice_of(strategy)], ls->n, u0);
-    e = &ls->e[i];
     out->n = e->n;
     out->Le = e->Le;
     out->emitter = i;
@@ -186,4 +183,27 @@ void light_sample_point(const light_set *ls, light_strategy strategy, vec3 p, do
     sample_uniform_triangle(u1, u2, &b1, &b2);
     out->pos = v3_add(e->a, v3_add(v3_scale(e->e1, b1), v3_scale(e->e2, b2)));
     out->pdf_area = light_pdf_area(ls, strategy, i, p, out->pos);
+}
+
+void light_sample_point(const light_set *ls, light_strategy strategy, vec3 p, double u0, float u1, float u2, light_sample *out)
+{
+    assert(ls->n > 0);   /* callers sample lights only in a scene that has some */
+    sample_on_emitter(ls, strategy, pick(ls->cdf[choice_of(strategy)], ls->n, u0), p, u1, u2, out);
+}
+
+void light_sample_point_joint(const light_set *ls, light_strategy strategy, vec3 p, double u0, float u2, light_sample *out)
+{
+    const double *cdf = ls->cdf[choice_of(strategy)];
+    int i;
+    double lo, share, r;
+    float u1;
+    assert(ls->n > 0);
+    i = pick(cdf, ls->n, u0);
+    lo = i > 0 ? cdf[i - 1] : 0.0;
+    share = cdf[i] - lo;
+    r = share > 0.0 ? (u0 - lo) / share : 0.0;
+    u1 = (float)r;
+    if (!(u1 < 1.0f)) u1 = 0x1.fffffep-1f;   /* r rounded up to 1, or past it by the cdf's rounding */
+    if (!(u1 >= 0.0f)) u1 = 0.0f;
+    sample_on_emitter(ls, strategy, i, p, u1, u2, out);
 }

@@ -118,6 +118,20 @@ void sampler_2d(sampler *s, uint32_t dim, float *u1, float *u2)
     *u2 = to_float(b);
 }
 
+double sampler_2d_32bit(sampler *s, uint32_t dim, float *u2)
+{
+    uint32_t a, b;
+    double u;
+    if (s->kind == SAMPLER_INDEPENDENT) {
+        u = pcg32_double(&s->rng);
+        *u2 = pcg32_float(&s->rng);
+        return u;
+    }
+    sobol_point(s, dim, &a, &b);
+    *u2 = to_float(b);
+    return (double)a * (1.0 / 4294967296.0);
+}
+
 double sampler_1d_32bit(sampler *s, uint32_t dim)
 {
     uint32_t u;

@@ -58,6 +58,9 @@ float sampler_1d(sampler *s, uint32_t dim);
 void sampler_2d(sampler *s, uint32_t dim, float *u1, float *u2);
 /* Uniform in [0, 1) with 32 bits: for discrete choices among millions of items. */
 double sampler_1d_32bit(sampler *s, uint32_t dim);
+/* Both coordinates of a 2D set, the first with 32 bits: a discrete choice whose remainder is reused
+ * as a coordinate (light_sample_point_joint), so the pair stays one stratified 2D set. */
+double sampler_2d_32bit(sampler *s, uint32_t dim, float *u2);
 
 /* The building blocks of sobol, for the tests: the first two Sobol dimensions (van der Corput and
  * the one of the polynomial x + 1) as 32-bit fractions, and Owen's nested uniform scrambling. */

@@ -88,3 +88,7 @@ mutant adaptive-pilot-kept src/tracer/adaptive.c \
 mutant adaptive-count-as-done src/tracer/render.c \
     's/int n = pixel_spp \&\& pixel_spp\[p\] < done ? pixel_spp\[p\] : done;/int n = done;/' \
     test_adaptive - 'each pixel sum divided by the passes done instead of its own sample count'
+# ---- Sobol samplers (docs/sampler.md) ----
+mutant sobol-light-remainder src/tracer/light.c \
+    's/    u1 = (float)r;/    u1 = (float)u0; (void)r;/' \
+    test_sobol - 'the joint light sample takes the raw choice number as its first coordinate, not its remainder in the chosen emitter'

@@ -244,12 +244,10 @@ static int alloc_layers(render_result *out, int n, int w, int h)
     return 0;
 }
 
-/* j->tile_spp: the largest pixel_spp of each tile; 1 if memory ran out. */
+/* j->tile_spp: the largest pixel_spp of each tile (j->tiles_x, j->ntiles set); 1 if memory ran out. */
 static int tile_counts(job *j)
 {
     int x, y, w = j->cam->width, h = j->cam->height;
-    j->tiles_x = (w + TILE - 1) / TILE;
-    j->ntiles = j->tiles_x * ((h + TILE - 1) / TILE);
     if (!(j->tile_spp = calloc((size_t)j->ntiles, sizeof(int)))) return 1;
     for (y = 0; y < h; y++)
         for (x = 0; x < w; x++) {
@@ -267,6 +265,8 @@ static int setup(job *j, int nthreads, render_result *out)
     size_t npx = (size_t)j->cam->width * (size_t)j->cam->height;
     j->ts = alloc_thread_states(nthreads, o->split ? o->io.bmax + 1 : 0);
     if (!j->ts || alloc_layers(out, nlayers, j->cam->width, j->cam->height)) return 1;
+    j->tiles_x = (j->cam->width + TILE - 1) / TILE;
+    j->ntiles = j->tiles_x * ((j->cam->height + TILE - 1) / TILE);
     j->nsum = pixel_sums_size(o->sampler);
     j->sums = calloc(npx * (size_t)nlayers, (size_t)j->nsum * sizeof(double));
     return j->sums == NULL || (o->pixel_spp && tile_counts(j));
@@ -287,8 +287,6 @@ int render(const scene *sc, const camera *cam, const render_opts *o, render_resu
         render_result_free(out);
         return 1;
     }
-    j.tiles_x = (cam->width + TILE - 1) / TILE;
-    j.ntiles = j.tiles_x * ((cam->height + TILE - 1) / TILE);
     progress_start(&j.pr, !o->quiet);
     pthread_mutex_init(&j.lock, NULL);
     if (sc->lights.n > 0) run_passes(&j, nthreads);

@@ -14,7 +14,7 @@
  * after fflush and fclose succeeded: a crash or a full disk never leaves a half-written image, and
  * an existing image stays untouched when the write fails. */
 #include "image/image.h"
-#include "sys/interrupt.h"
+#include "sys/atomic_file.h"
 #include <ctype.h>
 #include <errno.h>
 #include <float.h>
@@ -65,71 +65,6 @@ float srgb_encode(float linear)
     return 1.055f * powf(linear, 1.0f / 2.4f) - 0.055f;
 }
 
-/* ---- atomic file writes ---- */
-
-/* The permissions fopen would have given the file: 0666 minus the umask. mkstemp creates files
- * 0600, which would make every image private. umask can only be read by setting it, so this is
- * not thread-safe; images are written from the main thread after rendering. */
-static mode_t creation_mode(void)
-{
-    mode_t mask = umask(022);
-    umask(mask);
-    return (mode_t)(0666 & ~mask);
-}
-
-/* Opens a temporary file next to path; *tmp receives its name (to free). NULL on error. */
-static FILE *atomic_open(const char *path, char **tmp)
-{
-    size_t n = strlen(path);
-    int fd;
-    FILE *f;
-    *tmp = malloc(n + sizeof ".tmp.XXXXXX");
-    if (!*tmp) {
-        fprintf(stderr, "%s: out of memory\n", path);
-        return NULL;
-    }
-    memcpy(*tmp, path, n);
-    memcpy(*tmp + n, ".tmp.XXXXXX", sizeof ".tmp.XXXXXX");
-    interrupt_hold();   /* a second Ctrl-C must find the file registered, to remove it */
-    fd = mkstemp(*tmp);
-    if (fd >= 0) interrupt_temp_add(*tmp);
-    interrupt_release();
-    if (fd < 0) {
-        fprintf(stderr, "%s: cannot create a temporary file: %s\n", path, strerror(errno));
-        free(*tmp);
-        *tmp = NULL;
-        return NULL;
-    }
-    if (fchmod(fd, creation_mode()) != 0 || !(f = fdopen(fd, "wb"))) {
-        fprintf(stderr, "%s: cannot write: %s\n", path, strerror(errno));
-        close(fd);
-        unlink(*tmp);
-        interrupt_temp_remove(*tmp);
-        free(*tmp);
-        *tmp = NULL;
-        return NULL;
-    }
-    return f;
-}
-
-/* Finishes an atomic write: when ok and the data reached the file, renames tmp over path.
- * Otherwise removes tmp. Frees tmp. Returns 0 when path now holds the new image. */
-static int atomic_close(FILE *f, char *tmp, const char *path, int ok)
-{
-    int err = 0;
-    if (ok && fflush(f) != 0) err = errno;
-    if (ok && !err && ferror(f)) err = EIO;
-    if (fclose(f) != 0 && ok && !err) err = errno;
-    interrupt_hold();
-    if (ok && !err && rename(tmp, path) != 0) err = errno;
-    if (!ok || err) unlink(tmp);
-    interrupt_temp_remove(tmp);
-    interrupt_release();
-    if (ok && err) fprintf(stderr, "%s: cannot write: %s\n", path, strerror(err));
-    free(tmp);
-    return (ok && !err) ? 0 : 1;
-}
-
 static int image_ok(const image *im, const char *path)
 {
     if (im && im->px && dims_ok(im->w, im->h)) return 1;
@@ -157,7 +92,7 @@ static int write_rows(const image *im, const char *path, const char *header, siz
         fprintf(stderr, "%s: out of memory\n", path);
         return 1;
     }
-    f = atomic_open(path, &tmp);
+    f = atomic_file_open(path, &tmp);
     if (!f) {
         free(row);
         return 1;
@@ -170,7 +105,7 @@ static int write_rows(const image *im, const char *path, const char *header, siz
     }
     if (!ok) fprintf(stderr, "%s: cannot write: %s\n", path, strerror(errno));
     free(row);
-    return atomic_close(f, tmp, path, ok);
+    return atomic_file_close(f, tmp, path, ok);
 }
 
 /* ---- PFM ---- */
@@ -560,7 +495,7 @@ int img_write_png(const image *im, const char *path, float exposure)
     }
     for (y = 0; y < im->h; y++)
         encode_ppm_row(im->px + (size_t)y * im->w * 3, im->w, rgb + (size_t)y * im->w * 3, gain);
-    f = atomic_open(path, &tmp);
+    f = atomic_file_open(path, &tmp);
     if (!f) {
         free(rgb);
         return 1;
@@ -568,7 +503,7 @@ int img_write_png(const image *im, const char *path, float exposure)
     ok = png_write_rgb8(f, rgb, im->w, im->h) == 0;
     if (!ok) fprintf(stderr, "%s: cannot write: %s\n", path, strerror(errno));
     free(rgb);
-    return atomic_close(f, tmp, path, ok);
+    return atomic_file_close(f, tmp, path, ok);
 }
 
 /* ---- by extension ---- */

@@ -14,6 +14,7 @@
 #include "cmd/merge.h"
 #include "cmd/render_cmd.h"
 #include "cmd/version.h"
+#include "cmd/view.h"
 
 static const char *USAGE =
     "pathlab — a teaching path tracer (see README.md)\n"
@@ -31,6 +32,7 @@ static const char *USAGE =
     "                is each IMAGE - REF noise or bias, and if bias, the likely mistake (below; docs/grading.md)\n"
     COMPARE_USAGE
     MERGE_USAGE
+    VIEW_USAGE
     "  pathlab convert IN.pfm OUT.png|OUT.ppm|OUT.pfm [--exposure STOPS]   view a PFM (e.g. a --split layer);\n"
     "                prints the size and each channel's mean, min and max\n"
     "  pathlab help | --version\n"
@@ -110,7 +112,7 @@ static const command COMMANDS[] = {
     {"render", render_main}, {"bench-rays", bench_rays_main}, {"check-sampling", check_sampling_main},
     {"check-sampler", check_sampler_main},
     {"diff", diff_main}, {"grade", grade_main}, {"compare", compare_main}, {"convert", convert_main},
-    {"merge", merge_main},
+    {"merge", merge_main}, {"view", view_main},
     {NULL, NULL}};
 
 static void help(FILE *f)

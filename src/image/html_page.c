@@ -1,0 +1,209 @@
+/* html_page.c — writes the viewer's page (html_page.h): the HTML skeleton, the embedded style and
+ * script (web/viewer.css, web/viewer.js, compiled in by tools/embed.c), the page's settings as JSON
+ * and each image as little-endian half floats in base64. Half floats keep 11 significant bits
+ * (relative error <= 2^-11, about 5e-4), enough for a viewer, at a third of the size of text numbers.
+ * Variances travel as standard deviations, which stay in the half-float range far further down. */
+#include "image/html_page.h"
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "sys/atomic_file.h"
+
+extern const char pathlab_viewer_js[], pathlab_viewer_css[];
+
+/* The nearest half float (round to nearest even); beyond 65504 it is infinite, NaN stays NaN. */
+static uint16_t half_of(float f)
+{
+    uint32_t u, sign, mant;
+    int exp;
+    memcpy(&u, &f, 4);
+    sign = (u >> 16) & 0x8000u;
+    exp = (int)((u >> 23) & 0xff) - 127 + 15;
+    mant = u & 0x7fffffu;
+    if (((u >> 23) & 0xff) == 0xff) return (uint16_t)(sign | 0x7c00u | (mant ? 0x200u : 0));
+    if (exp >= 31) return (uint16_t)(sign | 0x7c00u);
+    if (exp <= 0) {   /* a subnormal half, or zero: the implicit 1 shifted in */
+        int shift = 14 - exp;
+        uint32_t m = mant | 0x800000u, h, rest;
+        if (shift > 24) return (uint16_t)sign;
+        h = m >> shift;
+        rest = m & ((1u << shift) - 1);
+        if (rest > (1u << (shift - 1)) || (rest == (1u << (shift - 1)) && (h & 1))) h++;
+        return (uint16_t)(sign | h);
+    }
+    {   /* normal: the carry of the rounding may move into the exponent, which is right */
+        uint32_t h = ((uint32_t)exp << 10) | (mant >> 13), rest = mant & 0x1fffu;
+        if (rest > 0x1000u || (rest == 0x1000u && (h & 1))) h++;
+        return (uint16_t)(sign | h);
+    }
+}
+
+/* Writes n values (3 per pixel), each as a half, in base64; sqrt of each when sd (a variance). */
+static void write_halves(FILE *f, const float *v, long n, int sd)
+{
+    static const char B64[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    unsigned char buf[3];
+    long nbytes = 2 * n, k;
+    int used = 0;
+    for (k = 0; k < nbytes; k++) {
+        float x = v[k / 2];
+        uint16_t h = half_of(sd ? sqrtf(fmaxf(x, 0.0f)) : x);
+        buf[used++] = (unsigned char)(k % 2 ? h >> 8 : h & 0xff);
+        if (used == 3 || k == nbytes - 1) {
+            unsigned w = (unsigned)buf[0] << 16 | (used > 1 ? (unsigned)buf[1] << 8 : 0) | (used > 2 ? buf[2] : 0);
+            putc(B64[w >> 18 & 63], f);
+            putc(B64[w >> 12 & 63], f);
+            putc(used > 1 ? B64[w >> 6 & 63] : '=', f);
+            putc(used > 2 ? B64[w & 63] : '=', f);
+            used = 0;
+            if (k % 57 == 56) putc('\n', f);
+        }
+    }
+}
+
+/* A JSON string (or null), with < written \u003c so that "</script>" never appears in the page. */
+static void json_string(FILE *f, const char *s)
+{
+    if (!s) { fputs("null", f); return; }
+    putc('"', f);
+    for (; *s; s++) {
+        unsigned char c = (unsigned char)*s;
+        if (c == '"' || c == '\\') fprintf(f, "\\%c", c);
+        else if (c < 0x20 || c == '<' || c == '>' || c == '&') fprintf(f, "\\u%04x", c);
+        else putc(c, f);
+    }
+    putc('"', f);
+}
+
+/* Every image of the page in one list: the images, the reference, the strip; n of them in *n. */
+static const html_image **all_images(const html_page *p, int *n)
+{
+    const html_image **all = malloc(sizeof *all * (size_t)(p->nimages + p->nstrip + 1));
+    int i, k = 0;
+    if (!all) return NULL;
+    for (i = 0; i < p->nimages; i++) all[k++] = &p->images[i];
+    if (p->ref) all[k++] = p->ref;
+    for (i = 0; i < p->nstrip; i++) all[k++] = &p->strip[i];
+    *n = k;
+    return all;
+}
+
+/* 0 if every image (and variance) is as large as the first; else 1 after naming both sizes. */
+static int check_sizes(const char *path, const html_image **all, int n)
+{
+    int i, w = all[0]->img->w, h = all[0]->img->h;
+    for (i = 0; i < n; i++) {
+        const image *v = all[i]->var;
+        if (all[i]->img->w != w || all[i]->img->h != h || (v && (v->w != w || v->h != h))) {
+            const image *bad = all[i]->img->w != w || all[i]->img->h != h ? all[i]->img : v;
+            fprintf(stderr, "%s: %s%s is %dx%d, %s is %dx%d: a page shows images of one size\n", path, all[i]->name,
+                    bad == v ? "'s variance" : "", bad->w, bad->h, all[0]->name, w, h);
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* One image's entry of the settings: its name, link, and the ids of its data. */
+static void json_image(FILE *f, const html_image *im, int id)
+{
+    fputs("{\"name\":", f);
+    json_string(f, im->name);
+    fputs(",\"link\":", f);
+    json_string(f, im->link);
+    fprintf(f, ",\"rgb\":\"pathlab-rgb-%d\",\"sd\":", id);
+    if (im->var) fprintf(f, "\"pathlab-sd-%d\"}", id);
+    else fputs("null}", f);
+}
+
+/* The settings: {"title", "w", "h", "images":[...], "ref", "strip":[...], "marks":[...]}. */
+static void write_settings(FILE *f, const html_page *p)
+{
+    int i, id = 0;
+    fprintf(f, "<script type=\"application/json\" id=\"pathlab-settings\">{\"title\":");
+    json_string(f, p->title);
+    fprintf(f, ",\"w\":%d,\"h\":%d,\"images\":[", p->images[0].img->w, p->images[0].img->h);
+    for (i = 0; i < p->nimages; i++, id++) { if (i) putc(',', f); json_image(f, &p->images[i], id); }
+    fputs("],\"ref\":", f);
+    if (p->ref) json_image(f, p->ref, id++);
+    else fputs("null", f);
+    fputs(",\"strip\":[", f);
+    for (i = 0; i < p->nstrip; i++, id++) { if (i) putc(',', f); json_image(f, &p->strip[i], id); }
+    fputs("],\"marks\":[", f);
+    for (i = 0; i < p->nmarks; i++) {
+        const html_mark *m = &p->marks[i];
+        fprintf(f, "%s{\"x\":%d,\"y\":%d,\"w\":%d,\"h\":%d,\"label\":", i ? "," : "", m->x, m->y, m->w, m->h);
+        json_string(f, m->label);
+        putc('}', f);
+    }
+    fputs("]}</script>\n", f);
+}
+
+/* The page itself, into f. */
+static void write_page(FILE *f, const html_page *p, const html_image **all, int n)
+{
+    char *title = html_escape(p->title ? p->title : "pathlab");
+    int i;
+    fprintf(f, "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
+               "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; script-src 'unsafe-inline'; "
+               "style-src 'unsafe-inline'; img-src data: blob:\">\n<title>%s</title>\n<style>\n%s</style>\n</head><body>\n",
+            title ? title : "pathlab", pathlab_viewer_css);
+    free(title);
+    if (p->before_html) fprintf(f, "%s\n", p->before_html);
+    fputs("<div id=\"pathlab-viewer\"></div>\n", f);
+    if (p->after_html) fprintf(f, "%s\n", p->after_html);
+    write_settings(f, p);
+    for (i = 0; i < n; i++) {
+        long count = 3L * all[i]->img->w * all[i]->img->h;
+        fprintf(f, "<script type=\"application/octet-stream\" id=\"pathlab-rgb-%d\">\n", i);
+        write_halves(f, all[i]->img->px, count, 0);
+        fputs("</script>\n", f);
+        if (!all[i]->var) continue;
+        fprintf(f, "<script type=\"application/octet-stream\" id=\"pathlab-sd-%d\">\n", i);
+        write_halves(f, all[i]->var->px, count, 1);
+        fputs("</script>\n", f);
+    }
+    fprintf(f, "<script>\n%s</script>\n</body></html>\n", pathlab_viewer_js);
+}
+
+int html_page_write(const char *path, const html_page *page)
+{
+    int n = 0, err;
+    char *tmp;
+    FILE *f;
+    const html_image **all;
+    if (page->nimages < 1) { fprintf(stderr, "%s: a page needs an image\n", path); return 1; }
+    all = all_images(page, &n);
+    if (!all) { fprintf(stderr, "%s: out of memory\n", path); return 1; }
+    if (check_sizes(path, all, n)) { free(all); return 1; }
+    f = atomic_file_open(path, &tmp);
+    if (!f) { free(all); return 1; }
+    write_page(f, page, all, n);
+    err = ferror(f);
+    free(all);
+    return atomic_file_close(f, tmp, path, !err);
+}
+
+char *html_escape(const char *text)
+{
+    size_t n = 1;
+    const char *s;
+    char *out, *o;
+    for (s = text; *s; s++) n += strchr("&<>\"'", *s) ? 6 : 1;
+    out = o = malloc(n);
+    if (!out) return NULL;
+    for (s = text; *s; s++) {
+        switch (*s) {
+        case '&': o += sprintf(o, "&amp;"); break;
+        case '<': o += sprintf(o, "&lt;"); break;
+        case '>': o += sprintf(o, "&gt;"); break;
+        case '"': o += sprintf(o, "&quot;"); break;
+        case '\'': o += sprintf(o, "&#39;"); break;
+        default: *o++ = *s;
+        }
+    }
+    *o = 0;
+    return out;
+}

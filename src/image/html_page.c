@@ -11,7 +11,7 @@
 #include <string.h>
 #include "sys/atomic_file.h"
 
-extern const char pathlab_viewer_js[], pathlab_viewer_css[];
+extern const unsigned char pathlab_viewer_js[], pathlab_viewer_css[];   /* $(BUILD)/gen/web_assets.c */
 
 /* The nearest half float (round to nearest even); beyond 65504 it is infinite, NaN stays NaN. */
 static uint16_t half_of(float f)
@@ -149,7 +149,7 @@ static void write_page(FILE *f, const html_page *p, const html_image **all, int 
     fprintf(f, "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
                "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; script-src 'unsafe-inline'; "
                "style-src 'unsafe-inline'; img-src data: blob:\">\n<title>%s</title>\n<style>\n%s</style>\n</head><body>\n",
-            title ? title : "pathlab", pathlab_viewer_css);
+            title ? title : "pathlab", (const char *)pathlab_viewer_css);
     free(title);
     if (p->before_html) fprintf(f, "%s\n", p->before_html);
     fputs("<div id=\"pathlab-viewer\"></div>\n", f);
@@ -165,7 +165,7 @@ static void write_page(FILE *f, const html_page *p, const html_image **all, int 
         write_halves(f, all[i]->var->px, count, 1);
         fputs("</script>\n", f);
     }
-    fprintf(f, "<script>\n%s</script>\n</body></html>\n", pathlab_viewer_js);
+    fprintf(f, "<script>\n%s</script>\n</body></html>\n", (const char *)pathlab_viewer_js);
 }
 
 int html_page_write(const char *path, const html_page *page)

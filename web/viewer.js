@@ -35,7 +35,8 @@
   /* The Float32Array of one data block (by id), or null. atob skips the line breaks. */
   function decode(id) {
     if (!id) return null;
-    var bin = atob(document.getElementById(id).textContent);
+    var block = document.getElementById(id), bin = atob(block.textContent);
+    block.remove();   // the text is no longer needed: the page's memory drops by its size
     var n = bin.length >> 1, out = new Float32Array(n);
     for (var i = 0; i < n; i++) out[i] = HALF[bin.charCodeAt(2 * i) | (bin.charCodeAt(2 * i + 1) << 8)];
     return out;
@@ -51,13 +52,14 @@
 
   /* ---------- automatic ranges ---------- */
 
-  /* The q-quantile of f(i) over (at most 65536 evenly spread) pixels i, ignoring non-finite values. */
+  /* The q-quantile of f(i) over (at most 65536 evenly spread) pixels i, ignoring non-finite values.
+   * A Float32Array sorts numerically and some ten times faster than an Array of numbers. */
   function quantile(f, q) {
-    var step = Math.max(1, Math.floor(N / 65536)), vals = [];
-    for (var i = 0; i < N; i += step) { var v = f(i); if (isFinite(v)) vals.push(v); }
-    if (!vals.length) return 0;
-    vals.sort(function (a, b) { return a - b; });
-    return vals[Math.min(vals.length - 1, Math.floor(q * vals.length))];
+    var step = Math.max(1, Math.floor(N / 65536)), vals = new Float32Array(Math.ceil(N / step)), n = 0;
+    for (var i = 0; i < N; i += step) { var v = f(i); if (isFinite(v)) vals[n++] = v; }
+    if (!n) return 0;
+    vals = vals.subarray(0, n).sort();
+    return vals[Math.min(n - 1, Math.floor(q * n))];
   }
   /* The exposure (stops) that brings the 99th percentile of the pixels' mean of R, G, B to 1. */
   function autoExposure(im) {

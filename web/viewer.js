@@ -225,6 +225,7 @@
     var vw = view.clientWidth, vh = view.clientHeight;
     st.zoom = Math.min(64, Math.min(vw / W, vh / H));
     st.panX = (vw - W * st.zoom) / 2; st.panY = (vh - H * st.zoom) / 2;
+    st.fitted = true;   // a resized window fits again, until the user zooms or pans
     place();
   }
 
@@ -330,7 +331,7 @@
       if (Math.abs(ev.clientX - drag.x) + Math.abs(ev.clientY - drag.y) > 2) drag.moved = true;
       if (drag.divide) { setSplit(p.x / W); return; }
       st.panX += ev.clientX - drag.x; st.panY += ev.clientY - drag.y; drag.x = ev.clientX; drag.y = ev.clientY;
-      place(); return;
+      st.fitted = false; place(); return;
     }
     showProbe(x, y);
     st.mouseX = x >= 0 && x < W ? x : -1;
@@ -341,7 +342,7 @@
     var r = view.getBoundingClientRect(), mx = ev.clientX - r.left, my = ev.clientY - r.top;
     var z = Math.max(1 / 16, Math.min(64, st.zoom * Math.pow(2, ev.deltaY < 0 ? 0.25 : -0.25)));
     st.panX = mx - (mx - st.panX) * z / st.zoom; st.panY = my - (my - st.panY) * z / st.zoom; st.zoom = z;   // the point under the mouse stays
-    place(); ev.preventDefault();
+    st.fitted = false; place(); ev.preventDefault();
   }, { passive: false });
 
   var KEYS = {
@@ -351,7 +352,7 @@
     r: function () { toggle(0); }, g: function () { toggle(1); }, b: function () { toggle(2); },
     '+': function () { setExposure(st.exposure + 0.5); }, '=': function () { setExposure(st.exposure + 0.5); },
     '-': function () { setExposure(st.exposure - 0.5); }, a: function () { setExposure(autoExposure(views[st.cur])); },
-    f: fit, 0: function () { st.zoom = 1; place(); }
+    f: fit, 0: function () { st.zoom = 1; st.fitted = false; place(); }
   };
   document.addEventListener('keydown', function (ev) {
     if (ev.target.tagName === 'INPUT' || ev.target.tagName === 'SELECT' || ev.ctrlKey || ev.metaKey || ev.altKey) return;
@@ -380,13 +381,19 @@
   fit();
   redraw();
   layers.forEach(drawLayer);
-  window.addEventListener('resize', fit);
+  window.addEventListener('resize', function () { if (st.fitted) fit(); });
   document.title = settings.title || document.title;
 
   window.pathlabViewer = {
     width: W, height: H,
     loadMs: performance.now() - started,   // decoding and the first drawing
     probe: probe,
+    showProbe: showProbe,   // as if the mouse were over pixel (x, y): the line of values, the plotted row
+    setRow: function (y) { st.row = y; st.rowFixed = true; place(); drawPlot(); },
+    /* zoom z (screen pixels per image pixel) centred on the image point (x, y) */
+    setView: function (z, x, y) {
+      st.zoom = z; st.panX = view.clientWidth / 2 - x * z; st.panY = view.clientHeight / 2 - y * z; st.fitted = false; place();
+    },
     displayedPixel: function (x, y) { var o = 4 * (y * W + x), d = imageData.data; return [d[o], d[o + 1], d[o + 2]]; },
     setExposure: setExposure, exposure: function () { return st.exposure; },
     autoExposure: function () { return autoExposure(views[st.cur]); },

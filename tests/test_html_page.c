@@ -1,8 +1,8 @@
 /* test_html_page.c — image/html_page.c without a browser: html_escape; a page holds the CSP, the
  * escaped title, the settings, one data block per image and variance, the embedded script and no
  * http(s) URL; images of different sizes are refused naming both, and leave no file.
- *   test_html_page DIR   also writes, for tests/test_viewer.sh: DIR/marks.html (marks, a link, HTML
- *   before and after the viewer) and DIR/big.pfm (2048x1024, values from 1e-3 to 1e3). */
+ *   test_html_page DIR   also writes, for tests/test_viewer.sh, DIR/marks.html: a page of one 2048x1024
+ *   image (values from 1e-3 to 1e3) with the marks, the link, HTML before and after the viewer. */
 #include "check.h"
 #include <math.h>
 #include <stdlib.h>
@@ -43,21 +43,24 @@ static int count(const char *text, const char *what)
     return n;
 }
 
-/* The page of two images with a variance, a reference, marks, a link; then the checks on its text. */
-static void page_checks(const char *path, image *a, image *b)
+/* The page of two images with a variance, a reference, marks, a link (full), or of the first image
+ * alone with the marks and the link; then the checks on its text. */
+static void page_checks(const char *path, image *a, image *b, int full)
 {
     html_image im[2] = {{"alice.pfm", NULL, NULL, "alice.html"}, {"bob.pfm", NULL, NULL, NULL}}, ref = {"ref.pfm", NULL, NULL, NULL};
     html_mark marks[2] = {{4, 4, 16, 8, "too bright: +4.2 sigma"}, {30, 20, 10, 10, "too dark <b>"}};
     html_page p = {"grade: alice & bob </script>", NULL, 2, NULL, NULL, 0, NULL, 2, "<p id=\"verdict\">verdict</p>", "<p id=\"notes\">notes</p>"};
     char *text;
     im[0].img = a; im[0].var = b; im[1].img = b; ref.img = a;
-    p.images = im; p.ref = &ref; p.marks = marks;
+    p.images = im; p.ref = full ? &ref : NULL; p.marks = marks;
+    if (!full) p.nimages = 1, im[0].var = NULL;
     check(html_page_write(path, &p) == 0, "html_page: a page of two images, a reference, marks written", NULL);
     text = read_all(path);
     if (!check(text != NULL, "html_page: the page can be read back", NULL)) return;
     check(strstr(text, "Content-Security-Policy\" content=\"default-src 'none';") != NULL, "html_page: the CSP forbids every request", NULL);
     check(strstr(text, "<title>grade: alice &amp; bob &lt;/script&gt;</title>") != NULL, "html_page: the title escaped", NULL);
-    check(count(text, "</script>") == 6, "html_page: settings, 3 images, 1 variance, the script: 6 script blocks", "%d", count(text, "</script>"));
+    check(count(text, "</script>") == (full ? 6 : 3), full ? "html_page: settings, 3 images, 1 variance, the script: 6 script blocks"
+          : "html_page: settings, 1 image, the script: 3 script blocks", "%d", count(text, "</script>"));
     check(!strstr(text, "http://") && !strstr(text, "https://"), "html_page: no http(s) URL in the page", NULL);
     check(strstr(text, "\"label\":\"too dark \\u003cb\\u003e\"") != NULL, "html_page: a mark's label escaped in the JSON", NULL);
     check(strstr(text, "window.pathlabViewer") != NULL, "html_page: the viewer's script embedded", NULL);
@@ -73,21 +76,20 @@ int main(int argc, char **argv)
     check(e && !strcmp(e, "a&lt;b &amp; &quot;c&quot; &#39;d&#39;&gt;"), "html_escape: & < > \" ' escaped", "%s", e ? e : "NULL");
     free(e);
     if (pattern(&a, 64, 48) || pattern(&b, 64, 48) || pattern(&c, 48, 64) || !mkdtemp(dir)) return 1;
-    snprintf(path, sizeof path, "%s/%s", argc > 1 ? argv[1] : dir, "marks.html");
-    page_checks(path, &a, &b);
+    snprintf(path, sizeof path, "%s/marks.html", dir);
+    page_checks(path, &a, &b, 1);
+    remove(path);
     one[0].img = &a; one[1].img = &c; p.images = one;
     snprintf(path, sizeof path, "%s/sizes.html", dir);
     fflush(stdout);
     check(html_page_write(path, &p) != 0 && access(path, F_OK) != 0, "html_page: images of two sizes refused, no file left", NULL);
-    if (argc > 1) {
-        snprintf(path, sizeof path, "%s/big.pfm", argv[1]);
-        if (pattern(&big, 2048, 1024) || img_write_pfm(&big, path)) return 1;
-        img_free(&big);
-    } else {
-        snprintf(path, sizeof path, "%s/marks.html", dir);
-        remove(path);
-    }
     rmdir(dir);
+    if (argc > 1) {   /* the browser's page: one 2048x1024 image with the marks and the link */
+        snprintf(path, sizeof path, "%s/marks.html", argv[1]);
+        if (pattern(&big, 2048, 1024)) return 1;
+        page_checks(path, &big, &big, 0);
+        img_free(&big);
+    }
     img_free(&a); img_free(&b); img_free(&c);
     return check_summary();
 }

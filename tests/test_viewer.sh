@@ -6,8 +6,8 @@
 # from --dump-dom. Checked: the probe's values against the PFM files' bytes (at 8 pixels, relative
 # 1e-3), exposure, split, difference, keys, the layers' strip, marks and links, no network request
 # (the page's CSP, a blocked control request, no resource loaded, no http(s) URL in the page), and a
-# 2048x1024 page decoded and drawn within LOAD_BOUND ms (8000: measured 1.0-2.6 s with the machine's
-# two cores shared by about 12 processes). Three Chromium runs side by side; about 20 s in all.
+# page of a 2048x1024 image decoded and drawn within LOAD_BOUND ms (8000; measured 1.6-5.3 s with the
+# machine's two cores shared by 12-18 processes). Two Chromium runs side by side; 25 s in all at load 12-14.
 # Also the command's errors (no browser needed): a missing file named, two sizes refused naming both.
 . "$(dirname "$0")/lib.sh"
 LOAD_BOUND=${LOAD_BOUND:-8000}
@@ -64,16 +64,14 @@ run_page() {
         --user-data-dir="$TMP/profile-$1" --virtual-time-budget=3000 --dump-dom "file://$2" > "$TMP/$1.dom" 2> "$TMP/$1.err"
 }
 "$BUILD/tests/test_html_page" "$TMP" > /dev/null 2>&1 || fail "viewer: build/tests/test_html_page could not write the marks page"
-$PATHLAB view "$TMP/big.pfm" -o "$TMP/big.html" || fail "viewer: the 2048x1024 page not written"
 test_page "$TMP/main.html" main "$TMP/t-main.html" image "$TMP/c.pfm" ref "$TMP/r.pfm" small "$TMP/small.pfm" \
     image_var "$TMP/c_var.pfm" ref_var "$TMP/r_var.pfm"
-test_page "$TMP/big.html" big "$TMP/t-big.html"
 test_page "$TMP/marks.html" marks "$TMP/t-marks.html"
 start=$(date +%s%N)
-for k in main big marks; do run_page $k "$TMP/t-$k.html" & done
+for k in main marks; do run_page $k "$TMP/t-$k.html" & done
 wait
-echo "note: three Chromium runs side by side took $(( ($(date +%s%N) - start) / 1000000 )) ms; pages: $(stat -c %s "$TMP/main.html") bytes (96x64, 2 images, a reference, 2 variances, 3 layers), $(stat -c %s "$TMP/big.html") bytes (2048x1024)"
-for k in main big marks; do
+echo "note: two Chromium runs side by side took $(( ($(date +%s%N) - start) / 1000000 )) ms; pages: $(stat -c %s "$TMP/main.html") bytes (96x64, 2 images, a reference, 2 variances, 3 layers), $(stat -c %s "$TMP/marks.html") bytes (2048x1024)"
+for k in main marks; do
     lines=$(sed -n '/<pre id="pathlab-test">/,/<\/pre>/p' "$TMP/$k.dom" | grep -E '^(PASS|FAIL) ')
     if [ -n "$lines" ]; then echo "$lines" | sed 's/&lt;/</g; s/&gt;/>/g; s/&amp;/\&/g'
     else fail "viewer: the $k page wrote no result (Chromium: $(grep -v -e dbus -e 'unexpected operator' "$TMP/$k.err" | head -c 300))"; fi

@@ -4,8 +4,8 @@
  * The expected values come from the PFM files themselves (PFM.image, PFM.ref, ... : the files' bytes
  * in base64, set by the shell before this script), parsed here with a DataView: a decoding path
  * independent of pathlab's half floats and of the viewer's decoder.
- * TEST.kind says which page this is: "main" (images, reference, variances, layers), "big" (load
- * time only), "marks" (marks and links, written by build/tests/test_html_page). */
+ * TEST.kind says which page this is: "main" (images, reference, variances, layers), "marks" (load
+ * time of 2048x1024 images, marks and links: the page of build/tests/test_html_page). */
 (function () {
   'use strict';
   var out = [], V = window.pathlabViewer;
@@ -47,8 +47,7 @@
   try {
     if (!V) { fail('the test API', 'window.pathlabViewer is missing (the viewer script failed?)'); return finish(); }
     if (TEST.kind === 'main') mainTests();
-    if (TEST.kind === 'big') bigTests();
-    if (TEST.kind === 'marks') marksTests();
+    if (TEST.kind === 'marks') { bigTests(); marksTests(); }
   } catch (e) {
     fail('the test script', 'threw ' + e + ' ' + (e.stack || ''));
   }

@@ -25,6 +25,12 @@ expect_status "view: no -o, exit 2" 2 $PATHLAB view "$TMP/c.pfm"
 expect_no_file "view: no page written after an error" "$TMP/x.html"
 expect_status "view: images, reference, variances, layers: exit 0" 0 \
     $PATHLAB view "$TMP/c.pfm" "$TMP/small.pfm" --ref "$TMP/r.pfm" -o "$TMP/main.html"
+$PATHLAB view "$TMP/r.pfm" --layers "$TMP/c" -o "$TMP/layers.html" 2> "$TMP/err"
+n=$(grep -o '"name":"L[0-9]"' "$TMP/layers.html" 2>/dev/null | tr '\n' ' ')
+if [ "$n" = '"name":"L0" "name":"L1" "name":"L2" ' ]; then pass "view: --layers PREFIX finds PREFIX_L0.pfm .. L2"
+else fail "view: --layers found '$n'; $(head -c 200 "$TMP/err")"; fi
+expect_status "view: --layers with no layer, exit 2" 2 $PATHLAB view "$TMP/r.pfm" --layers "$TMP/none" -o "$TMP/x.html"
+expect_err "view: --layers with no layer, the prefix named" "no layer .*none_L0.pfm"
 if grep -q "Content-Security-Policy\" content=\"default-src 'none'" "$TMP/main.html" && ! grep -qE 'https?://' "$TMP/main.html"
 then pass "view: the page's CSP forbids requests, no http(s) URL in it"
 else fail "view: CSP missing or a URL in the page: $(grep -oE 'https?://[^"]*' "$TMP/main.html" | head -3)"; fi
@@ -65,7 +71,7 @@ run_page() {
 }
 "$BUILD/tests/test_html_page" "$TMP" > /dev/null 2>&1 || fail "viewer: build/tests/test_html_page could not write the marks page"
 test_page "$TMP/main.html" main "$TMP/t-main.html" image "$TMP/c.pfm" ref "$TMP/r.pfm" small "$TMP/small.pfm" \
-    image_var "$TMP/c_var.pfm" ref_var "$TMP/r_var.pfm"
+    image_var "$TMP/c_var.pfm" ref_var "$TMP/r_var.pfm" layer1 "$TMP/c_L1.pfm"
 test_page "$TMP/marks.html" marks "$TMP/t-marks.html"
 start=$(date +%s%N)
 for k in main marks; do run_page $k "$TMP/t-$k.html" & done

@@ -81,7 +81,7 @@ static int read_layers(view_data *d, const view_args *a, const char **first)
         html_image *h = &d->strip[d->nlayers];
         if (a->layers) snprintf(path, sizeof path, "%s_L%d.pfm", a->layers, k);
         else render_files_layer_path(path, sizeof path, a->words[0], k);
-        if (a->layers && !exists(path)) continue;
+        if (!exists(path)) continue;   /* a layer deleted since, or a gap in PREFIX_Lk: the others are shown */
         if (read_sized(&d->layer[d->nlayers], path, first, &d->img[0])) return 2;
         snprintf(d->layer_name[d->nlayers], sizeof d->layer_name[0], "L%d", k);
         h->name = d->layer_name[d->nlayers];

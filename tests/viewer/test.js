@@ -95,6 +95,13 @@
     check('strip: one canvas per layer (3: L0, L1, L2)', V.stripCount() === 3, V.stripCount() + ' canvases');
     var e = [0, 1, 2].map(V.stripExposure);
     check('strip: each layer at its own exposure (' + e.join(', ') + ')', e[0] !== e[1] && e[1] !== e[2], 'the same exposures');
+    var L1 = parsePfm(PFM.layer1), k1 = Math.pow(2, e[1]);
+    bad = [];
+    pixels.forEach(function (p) {
+      var want = [0, 1, 2].map(function (c) { return srgb8(value(L1, p[0], p[1], c) * k1); }), got = V.stripPixel(1, p[0], p[1]);
+      if (!near(got, want, 1)) bad.push(p + ': ' + got + ' vs ' + want);
+    });
+    check('strip: L1 drawn from c_L1.pfm at its exposure (' + pixels.length + ' pixels within 1)', !bad.length, bad.slice(0, 3).join('; '));
   }
 
   /* The displayed pixels follow the exposure: x 2 a stop in linear display, the sRGB curve otherwise. */

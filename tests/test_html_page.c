@@ -75,6 +75,9 @@ int main(int argc, char **argv)
     html_page p = {"t", NULL, 2, NULL, NULL, 0, NULL, 0, NULL, NULL};
     check(e && !strcmp(e, "a&lt;b &amp; &quot;c&quot; &#39;d&#39;&gt;"), "html_escape: & < > \" ' escaped", "%s", e ? e : "NULL");
     free(e);
+    e = html_data_uri("image/png", "abcab", 5);
+    check(e && !strcmp(e, "data:image/png;base64,YWJjYWI="), "html_data_uri: base64 with its padding", "%s", e ? e : "NULL");
+    free(e);
     if (pattern(&a, 64, 48) || pattern(&b, 64, 48) || pattern(&c, 48, 64) || !mkdtemp(dir)) return 1;
     snprintf(path, sizeof path, "%s/marks.html", dir);
     page_checks(path, &a, &b, 1);

@@ -40,11 +40,23 @@ static uint16_t half_of(float f)
     }
 }
 
-/* Writes n values (3 per pixel), each as a half, in base64; sqrt of each when sd (a variance). */
-static void write_halves(FILE *f, const float *v, long n, int sd)
+/* n (1 to 3) bytes as 4 characters of base64, '=' for the missing ones. */
+static void b64_group(char out[4], const unsigned char *b, int n)
 {
     static const char B64[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    unsigned w = (unsigned)b[0] << 16 | (n > 1 ? (unsigned)b[1] << 8 : 0) | (n > 2 ? b[2] : 0);
+    out[0] = B64[w >> 18 & 63];
+    out[1] = B64[w >> 12 & 63];
+    out[2] = n > 1 ? B64[w >> 6 & 63] : '=';
+    out[3] = n > 2 ? B64[w & 63] : '=';
+}
+
+/* Writes n values (3 per pixel), each as a little-endian half, in base64 lines of 76 characters;
+ * the square root of each when sd (a variance). */
+static void write_halves(FILE *f, const float *v, long n, int sd)
+{
     unsigned char buf[3];
+    char quad[4];
     long nbytes = 2 * n, k;
     int used = 0;
     for (k = 0; k < nbytes; k++) {
@@ -52,15 +64,24 @@ static void write_halves(FILE *f, const float *v, long n, int sd)
         uint16_t h = half_of(sd ? sqrtf(fmaxf(x, 0.0f)) : x);
         buf[used++] = (unsigned char)(k % 2 ? h >> 8 : h & 0xff);
         if (used == 3 || k == nbytes - 1) {
-            unsigned w = (unsigned)buf[0] << 16 | (used > 1 ? (unsigned)buf[1] << 8 : 0) | (used > 2 ? buf[2] : 0);
-            putc(B64[w >> 18 & 63], f);
-            putc(B64[w >> 12 & 63], f);
-            putc(used > 1 ? B64[w >> 6 & 63] : '=', f);
-            putc(used > 2 ? B64[w & 63] : '=', f);
+            b64_group(quad, buf, used);
+            fwrite(quad, 1, 4, f);
             used = 0;
             if (k % 57 == 56) putc('\n', f);
         }
     }
+}
+
+char *html_data_uri(const char *mime, const void *bytes, size_t n)
+{
+    const unsigned char *b = bytes;
+    size_t head = strlen("data:;base64,") + strlen(mime), i;
+    char *uri = malloc(head + 4 * ((n + 2) / 3) + 1), *o;
+    if (!uri) return NULL;
+    o = uri + sprintf(uri, "data:%s;base64,", mime);
+    for (i = 0; i < n; i += 3, o += 4) b64_group(o, b + i, n - i < 3 ? (int)(n - i) : 3);
+    *o = 0;
+    return uri;
 }
 
 /* A JSON string (or null), with < written \u003c so that "</script>" never appears in the page. */

@@ -7,6 +7,7 @@
  * the images cycled with the keyboard, a scanline plot, channel toggles, and layers as a strip. */
 #ifndef PATHLAB_HTML_PAGE_H
 #define PATHLAB_HTML_PAGE_H
+#include <stddef.h>
 #include "image/image.h"
 
 typedef struct {
@@ -35,4 +36,8 @@ typedef struct {
 int html_page_write(const char *path, const html_page *page);
 /* A copy of text with & < > " ' escaped for HTML, to free; NULL when out of memory. */
 char *html_escape(const char *text);
+/* "data:MIME;base64,..." of n bytes, to free; NULL when out of memory. The page's Content-Security-
+ * Policy lets images load from data: URIs only (no file, no network): a PNG heatmap or an SVG plot in
+ * before_html/after_html goes in as <img src="data:image/png;base64,...">. */
+char *html_data_uri(const char *mime, const void *bytes, size_t n);
 #endif

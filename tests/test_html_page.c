@@ -49,8 +49,11 @@ static void page_checks(const char *path, image *a, image *b, int full)
 {
     html_image im[2] = {{"alice.pfm", NULL, NULL, "alice.html"}, {"bob.pfm", NULL, NULL, NULL}}, ref = {"ref.pfm", NULL, NULL, NULL};
     html_mark marks[2] = {{4, 4, 16, 8, "too bright: +4.2 sigma"}, {30, 20, 10, 10, "too dark <b>"}};
-    html_page p = {"grade: alice & bob </script>", NULL, 2, NULL, NULL, 0, NULL, 2, "<p id=\"verdict\">verdict</p>", "<p id=\"notes\">notes</p>"};
-    char *text;
+    static const char svg[] = "<svg xmlns='http://www.w3.org/2000/svg' width='4' height='3'><rect width='4' height='3' fill='red'/></svg>";
+    char *uri = html_data_uri("image/svg+xml", svg, strlen(svg)), before[400], *text;
+    html_page p = {"grade: alice & bob </script>", NULL, 2, NULL, NULL, 0, NULL, 2, before, "<p id=\"notes\">notes</p>"};
+    snprintf(before, sizeof before, "<p id=\"verdict\">verdict <img id=\"data-image\" alt=\"\" src=\"%s\"></p>", uri ? uri : "");
+    free(uri);
     im[0].img = a; im[0].var = b; im[1].img = b; ref.img = a;
     p.images = im; p.ref = full ? &ref : NULL; p.marks = marks;
     if (!full) p.nimages = 1, im[0].var = NULL;

@@ -219,6 +219,10 @@
       var others = (window.__pathlabBlocked || []).concat(blocked).filter(function (u) { return u.indexOf('192.0.2.1') < 0; });
       var res = performance.getEntriesByType('resource').filter(function (r) { return r.name.indexOf('192.0.2.1') < 0; });
       check('network: the control request was blocked by the page\'s CSP', control >= 1, 'no violation seen for the control');
+      var dataImage = document.getElementById('data-image');
+      if (TEST.kind === 'marks')
+        check('an image from html_data_uri shown (4x3 SVG)', dataImage && dataImage.naturalWidth === 4 && dataImage.naturalHeight === 3,
+              dataImage ? dataImage.naturalWidth + 'x' + dataImage.naturalHeight : 'no image');
       check('network: no resource loaded, no request blocked', others.length === 0 && res.length === 0,
             others.concat(res.map(function (r) { return r.name; })).join(' '));
       finish();

@@ -89,6 +89,13 @@
     check('probe: the second image (values x 1e-3) within 1e-3 relative + 3e-8', !bad.length, bad.slice(0, 4).join('; '));
     V.setImage(0);
     exposureTests(img);
+    var means = [];
+    for (var i = 0; i < W * H; i++) means.push((img.px[3 * i] + img.px[3 * i + 1] + img.px[3 * i + 2]) / 3);
+    means.sort(function (a, b) { return a - b; });
+    var auto = -Math.log2(means[Math.floor(0.99 * means.length)]);
+    check('exposure: automatic, the 99th percentile to 1 (' + V.autoExposure() + ' stops, from the PFM ' + auto.toFixed(3) + ')',
+          Math.abs(V.autoExposure() - auto) <= 0.1, V.autoExposure() + ' vs ' + auto);
+    channelTests(img);
     splitTests(img, ref);
     diffTests(img, ref);
     keyTests();
@@ -132,6 +139,15 @@
     });
     check('exposure: sRGB display equals 255 srgb(v 2^s) within 1', !bad.length, bad.join('; '));
     V.setExposure(s);
+  }
+  /* Channel toggles: R alone is shown grey (its value in all three), R and G alone leave blue black. */
+  function channelTests(img) {
+    var p = [30, 50], want = expected(img, p[0], p[1]);
+    V.setChannels(1, 0, 0); var red = V.displayedPixel(p[0], p[1]);
+    V.setChannels(1, 1, 0); var rg = V.displayedPixel(p[0], p[1]);
+    V.setChannels(1, 1, 1);
+    check('channels: R alone grey ' + red + ', R and G ' + rg + ' (all: ' + want + ')',
+          near(red, [want[0], want[0], want[0]], 1) && near(rg, [want[0], want[1], 0], 1) && want[2] > 0, 'expected ' + want);
   }
   function W2(img) { return img.w >> 1; }
   function expected(img, x, y) {

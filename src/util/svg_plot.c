@@ -52,7 +52,7 @@ static double fx(const frame *f, double t) { return f->left + (log10(t) - f->xlo
 static double fy(const frame *f, double v) { return f->top + (f->yhi - log10(v)) / (f->yhi - f->ylo) * f->h; }
 
 /* The decades around the curves' positive points; 0 if there is none. */
-static int fit_frame(frame *f, const svg_curve *c, int n)
+static int fit_frame(frame *f, const svg_curve *c, int n, double pad)
 {
     double tmin = INFINITY, tmax = 0, rmin = INFINITY, rmax = 0;
     int e, i, any = 0;
@@ -64,6 +64,7 @@ static int fit_frame(frame *f, const svg_curve *c, int n)
             tmin = fmin(tmin, q->t), tmax = fmax(tmax, q->t), rmin = fmin(rmin, q->err), rmax = fmax(rmax, q->err);
         }
     if (!any) return 0;
+    tmin *= pow(10.0, -pad), tmax *= pow(10.0, pad), rmin *= pow(10.0, -pad), rmax *= pow(10.0, pad);
     f->xlo = (int)floor(log10(tmin) + 1e-9); f->xhi = (int)ceil(log10(tmax) - 1e-9); if (f->xhi <= f->xlo) f->xhi = f->xlo + 1;
     f->ylo = (int)floor(log10(rmin) + 1e-9); f->yhi = (int)ceil(log10(rmax) - 1e-9); if (f->yhi <= f->ylo) f->yhi = f->ylo + 1;
     return 1;
@@ -137,7 +138,7 @@ void svg_loglog_panel(FILE *o, const svg_panel *p, const svg_curve *c, int n)
     fprintf(o, "<g>\n<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"middle\" font-size=\"14\" font-weight=\"bold\">", f.left + f.w / 2, p->y0 + 18);
     svg_text(o, p->title);
     fprintf(o, "</text>\n");
-    if (!fit_frame(&f, c, n)) {
+    if (!fit_frame(&f, c, n, p->pad)) {
         fprintf(o, "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"middle\">no positive error</text>\n</g>\n", f.left + f.w / 2, f.top + f.h / 2);
         return;
     }

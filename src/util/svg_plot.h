@@ -23,6 +23,7 @@ typedef struct {
     const char *title, *ylabel;
     double tstar;            /* > 0: a dotted vertical line labelled T* there */
     double guide_t, guide_err;   /* > 0: a grey dashed line of slope -1/2 through this point */
+    double pad;              /* decades of room around the points before the axes round out to decades (0: none) */
     int id;                  /* unique in the figure: names its clip path */
 } svg_panel;
 

@@ -4,6 +4,8 @@
  * each image (grade.c), names the likely mistake of those that fail (grade_diagnose.c), prints
  * the verdicts (grade_print.c) and writes the class report (grade_class.c). */
 #include <dirent.h>
+#include <errno.h>
+#include <unistd.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -13,18 +15,21 @@
 #include "cmd/grade.h"
 #include "cmd/grade_class.h"
 #include "cmd/grade_diagnose.h"
+#include "cmd/grade_page.h"
 #include "cmd/grade_print.h"
 #include "cmd/render_files.h"
 
 #define GRADE_USAGE \
-    "usage: pathlab grade IMAGE.pfm... | FOLDER --ref REF.pfm [--alpha A] [--report FILE.md|FILE.csv]\n" \
+    "usage: pathlab grade IMAGE.pfm... | FOLDER --ref REF.pfm [--alpha A] [--report FILE.md|.csv|.html] [--pages DIR]\n" \
     "                     [--heatmap OUT.png|FOLDER] [--block B] [--var REF_VAR.pfm] [--layers PREFIX] [--details]\n" \
     "                     [--spp N --ref-spp M]\n"
 #define GRADE_MAX_HYP 6
 
 typedef struct {
-    const char *ref, *var, *layers, *heatmap, *report;
+    const char *ref, *var, *layers, *heatmap, *report, *pages;
     int details;
+    char pages_dir[4096];  /* where the pages go: --pages, else REPORT-pages beside the report; "" none */
+    char back[4300];       /* the pages' link to the report, or "" */
     grade_opts o;
     const char **images;   /* the images, folders expanded */
     int nimages;
@@ -133,11 +138,55 @@ static int check_outputs(const grade_args *a)
                                        : "pathlab grade: --heatmap %s: unknown image format (use .pfm, .ppm or .png)\n", a->heatmap);
         return 1;
     }
-    if (a->report && !ends_with(a->report, ".md") && !ends_with(a->report, ".csv")) {
-        fprintf(stderr, "pathlab grade: --report %s: use a name ending in .md (Markdown) or .csv\n", a->report);
+    if (a->report && !ends_with(a->report, ".md") && !ends_with(a->report, ".csv") && !ends_with(a->report, ".html")) {
+        fprintf(stderr, "pathlab grade: --report %s: use a name ending in .md (Markdown), .csv or .html\n", a->report);
         return 1;
     }
     return 0;
+}
+
+/* dir/file (file NULL: dir alone) as an absolute path: the working folder before it when relative. */
+static void absolute(char *out, size_t cap, const char *dir, const char *file)
+{
+    char cwd[4096];
+    int n;
+    if (dir[0] != '/' && getcwd(cwd, sizeof cwd)) n = snprintf(out, cap, "%s/%s%s%s", cwd, dir, file ? "/" : "", file ? file : "");
+    else n = snprintf(out, cap, "%s%s%s", dir, file ? "/" : "", file ? file : "");
+    if (n < 0 || (size_t)n >= cap) out[0] = '\0';   /* too long: no link rather than a wrong one */
+}
+
+/* The pages' folder: --pages DIR, else with --report R.EXT the folder R-pages beside the report (the
+ * report's links are then relative and survive moving both), else none. Made if missing; the pages'
+ * link back to the report is set when it has a report. 0, or 1 (said). */
+static int setup_pages(grade_args *a)
+{
+    const char *base = a->report ? (strrchr(a->report, '/') ? strrchr(a->report, '/') + 1 : a->report) : "";
+    size_t stem = strrchr(base, '.') ? (size_t)(strrchr(base, '.') - base) : strlen(base);
+    char dir[4096];
+    if (a->pages) snprintf(a->pages_dir, sizeof a->pages_dir, "%s", a->pages);
+    else if (a->report) snprintf(a->pages_dir, sizeof a->pages_dir, "%.*s-pages", (int)(base - a->report + stem), a->report);
+    else return 0;
+    if (mkdir(a->pages_dir, 0777) && errno != EEXIST) {
+        fprintf(stderr, "pathlab grade: cannot create the folder %s for the pages: %s\n", a->pages_dir, strerror(errno));
+        return 1;
+    }
+    if (!is_dir(a->pages_dir)) { fprintf(stderr, "pathlab grade: --pages %s is not a folder\n", a->pages_dir); return 1; }
+    snprintf(dir, sizeof dir, "%.*s", base > a->report ? (int)(base - a->report) : 1, base > a->report ? a->report : ".");
+    if (!a->report) a->back[0] = '\0';
+    else if (!a->pages) snprintf(a->back, sizeof a->back, "../%s", base);
+    else absolute(a->back, sizeof a->back, dir, base);
+    return 0;
+}
+
+/* The link from the report to a page DIR/FILE: relative when DIR lies under the report's folder,
+ * else absolute. */
+static void page_link(char *out, size_t cap, const grade_args *a, const char *page)
+{
+    const char *slash = a->report ? strrchr(a->report, '/') : NULL;
+    size_t n = slash ? (size_t)(slash - a->report) + 1 : 0;
+    if (page[0] == '/' || !a->report || (n == 0 && strncmp(page, "../", 3))) snprintf(out, cap, "%s", page);
+    else if (n && !strncmp(page, a->report, n)) snprintf(out, cap, "%s", page + n);
+    else absolute(out, cap, page, NULL);
 }
 
 static int parse_args(grade_args *a, int argc, char **argv)
@@ -149,6 +198,7 @@ static int parse_args(grade_args *a, int argc, char **argv)
         {"--layers", CLI_STRING, &a->layers, 0, 0, NULL, NULL, NULL},
         {"--heatmap", CLI_STRING, &a->heatmap, 0, 0, NULL, NULL, NULL},
         {"--report", CLI_STRING, &a->report, 0, 0, NULL, NULL, NULL},
+        {"--pages", CLI_STRING, &a->pages, 0, 0, NULL, NULL, NULL},
         {"--details", CLI_SWITCH, &a->details, 0, 0, NULL, NULL, NULL},
         {"--spp", CLI_INT, &a->o.spp, 1, 1 << 30, NULL, NULL, NULL},
         {"--ref-spp", CLI_INT, &a->o.ref_spp, 1, 1 << 30, NULL, NULL, NULL},
@@ -169,7 +219,7 @@ static int parse_args(grade_args *a, int argc, char **argv)
     free(words);
     if (!n || !a->ref) { fprintf(stderr, "pathlab grade: needs an image (or a folder of them) and --ref REF.pfm\n" GRADE_USAGE); return 1; }
     if (!a->nimages) { fprintf(stderr, "pathlab grade: no image to grade (the folder holds no .pfm besides the reference's files)\n"); return 1; }
-    return check_outputs(a);
+    return check_outputs(a) || setup_pages(a);
 }
 
 /* Reads the reference, its variance (--var, else REF_var.pfm if it exists) and its layers (--layers
@@ -238,12 +288,12 @@ static void heatmap_path(char *out, size_t cap, const grade_args *a, const char 
 
 /* The likely mistakes of a failing image: printed in full (one image, or --details) and joined into
  * the row. */
-static int diagnose(grade_row *row, const image *img, const reference *R, const grade_args *a, double excess, int loud)
+static int diagnose(grade_row *row, const image *img, const reference *R, const grade_args *a, double excess, int loud,
+                    grade_hypothesis *h, int *nh)
 {
-    grade_hypothesis h[GRADE_MAX_HYP];
-    int n = grade_diagnose(img, &R->refs, &a->o, excess, h, GRADE_MAX_HYP), k;
+    int n = *nh = grade_diagnose(img, &R->refs, &a->o, excess, h, GRADE_MAX_HYP), k;
     size_t used = 0;
-    if (n < 0) { fprintf(stderr, "pathlab grade: out of memory\n"); return 2; }
+    if (n < 0) { fprintf(stderr, "pathlab grade: out of memory\n"); *nh = 0; return 2; }
     if (loud) grade_print_hypotheses(h, n);
     if (n == 0) snprintf(row->mistake, sizeof row->mistake, "none of the catalogue%s", R->refs.nlayers ? "" :
                          " (no layers REF_split_L0.pfm ... beside the reference: the bounce mistakes were not tried)");
@@ -254,12 +304,46 @@ static int diagnose(grade_row *row, const image *img, const reference *R, const 
     return 0;
 }
 
+/* The heatmap of one graded image, if asked: 0, or 2 (said). */
+static int write_heatmap(const grade_report *r, const reference *R, const grade_args *a, const char *image_path, int loud)
+{
+    char path[4200];
+    image heat;
+    int err;
+    if (!a->heatmap) return 0;
+    heatmap_path(path, sizeof path, a, image_path);
+    err = grade_heatmap(&heat, r, &R->ref) || img_write(&heat, path, 0.0f);
+    if (!err && loud) printf("heatmap: %s (red: significantly brighter blocks, blue: darker, grey: the reference)\n", path);
+    img_free(&heat);
+    return err ? 2 : 0;
+}
+
+/* The page of one graded image, PAGES/STEM.html, if there is a pages folder; the row's link to it.
+ * 0, or 2 (said). */
+static int write_page(grade_row *row, const grade_report *r, const image *img, const reference *R, const grade_args *a,
+                      const grade_hypothesis *h, int nh, int loud)
+{
+    const char *base = strrchr(row->path, '/') ? strrchr(row->path, '/') + 1 : row->path;
+    size_t stem = ends_with(base, ".pfm") ? strlen(base) - 4 : strlen(base);
+    char path[8400];
+    grade_page p;
+    if (!a->pages_dir[0]) return 0;
+    snprintf(path, sizeof path, "%s/%.*s.html", a->pages_dir, (int)stem, base);
+    p.path = path, p.ref_path = a->ref, p.var_path = R->var_path, p.img = img, p.refs = &R->refs, p.r = r, p.row = row;
+    p.h = h, p.nh = nh, p.back = a->back[0] ? a->back : NULL;
+    if (grade_write_page(&p)) return 2;
+    page_link(row->page, sizeof row->page, a, path);
+    if (loud) printf("page: %s\n", path);
+    return 0;
+}
+
 /* Grades one image into its row: 0 pass, 1 fail, 2 could not be read or graded. */
 static int grade_one(grade_row *row, const reference *R, const grade_args *a, int loud)
 {
-    image img, heat;
+    grade_hypothesis h[GRADE_MAX_HYP];
+    image img;
     grade_report r;
-    int rc;
+    int rc, nh = 0;
     memset(row, 0, sizeof *row);
     row->path = a->images[0];
     rc = grade_read_image(&img, row, &R->refs, a->ref);
@@ -273,14 +357,8 @@ static int grade_one(grade_row *row, const reference *R, const grade_args *a, in
     if (loud) grade_print_report(&r, row->path, a->ref, &a->o);
     grade_fill_row(row, &r);
     row->status = grade_failed(&r);
-    if (row->status == 1 && diagnose(row, &img, R, a, grade_excess(&r), loud)) row->status = 2;
-    if (a->heatmap) {
-        char path[4200];
-        heatmap_path(path, sizeof path, a, row->path);
-        if (grade_heatmap(&heat, &r, &R->ref) || img_write(&heat, path, 0.0f)) row->status = 2;
-        else if (loud) printf("heatmap: %s (red: significantly brighter blocks, blue: darker, grey: the reference)\n", path);
-        img_free(&heat);
-    }
+    if (row->status == 1 && diagnose(row, &img, R, a, grade_excess(&r), loud, h, &nh)) row->status = 2;
+    if (write_heatmap(&r, R, a, row->path, loud) || write_page(row, &r, &img, R, a, h, nh, loud)) row->status = 2;
     grade_free(&r);
     img_free(&img);
     return row->status;
@@ -323,7 +401,7 @@ int grade_main(int argc, char **argv)
         if (rows[k].status > rc) rc = rows[k].status;
     }
     if (a.nimages > 1) grade_print_summary(rows, a.nimages, &a.o);
-    if (a.report && grade_write_report(a.report, rows, a.nimages, &a.o, a.ref)) rc = 2;
+    if (a.report && grade_write_report(a.report, rows, a.nimages, &a.o, a.ref, &R.refs)) rc = 2;
     free_reference(&R);
     free_args(&a);
     free(rows);

@@ -41,6 +41,21 @@ static int put_table(FILE *f, const compare_page *p)
     return err;
 }
 
+/* A line of Markdown's notes: `code` spans as <code>, the rest escaped. Cuts line. */
+static int put_code(FILE *f, char *line)
+{
+    char *tick;
+    int err = 0, code = 0;
+    for (; (tick = strchr(line, '`')) != NULL; line = tick + 1, code = !code) {
+        *tick = '\0';
+        err |= put_esc(f, line);
+        fputs(code ? "</code>" : "<code>", f);
+    }
+    err |= put_esc(f, line);
+    if (code) fputs("</code>", f);
+    return err;
+}
+
 /* The notes, "- ...\n" lines, as a list. */
 static int put_notes(FILE *f, const char *notes)
 {
@@ -55,7 +70,7 @@ static int put_notes(FILE *f, const char *notes)
         snprintf(line, sizeof line, "%.*s", (int)(end - start), start);
         if (!line[0]) continue;
         fputs("<li>", f);
-        err |= put_esc(f, line);
+        err |= put_code(f, line);
         fputs("</li>\n", f);
     }
     fputs("</ul>\n", f);

@@ -213,13 +213,13 @@ static void write_csv(FILE *f, const grade_row *rows, int n)
 }
 
 int grade_write_report(const char *path, const grade_row *rows, int n, const grade_opts *o, const char *ref_path,
-                       const grade_refs *refs)
+                       const grade_refs *refs, const image *imgs)
 {
     char tmp[4200];
     size_t len = strlen(path);
     FILE *f;
     if (len > 5 && !strcmp(path + len - 5, ".html")) {
-        if (grade_write_class_page(path, rows, n, o, ref_path, refs)) return 1;
+        if (grade_write_class_page(path, rows, n, o, ref_path, refs, imgs)) return 1;
         printf("report: %s\n", path);
         return 0;
     }

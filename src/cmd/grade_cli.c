@@ -337,8 +337,9 @@ static int write_page(grade_row *row, const grade_report *r, const image *img, c
     return 0;
 }
 
-/* Grades one image into its row: 0 pass, 1 fail, 2 could not be read or graded. */
-static int grade_one(grade_row *row, const reference *R, const grade_args *a, int loud)
+/* Grades one image into its row: 0 pass, 1 fail, 2 could not be read or graded. keep (or NULL)
+ * receives the graded image, for the class's page. */
+static int grade_one(grade_row *row, const reference *R, const grade_args *a, int loud, image *keep)
 {
     grade_hypothesis h[GRADE_MAX_HYP];
     image img;
@@ -360,6 +361,7 @@ static int grade_one(grade_row *row, const reference *R, const grade_args *a, in
     if (row->status == 1 && diagnose(row, &img, R, a, grade_excess(&r), loud, h, &nh)) row->status = 2;
     if (write_heatmap(&r, R, a, row->path, loud) || write_page(row, &r, &img, R, a, h, nh, loud)) row->status = 2;
     grade_free(&r);
+    if (keep && row->status < 2) { *keep = img; img.px = NULL; }
     img_free(&img);
     return row->status;
 }
@@ -381,12 +383,14 @@ int grade_main(int argc, char **argv)
     grade_args a;
     reference R;
     grade_row *rows;
+    image *kept = NULL;    /* the graded images, kept for the class's page (--report X.html) */
     int k, rc = 0, loud;
     memset(&a, 0, sizeof a);
     memset(&R, 0, sizeof R);
     if (parse_args(&a, argc, argv)) { free_args(&a); return 2; }
     rows = calloc((size_t)a.nimages + 1, sizeof *rows);
-    if (!rows || read_reference(&R, &a)) { free_reference(&R); free_args(&a); free(rows); return 2; }
+    if (a.report && ends_with(a.report, ".html") && !(kept = calloc((size_t)a.nimages, sizeof *kept))) rc = 2;
+    if (rc || !rows || read_reference(&R, &a)) { free_reference(&R); free_args(&a); free(rows); free(kept); return 2; }
     loud = a.nimages == 1 || a.details;
     if (R.has_meta) print_provenance(&R.meta, a.ref);
     if (R.has_meta) a.o.ref_var_dof = R.meta.variance_dof;   /* a sobol reference's variance: 3 dof */
@@ -395,13 +399,15 @@ int grade_main(int argc, char **argv)
         grade_args one = a;
         one.images = a.images + k;
         if (loud && k) printf("\n");
-        grade_one(&rows[k], &R, &one, loud);
+        grade_one(&rows[k], &R, &one, loud, kept ? &kept[k] : NULL);
         rows[k].path = a.images[k];
         if (!loud || a.nimages > 1) grade_print_row(&rows[k]);
         if (rows[k].status > rc) rc = rows[k].status;
     }
     if (a.nimages > 1) grade_print_summary(rows, a.nimages, &a.o);
-    if (a.report && grade_write_report(a.report, rows, a.nimages, &a.o, a.ref, &R.refs)) rc = 2;
+    if (a.report && grade_write_report(a.report, rows, a.nimages, &a.o, a.ref, &R.refs, kept)) rc = 2;
+    for (k = 0; kept && k < a.nimages; k++) img_free(&kept[k]);
+    free(kept);
     free_reference(&R);
     free_args(&a);
     free(rows);

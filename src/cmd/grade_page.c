@@ -177,27 +177,42 @@ static int put_class_table(FILE *f, const grade_row *rows, int n)
     return err;
 }
 
-int grade_write_class_page(const char *path, const grade_row *rows, int n, const grade_opts *o, const char *ref_path,
-                           const grade_refs *refs)
+/* The graded images as the page's images, each linked to its page: how many. */
+static int class_images(html_image *im, const grade_row *rows, int n, const image *imgs)
 {
-    html_image ref;
+    int k, m = 0;
+    for (k = 0; imgs && k < n; k++) {
+        if (!imgs[k].px) continue;
+        im[m].name = base_name(rows[k].path), im[m].img = &imgs[k], im[m].var = NULL;
+        im[m++].link = rows[k].page[0] ? rows[k].page : NULL;
+    }
+    return m;
+}
+
+int grade_write_class_page(const char *path, const grade_row *rows, int n, const grade_opts *o, const char *ref_path,
+                           const grade_refs *refs, const image *imgs)
+{
+    html_image ref, *im = malloc(((size_t)n + 1) * sizeof *im);
     html_page page;
     char *before = NULL, title[4200];
     size_t nb;
     FILE *f = open_memstream(&before, &nb);
-    int err = !f;
+    int err = !f || !im;
     if (f) {
-        fprintf(f, "<p>Each image graded at family-wise level alpha %g (pathlab grade; docs/grading.md). "
-                   "The reference is shown below.</p>\n", o->alpha);
+        fprintf(f, "<p>Each image graded at family-wise level alpha %g (pathlab grade; docs/grading.md); "
+                   "below, the graded images against the reference.</p>\n", o->alpha);
         err |= put_class_table(f, rows, n);
         err |= fclose(f) != 0;
     }
-    if (err) { fprintf(stderr, "%s: out of memory\n", path); free(before); return 1; }
+    if (err) { fprintf(stderr, "%s: out of memory\n", path); free(before); free(im); return 1; }
     snprintf(title, sizeof title, "Grades against %s", ref_path);
     memset(&page, 0, sizeof page);
     ref.name = base_name(ref_path), ref.img = refs->ref, ref.var = refs->var, ref.link = NULL;
-    page.title = title, page.images = &ref, page.nimages = 1, page.before_html = before;
+    page.title = title, page.images = im, page.nimages = class_images(im, rows, n, imgs), page.before_html = before;
+    if (page.nimages) page.ref = &ref;
+    else page.images = &ref, page.nimages = 1;   /* nothing graded: the reference alone */
     err = html_page_write(path, &page);
     free(before);
+    free(im);
     return err;
 }

@@ -95,3 +95,5 @@ if [ -s "$G/one/alice.html" ] && grep -q "^page: $G/one/alice.html" "$TMP/out"; 
 else fail "grade: no $G/one/alice.html: $(cat "$TMP/out" | tail -3)"; fi
 expect_status "grade: --pages in a missing folder, exit 2" 2 $PATHLAB grade "$G/class/alice.pfm" --ref "$G/ref.pfm" --pages "$G/no/such"
 expect_err "grade: the pages' folder named" "cannot create the folder .*no/such"
+expect_status "grade: a missing reference with --pages, exit 2" 2 $PATHLAB grade "$G/class/alice.pfm" --ref "$G/none.pfm" --pages "$G/never"
+expect_no_file "grade: bad input makes no pages' folder" "$G/never"

@@ -156,8 +156,9 @@ static void absolute(char *out, size_t cap, const char *dir, const char *file)
 }
 
 /* The pages' folder: --pages DIR, else with --report R.EXT the folder R-pages beside the report (the
- * report's links are then relative and survive moving both), else none. Made if missing; the pages'
- * link back to the report is set when it has a report. 0, or 1 (said). */
+ * report's links are then relative and survive moving both), else none. Made if missing, once the
+ * reference has been read (bad input writes nothing); the pages' link back to the report is set
+ * when it has a report. 0, or 1 (said). */
 static int setup_pages(grade_args *a)
 {
     const char *base = a->report ? (strrchr(a->report, '/') ? strrchr(a->report, '/') + 1 : a->report) : "";
@@ -219,7 +220,7 @@ static int parse_args(grade_args *a, int argc, char **argv)
     free(words);
     if (!n || !a->ref) { fprintf(stderr, "pathlab grade: needs an image (or a folder of them) and --ref REF.pfm\n" GRADE_USAGE); return 1; }
     if (!a->nimages) { fprintf(stderr, "pathlab grade: no image to grade (the folder holds no .pfm besides the reference's files)\n"); return 1; }
-    return check_outputs(a) || setup_pages(a);
+    return check_outputs(a);
 }
 
 /* Reads the reference, its variance (--var, else REF_var.pfm if it exists) and its layers (--layers
@@ -390,7 +391,7 @@ int grade_main(int argc, char **argv)
     if (parse_args(&a, argc, argv)) { free_args(&a); return 2; }
     rows = calloc((size_t)a.nimages + 1, sizeof *rows);
     if (a.report && ends_with(a.report, ".html") && !(kept = calloc((size_t)a.nimages, sizeof *kept))) rc = 2;
-    if (rc || !rows || read_reference(&R, &a)) { free_reference(&R); free_args(&a); free(rows); free(kept); return 2; }
+    if (rc || !rows || read_reference(&R, &a) || setup_pages(&a)) { free_reference(&R); free_args(&a); free(rows); free(kept); return 2; }
     loud = a.nimages == 1 || a.details;
     if (R.has_meta) print_provenance(&R.meta, a.ref);
     if (R.has_meta) a.o.ref_var_dof = R.meta.variance_dof;   /* a sobol reference's variance: 3 dof */

@@ -5,7 +5,7 @@
 # (Markdown, CSV, HTML) whose links reach the pages. Checks only what compare and grade put into the
 # page (title, before/after HTML, mark labels), which html_page.c carries whatever its viewer, so it
 # holds with the stand-in writer and the real one. Deterministic (fixed seeds): the honest image passes
-# at alpha 0.01 and the biased one (an 16x16 block 5% too bright, about 7 sigma) fails. About 10 s.
+# at alpha 0.01 and the biased one (a 16x16 block 5% too bright, about 7 sigma) fails. About 11 s.
 . "$(dirname "$0")/lib.sh"
 S=scenes/cornell.obj
 # resolve FILE LINK: the path LINK names from the folder of FILE (absolute links kept)
@@ -71,7 +71,8 @@ else fail "grade: chloe's page: $(grep -A2 'Likely' "$C" | head -c 300)"; fi
 # shellcheck disable=SC2046
 links=$(grep -oE '\]\([^)]*\.html\)' "$G/out/class.md" | sed 's/^](//; s/)$//')
 missing=$(links_missing "$G/out/class.md" $links)
-if [ "$(echo "$links" | wc -w)" = 3 ] && [ -z "$missing" ]; then pass "grade: class.md links each row to its page, and the links resolve"
+if [ "$(echo "$links" | wc -w)" = 3 ] && [ -z "$missing" ] && ! echo "$links" | grep -q '^/'; then
+    pass "grade: class.md links each row to its page, relatively, and the links resolve"
 else fail "grade: class.md links '$links', missing '$missing'"; fi
 if grep -q 'href="../class.md"' "$A" && [ -f "$(resolve "$A" ../class.md)" ]; then pass "grade: a page links back to the class report"
 else fail "grade: alice's page has no link back to ../class.md"; fi
@@ -97,3 +98,13 @@ expect_status "grade: --pages in a missing folder, exit 2" 2 $PATHLAB grade "$G/
 expect_err "grade: the pages' folder named" "cannot create the folder .*no/such"
 expect_status "grade: a missing reference with --pages, exit 2" 2 $PATHLAB grade "$G/class/alice.pfm" --ref "$G/none.pfm" --pages "$G/never"
 expect_no_file "grade: bad input makes no pages' folder" "$G/never"
+# students' folders holding files of one name: one page each, named by the path
+mkdir -p "$G/st/ana" "$G/st/ben"
+cp "$G/class/alice.pfm" "$G/st/ana/render.pfm"; cp "$G/class/bruno.pfm" "$G/st/ben/render.pfm"
+$PATHLAB grade "$G/st/ana/render.pfm" "$G/st/ben/render.pfm" --ref "$G/ref.pfm" --report "$G/st/c.md" > /dev/null 2>&1
+links=$(grep -oE '\]\([^)]*\.html\)' "$G/st/c.md" | sed 's/^](//; s/)$//' | sort -u)
+# shellcheck disable=SC2086
+missing=$(links_missing "$G/st/c.md" $links)
+if [ "$links" = "$(printf 'c-pages/ana_render.html\nc-pages/ben_render.html')" ] && [ -z "$missing" ] && grep -q '<b>FAIL</b>' "$(resolve "$G/st/c.md" "$(echo "$links" | grep ben)")"; then
+    pass "grade: two images named render.pfm get two pages ($(echo $links))"
+else fail "grade: same file names: links '$links', missing '$missing'"; fi

@@ -3,6 +3,7 @@
  * its sidecar REF.pfm.meta names: render --variance and --split outputs), grades
  * each image (grade.c), names the likely mistake of those that fail (grade_diagnose.c), prints
  * the verdicts (grade_print.c) and writes the class report (grade_class.c). */
+#include <ctype.h>
 #include <dirent.h>
 #include <errno.h>
 #include <unistd.h>
@@ -30,6 +31,7 @@ typedef struct {
     int details;
     char pages_dir[4096];  /* where the pages go: --pages, else REPORT-pages beside the report; "" none */
     char back[4300];       /* the pages' link to the report, or "" */
+    int same_name;         /* 1: another image of the run has this one's file name (its page is named by its path) */
     grade_opts o;
     const char **images;   /* the images, folders expanded */
     int nimages;
@@ -185,8 +187,8 @@ static void page_link(char *out, size_t cap, const grade_args *a, const char *pa
 {
     const char *slash = a->report ? strrchr(a->report, '/') : NULL;
     size_t n = slash ? (size_t)(slash - a->report) + 1 : 0;
-    if (page[0] == '/' || !a->report || (n == 0 && strncmp(page, "../", 3))) snprintf(out, cap, "%s", page);
-    else if (n && !strncmp(page, a->report, n)) snprintf(out, cap, "%s", page + n);
+    if (n && !strncmp(page, a->report, n)) snprintf(out, cap, "%s", page + n);
+    else if (page[0] == '/' || !a->report || (n == 0 && strncmp(page, "../", 3))) snprintf(out, cap, "%s", page);
     else absolute(out, cap, page, NULL);
 }
 
@@ -319,22 +321,50 @@ static int write_heatmap(const grade_report *r, const reference *R, const grade_
     return err ? 2 : 0;
 }
 
+static const char *file_name(const char *path) { return strrchr(path, '/') ? strrchr(path, '/') + 1 : path; }
+
 /* The page of one graded image, PAGES/STEM.html, if there is a pages folder; the row's link to it.
  * 0, or 2 (said). */
 static int write_page(grade_row *row, const grade_report *r, const image *img, const reference *R, const grade_args *a,
                       const grade_hypothesis *h, int nh, int loud)
 {
-    const char *base = strrchr(row->path, '/') ? strrchr(row->path, '/') + 1 : row->path;
-    size_t stem = ends_with(base, ".pfm") ? strlen(base) - 4 : strlen(base);
+    const char *base = file_name(row->path);
+    size_t stem, k, n;
     char path[8400];
     grade_page p;
     if (!a->pages_dir[0]) return 0;
-    snprintf(path, sizeof path, "%s/%.*s.html", a->pages_dir, (int)stem, base);
+    if (a->same_name && base > row->path) base--;   /* with its folder: ana/render.pfm */
+    while (a->same_name && base > row->path && base[-1] != '/') base--;
+    stem = ends_with(base, ".pfm") ? strlen(base) - 4 : strlen(base);
+    n = (size_t)snprintf(path, sizeof path, "%s/", a->pages_dir);
+    for (k = 0; k < stem && n + 6 < sizeof path; k++)   /* ana/render.pfm, when render.pfm is not alone: ana_render.html */
+        path[n++] = (char)(isalnum((unsigned char)base[k]) || strchr("-.", base[k]) ? base[k] : '_');
+    snprintf(path + n, sizeof path - n, ".html");
     p.path = path, p.ref_path = a->ref, p.var_path = R->var_path, p.img = img, p.refs = &R->refs, p.r = r, p.row = row;
     p.h = h, p.nh = nh, p.back = a->back[0] ? a->back : NULL;
     if (grade_write_page(&p)) return 2;
     page_link(row->page, sizeof row->page, a, path);
     if (loud) printf("page: %s\n", path);
+    return 0;
+}
+
+static int by_file_name(const void *a, const void *b)
+{
+    return strcmp(file_name(**(const char *const *const *)a), file_name(**(const char *const *const *)b));
+}
+
+/* same[k] = 1 when another image has images[k]'s file name (students/NAME/render.pfm): their pages
+ * are then named by their paths. 0, or 1 when out of memory. */
+static int mark_same_names(const char **images, int n, unsigned char *same)
+{
+    const char ***order = malloc((size_t)n * sizeof *order);
+    int k;
+    if (!order) return 1;
+    for (k = 0; k < n; k++) order[k] = &images[k];
+    qsort(order, (size_t)n, sizeof *order, by_file_name);
+    for (k = 0; k + 1 < n; k++)
+        if (!strcmp(file_name(*order[k]), file_name(*order[k + 1]))) same[order[k] - images] = same[order[k + 1] - images] = 1;
+    free(order);
     return 0;
 }
 
@@ -385,20 +415,25 @@ int grade_main(int argc, char **argv)
     reference R;
     grade_row *rows;
     image *kept = NULL;    /* the graded images, kept for the class's page (--report X.html) */
+    unsigned char *same = NULL;
     int k, rc = 0, loud;
     memset(&a, 0, sizeof a);
     memset(&R, 0, sizeof R);
     if (parse_args(&a, argc, argv)) { free_args(&a); return 2; }
     rows = calloc((size_t)a.nimages + 1, sizeof *rows);
     if (a.report && ends_with(a.report, ".html") && !(kept = calloc((size_t)a.nimages, sizeof *kept))) rc = 2;
-    if (rc || !rows || read_reference(&R, &a) || setup_pages(&a)) { free_reference(&R); free_args(&a); free(rows); free(kept); return 2; }
+    if (!(same = calloc((size_t)a.nimages, 1)) || mark_same_names(a.images, a.nimages, same)) rc = 2;
+    if (rc || !rows || read_reference(&R, &a) || setup_pages(&a)) {
+        free_reference(&R); free_args(&a); free(rows); free(kept); free(same);
+        return 2;
+    }
     loud = a.nimages == 1 || a.details;
     if (R.has_meta) print_provenance(&R.meta, a.ref);
     if (R.has_meta) a.o.ref_var_dof = R.meta.variance_dof;   /* a sobol reference's variance: 3 dof */
     if (!loud) grade_print_class_header(&a.o, a.ref, a.nimages, &R.refs, R.var_path, R.layer_prefix);
     for (k = 0; k < a.nimages; k++) {
         grade_args one = a;
-        one.images = a.images + k;
+        one.images = a.images + k, one.same_name = same[k];
         if (loud && k) printf("\n");
         grade_one(&rows[k], &R, &one, loud, kept ? &kept[k] : NULL);
         rows[k].path = a.images[k];
@@ -409,6 +444,7 @@ int grade_main(int argc, char **argv)
     if (a.report && grade_write_report(a.report, rows, a.nimages, &a.o, a.ref, &R.refs, kept)) rc = 2;
     for (k = 0; kept && k < a.nimages; k++) img_free(&kept[k]);
     free(kept);
+    free(same);
     free_reference(&R);
     free_args(&a);
     free(rows);

@@ -34,6 +34,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "image/image.h"
+#include "util/svg_plot.h"
 
 #define MAX_SCENES 32
 #define MAX_EST 16
@@ -303,133 +304,35 @@ bad:
 
 /* ---------- the SVG ---------- */
 
-/* Okabe-Ito colours (told apart with colour-blindness), yellow replaced by brown on white */
-static const char *palette[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000",
-                                "#8C564B", "#999999"};
-#define NPAL (int)(sizeof palette / sizeof *palette)
-
-static void xml_text(FILE *o, const char *s)
-{
-    for (; *s; s++)
-        switch (*s) {
-        case '<': fputs("&lt;", o); break;
-        case '>': fputs("&gt;", o); break;
-        case '&': fputs("&amp;", o); break;
-        case '"': fputs("&quot;", o); break;
-        default: fputc(*s, o);
-        }
-}
-
-/* marker k (0..3: circle, square, triangle, diamond) at (x, y) */
-static void marker(FILE *o, int k, double x, double y, const char *colour)
-{
-    switch (k % 4) {
-    case 0: fprintf(o, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"2.8\" fill=\"%s\"/>", x, y, colour); break;
-    case 1: fprintf(o, "<rect x=\"%.2f\" y=\"%.2f\" width=\"5\" height=\"5\" fill=\"%s\"/>", x - 2.5, y - 2.5, colour); break;
-    case 2: fprintf(o, "<path d=\"M%.2f %.2fL%.2f %.2fL%.2f %.2fZ\" fill=\"%s\"/>", x, y - 3.3, x + 3, y + 2.2, x - 3, y + 2.2, colour); break;
-    default: fprintf(o, "<path d=\"M%.2f %.2fL%.2f %.2fL%.2f %.2fL%.2f %.2fZ\" fill=\"%s\"/>", x, y - 3.4, x + 3.2, y, x, y + 3.4, x - 3.2, y, colour); break;
-    }
-}
-
-/* a decade's label: 0.001 ... 1000 written out, beyond that 1e-5 */
-static void decade_label(char *buf, size_t n, int k)
-{
-    if (k >= -3 && k <= 3) snprintf(buf, n, "%g", pow(10.0, k));
-    else snprintf(buf, n, "1e%d", k);
-}
-
-/* panel layout, in SVG units */
-#define PANEL_W 330.0
-#define PANEL_H 270.0
-#define PL 60.0   /* plot area's margins inside a panel */
-#define PR 14.0
-#define PT 28.0
-#define PB 42.0
+/* The SVG's panels and legend: src/util/svg_plot.c (shared with pathlab compare's plot). */
+#define PANEL_W SVG_PANEL_W
+#define PANEL_H SVG_PANEL_H
 #define HEAD 34.0 /* figure title */
 
+/* Scene s's panel at (x0, y0): one curve per estimator, T*, the slope -1/2 guide through the best
+ * curve's RMSE at T*. */
 static void panel(FILE *o, const results *r, int s, double x0, double y0)
 {
-    double tmin = INFINITY, tmax = 0, rmin = INFINITY, rmax = 0, W = PANEL_W - PL - PR, H = PANEL_H - PT - PB;
-    double left = x0 + PL, top = y0 + PT;
-    int e, i, k, xlo, xhi, ylo, yhi, any = 0, best = -1;
-    char lab[32];
+    svg_curve c[MAX_EST];
+    svg_point *pts[MAX_EST];
+    svg_panel p;
+    int e, i, best = -1;
+    memset(&p, 0, sizeof p);
+    p.x0 = x0, p.y0 = y0, p.title = r->scene[s], p.id = s;
+    p.ylabel = strcmp(r->metric, "relmse") ? "RMSE" : "\xe2\x88\x9arelMSE";
     for (e = 0; e < r->nest; e++) {
-        const curve *c = &r->c[s][e];
-        for (i = 0; i < c->n; i++)
-            if (c->p[i].rmse > 0) {
-                any = 1;
-                if (c->p[i].t < tmin) tmin = c->p[i].t;
-                if (c->p[i].t > tmax) tmax = c->p[i].t;
-                if (c->p[i].rmse < rmin) rmin = c->p[i].rmse;
-                if (c->p[i].rmse > rmax) rmax = c->p[i].rmse;
-            }
-        if (c->n && c->rank == 1 && best < 0) best = e;
+        const curve *k = &r->c[s][e];
+        pts[e] = malloc((size_t)(k->n ? k->n : 1) * sizeof *pts[e]);
+        c[e].name = r->est[e], c[e].p = pts[e], c[e].n = pts[e] ? k->n : 0, c[e].guide = 0;
+        for (i = 0; i < c[e].n; i++) pts[e][i].t = k->p[i].t, pts[e][i].err = k->p[i].rmse;
+        if (k->n && k->rank == 1 && best < 0) best = e;
     }
-    fprintf(o, "<g>\n<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"middle\" font-size=\"14\" font-weight=\"bold\">", left + W / 2, y0 + 18);
-    xml_text(o, r->scene[s]);
-    fprintf(o, "</text>\n");
-    if (!any) {
-        fprintf(o, "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"middle\">no positive RMSE</text>\n</g>\n", left + W / 2, top + H / 2);
-        return;
-    }
-    xlo = (int)floor(log10(tmin) + 1e-9); xhi = (int)ceil(log10(tmax) - 1e-9); if (xhi <= xlo) xhi = xlo + 1;
-    ylo = (int)floor(log10(rmin) + 1e-9); yhi = (int)ceil(log10(rmax) - 1e-9); if (yhi <= ylo) yhi = ylo + 1;
-#define PX(t) (left + (log10(t) - xlo) / (xhi - xlo) * W)
-#define PY(v) (top + (yhi - log10(v)) / (yhi - ylo) * H)
-    fprintf(o, "<clipPath id=\"clip%d\"><rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\"/></clipPath>\n", s, left, top, W, H);
-    fprintf(o, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"white\" stroke=\"#444\"/>\n", left, top, W, H);
-    /* decades: grid line, tick label; minor ticks at 2..9 */
-    for (k = xlo; k <= xhi; k++) {
-        double x = left + (double)(k - xlo) / (xhi - xlo) * W;
-        decade_label(lab, sizeof lab, k);
-        fprintf(o, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"#ddd\"/>", x, top, x, top + H);
-        fprintf(o, "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"middle\" font-size=\"11\">%s</text>\n", x, top + H + 14, lab);
-        for (i = 2; k < xhi && i <= 9; i++) {
-            double xm = x + log10((double)i) / (xhi - xlo) * W;
-            fprintf(o, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"#444\"/>", xm, top + H, xm, top + H - 3);
-        }
-    }
-    for (k = ylo; k <= yhi; k++) {
-        double y = top + (double)(yhi - k) / (yhi - ylo) * H;
-        decade_label(lab, sizeof lab, k);
-        fprintf(o, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"#ddd\"/>", left, y, left + W, y);
-        fprintf(o, "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"end\" font-size=\"11\">%s</text>\n", left - 4, y + 4, lab);
-        for (i = 2; k < yhi && i <= 9; i++) {
-            double ym = y - log10((double)i) / (yhi - ylo) * H;
-            fprintf(o, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"#444\"/>", left, ym, left + 3, ym);
-        }
-    }
-    fprintf(o, "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"middle\" font-size=\"11\">render time (s)</text>\n", left + W / 2, top + H + 30);
-    fprintf(o, "<text transform=\"translate(%.2f %.2f) rotate(-90)\" text-anchor=\"middle\" font-size=\"11\">%s</text>\n", x0 + 14, top + H / 2,
-            strcmp(r->metric, "relmse") ? "RMSE" : "\xe2\x88\x9arelMSE");
-    fprintf(o, "<g clip-path=\"url(#clip%d)\">\n", s);
-    /* T*, and the slope -1/2 guide through the best curve's RMSE at T* */
     if (isfinite(r->tstar[s])) {
-        double x = PX(r->tstar[s]);
-        fprintf(o, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"#888\" stroke-dasharray=\"1 3\"/>\n", x, top, x, top + H);
-        fprintf(o, "<text x=\"%.2f\" y=\"%.2f\" font-size=\"10\" fill=\"#666\">T*</text>\n", x + 3, top + 11);
-        if (best >= 0) {
-            double ts = r->tstar[s], rs = r->c[s][best].r_star, ta = pow(10.0, xlo), tb = pow(10.0, xhi);
-            fprintf(o, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"#666\" stroke-width=\"1.2\" stroke-dasharray=\"6 4\"/>\n",
-                    PX(ta), PY(rs * sqrt(ts / ta)), PX(tb), PY(rs * sqrt(ts / tb)));
-        }
+        p.tstar = r->tstar[s];
+        if (best >= 0) p.guide_t = r->tstar[s], p.guide_err = r->c[s][best].r_star;
     }
-    for (e = 0; e < r->nest; e++) {
-        const curve *c = &r->c[s][e];
-        const char *col = palette[e % NPAL];
-        int started = 0;
-        if (!c->n) continue;
-        fprintf(o, "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"1.5\" points=\"", col);
-        for (i = 0; i < c->n; i++)
-            if (c->p[i].rmse > 0) { fprintf(o, "%s%.2f,%.2f", started ? " " : "", PX(c->p[i].t), PY(c->p[i].rmse)); started = 1; }
-        fprintf(o, "\"/>\n");
-        for (i = 0; i < c->n; i++)
-            if (c->p[i].rmse > 0) marker(o, e, PX(c->p[i].t), PY(c->p[i].rmse), col);
-        fprintf(o, "\n");
-    }
-    fprintf(o, "</g>\n</g>\n");
-#undef PX
-#undef PY
+    svg_loglog_panel(o, &p, c, r->nest);
+    for (e = 0; e < r->nest; e++) free(pts[e]);
 }
 
 static int write_svg(const results *r, const char *path, char **caption, int ncap)
@@ -439,6 +342,7 @@ static int write_svg(const results *r, const char *path, char **caption, int nca
     double figw = ncols * PANEL_W + 20, legy = HEAD + nrows * PANEL_H + 10, figh = legy + legrows * 20 + 8 + ncap * 15 + 8;
     size_t n = strlen(path);
     char *tmp = malloc(n + 16);
+    svg_curve legend[MAX_EST];
     mode_t mask;
     FILE *o;
     if (!tmp) { fprintf(stderr, "%s: out of memory\n", path); return 1; }
@@ -461,23 +365,11 @@ static int write_svg(const results *r, const char *path, char **caption, int nca
     for (s = 0; s < r->nscenes; s++)
         panel(o, r, s, 10 + (s % ncols) * PANEL_W, HEAD + (s / ncols) * PANEL_H);
     /* legend: one entry per estimator, then the guide line */
-    for (i = 0; i < nleg; i++) {
-        double x = 20 + (i % per_row) * ((figw - 40) / per_row), y = legy + (i / per_row) * 20 + 10;
-        if (i < r->nest) {
-            e = i;
-            fprintf(o, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"%s\" stroke-width=\"1.5\"/>", x, y, x + 24, y, palette[e % NPAL]);
-            marker(o, e, x + 12, y, palette[e % NPAL]);
-            fprintf(o, "<text x=\"%.2f\" y=\"%.2f\" font-size=\"12\">", x + 30, y + 4);
-            xml_text(o, r->est[e]);
-            fprintf(o, "</text>\n");
-        } else {
-            fprintf(o, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"#666\" stroke-width=\"1.2\" stroke-dasharray=\"6 4\"/>", x, y, x + 24, y);
-            fprintf(o, "<text x=\"%.2f\" y=\"%.2f\" font-size=\"12\">slope \xe2\x88\x92" "1/2 through the best at T*</text>\n", x + 30, y + 4);
-        }
-    }
+    for (e = 0; e < r->nest; e++) legend[e].name = r->est[e], legend[e].p = NULL, legend[e].n = 1, legend[e].guide = 0;
+    svg_legend(o, legend, r->nest, "slope \xe2\x88\x92" "1/2 through the best at T*", 20, legy, figw - 40, per_row);
     for (i = 0; i < ncap; i++) {
         fprintf(o, "<text x=\"20\" y=\"%.2f\" font-size=\"10\" fill=\"#333\">", legy + legrows * 20 + 8 + (i + 1) * 15 - 3);
-        xml_text(o, caption[i]);
+        svg_text(o, caption[i]);
         fprintf(o, "</text>\n");
     }
     fprintf(o, "</svg>\n");

@@ -27,6 +27,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include "cmd/compare_page.h"
 #include "cmd/compare_report.h"
 #include "cmd/diff.h"
 #include "cmd/estimators.h"
@@ -44,11 +45,11 @@ static const char REFERENCE_FLAGS[] = "--direct mis-power --light solid-angle --
 /* Render flags that compare refuses: it names its files itself. */
 static const char *const RENDER_ONLY[] = {"--split", "--variance", NULL};
 /* compare's own files, DIR/NAME.*, which no estimator may write over. */
-static const char *const RESERVED[] = {"reference", "mosaic", "table", NULL};
+static const char *const RESERVED[] = {"reference", "mosaic", "table", "index", NULL};
 
 /* One estimator's results: its render, its error heatmap and its line of the table. */
 typedef struct {
-    image img, heat;
+    image img, var, heat;    /* var: the variance of each pixel's mean, for the page's z-scores */
     compare_row row;         /* spp, time, errors, efficiency */
 } estimator;
 
@@ -352,7 +353,7 @@ static int render_estimators(comparison *c, const scene *s, const reference *ref
         const estimator_spec *sp = &c->spec[i];
         render_opts ro = sp->a.ro;
         ro.spp = e->row.spp;
-        if (render_image(s, &c->cam, &ro, &e->img, NULL, &e->row.secs)) return 1;
+        if (render_image(s, &c->cam, &ro, &e->img, &e->var, &e->row.secs)) return 1;
         measure(&e->row, &e->img, ref);
         if (!c->base.ro.quiet) fprintf(stderr, "compare: %s: %d spp in %.3f s, RMSE %.4g\n", sp->label, e->row.spp, e->row.secs, e->row.rmse);
         if (save_image(c, "", sp->slug, ".pfm", &e->img, 0.0f) || save_image(c, "", sp->slug, ".png", &e->img, c->base.exposure)) return 1;
@@ -479,8 +480,29 @@ static int write_tables(const comparison *c)
     if (compare_write_md(md, rows, c->nest, c->notes) || compare_write_csv(csv, rows, c->nest)) return 1;
     compare_print_table(stdout, rows, c->nest);
     printf("\n%s", c->notes);
-    printf("(mosaic %dx%d in %s/mosaic.png; images, heatmaps and table.md, table.csv in %s)\n", c->mosaic_w, c->mosaic_h, c->dir, c->dir);
+    printf("(mosaic %dx%d in %s/mosaic.png; images, heatmaps and table.md, table.csv in %s; the page %s/index.html)\n",
+           c->mosaic_w, c->mosaic_h, c->dir, c->dir, c->dir);
     return 0;
+}
+
+/* DIR/index.html: the images in the viewer, the table and its notes, the error against time. */
+static int write_page(const comparison *c, const reference *ref)
+{
+    compare_row rows[MAX_EST];
+    image img[MAX_EST], var[MAX_EST];
+    const char *slugs[MAX_EST];
+    char path[PATH_CAP], title[PATH_CAP];
+    compare_page p;
+    int i;
+    for (i = 0; i < c->nest; i++) {
+        rows[i] = c->est[i].row;
+        rows[i].label = c->spec[i].label, rows[i].flags = c->spec[i].flags;
+        img[i] = c->est[i].img, var[i] = c->est[i].var, slugs[i] = c->spec[i].slug;
+    }
+    snprintf(title, sizeof title, "pathlab compare: %s", c->base.scene);
+    p.title = title, p.rows = rows, p.img = img, p.var = var, p.slugs = slugs, p.n = c->nest;
+    p.ref = &ref->img, p.ref_var = ref->var.px ? &ref->var : NULL, p.ref_label = ref->label, p.notes = c->notes;
+    return out_path(path, c, "", "index", ".html") || compare_write_page(path, &p);
 }
 
 /* ---- the command ---- */
@@ -503,7 +525,7 @@ static int run(comparison *c)
     /* the outputs */
     if (write_heatmaps(c, &ref)) goto done;
     write_notes(c, &ref);
-    if (write_mosaic(c, &ref) || write_tables(c)) goto done;
+    if (write_mosaic(c, &ref) || write_tables(c) || write_page(c, &ref)) goto done;
     rc = 0;
 done:
     img_free(&ref.img);
@@ -520,6 +542,7 @@ int compare_main(int argc, char **argv)
     rc = parse_args(c, argc, argv) ? 2 : run(c);
     for (i = 0; i < MAX_EST; i++) {
         img_free(&c->est[i].img);
+        img_free(&c->est[i].var);
         img_free(&c->est[i].heat);
     }
     free(c);

@@ -1,8 +1,8 @@
 /* compare.h — `pathlab compare SCENE.obj --estimators "light,brdf,mis-power" -o DIR`: renders the
  * same scene with several estimators at equal samples per pixel or equal time, measures each
  * against a reference (given, or rendered with the best estimator at many more samples), and
- * writes the images, their error heatmaps, a labelled mosaic and a table of RMSE, relMSE, MAE and
- * efficiency 1/(MSE x time). See the comment at the top of compare.c for the choices made. */
+ * writes the images, their error heatmaps, a labelled mosaic, a table of RMSE, relMSE, MAE and
+ * efficiency 1/(MSE x time), and DIR/index.html (compare_page.h). See the comment at the top of compare.c for the choices made. */
 #ifndef PATHLAB_COMPARE_H
 #define PATHLAB_COMPARE_H
 
@@ -13,7 +13,8 @@
 #define COMPARE_HELP \
     "compare: renders each estimator at equal spp (default 16) or equal time, and writes into DIR each image\n" \
     "(LABEL.pfm, .png), its error heatmap (heat-LABEL.png), a labelled mosaic (mosaic.ppm, .png) and the table\n" \
-    "(table.md, .csv: RMSE, relMSE, MAE, efficiency 1/(MSE*time)). Estimators are comma-separated, each a list of\n" \
+    "(table.md, .csv: RMSE, relMSE, MAE, efficiency 1/(MSE*time)) and a page, index.html: the images in the viewer,\n" \
+    "the table, the error against time. Estimators are comma-separated, each a list of\n" \
     "render flags and names: {direct } = --direct X; {light } = --light X;\n" \
     "{dir } = --dir X, brdf written dir-brdf (brdf alone is --direct brdf); {sampler } = --sampler X;\n" \
     "join names with + or spaces: \"light+solid-angle\", \"mis-power --rr off\", \"mis-power+sobol\"; LABEL=FLAGS names one:\n" \

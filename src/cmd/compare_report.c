@@ -4,8 +4,7 @@
 #include <string.h>
 #include "util/textfile.h"
 
-/* The best efficiency, to which each row's is compared. */
-static double best_eff(const compare_row *rows, int n)
+double compare_best_eff(const compare_row *rows, int n)
 {
     double best = 0.0;
     int i;
@@ -16,7 +15,7 @@ static double best_eff(const compare_row *rows, int n)
 
 void compare_print_table(FILE *f, const compare_row *rows, int n)
 {
-    double best = best_eff(rows, n);
+    double best = compare_best_eff(rows, n);
     int i, wl = 9, wf = 5;
     for (i = 0; i < n; i++) {
         if ((int)strlen(rows[i].label) > wl) wl = (int)strlen(rows[i].label);
@@ -33,7 +32,7 @@ void compare_print_table(FILE *f, const compare_row *rows, int n)
 
 static void print_md(FILE *f, const compare_row *rows, int n, const char *notes)
 {
-    double best = best_eff(rows, n);
+    double best = compare_best_eff(rows, n);
     int i;
     fprintf(f, "| estimator | flags | spp | time (s) | RMSE | relMSE | MAE | MSE | efficiency 1/(MSE*time) | ratio to best |\n"
                "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
@@ -58,7 +57,7 @@ static void csv_field(FILE *f, const char *s)
 
 static void print_csv(FILE *f, const compare_row *rows, int n)
 {
-    double best = best_eff(rows, n);
+    double best = compare_best_eff(rows, n);
     int i;
     fprintf(f, "estimator,flags,spp,time_s,rmse,relmse,mae,mse,efficiency,ratio_to_best\n");
     for (i = 0; i < n; i++) {

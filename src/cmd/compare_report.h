@@ -14,6 +14,8 @@ typedef struct {
     double eff;                   /* 1 / (MSE x time) */
 } compare_row;
 
+/* The best efficiency, to which each row's is compared (its ratio column). */
+double compare_best_eff(const compare_row *rows, int n);
 /* The table as aligned columns into f. */
 void compare_print_table(FILE *f, const compare_row *rows, int n);
 /* Write path atomically (a temporary file renamed at the end); 0, or 1 after printing why.

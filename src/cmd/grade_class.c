@@ -1,5 +1,6 @@
 /* grade_class.c — a class's images read and checked, its lines and its report (see grade_class.h). */
 #include "cmd/grade_class.h"
+#include "cmd/grade_page.h"
 #include "cmd/sidecar.h"
 #include <math.h>
 #include <stdio.h>
@@ -163,26 +164,38 @@ static void csv_field(FILE *f, const char *s)
     fputc('"', f);
 }
 
+/* [NAME.html](LINK), the link's spaces and parentheses percent-encoded so that Markdown keeps it whole. */
+static void md_link(FILE *f, const char *link)
+{
+    const char *s, *base = strrchr(link, '/') ? strrchr(link, '/') + 1 : link;
+    fprintf(f, "[%s](", base);
+    for (s = link; *s; s++) {
+        if (*s == ' ' || *s == '(' || *s == ')' || *s == '|') fprintf(f, "%%%02X", (unsigned char)*s);
+        else fputc(*s, f);
+    }
+    fputc(')', f);
+}
+
 static void write_md(FILE *f, const grade_row *rows, int n, const grade_opts *o, const char *ref_path)
 {
     int k;
     fprintf(f, "# Grades against %s\n\nEach image graded at family-wise level alpha %g (`pathlab grade`; see docs/grading.md).\n\n",
             ref_path, o->alpha);
-    fprintf(f, "| image | verdict | bias +- error | where | likely mistake |\n|---|---|---|---|---|\n");
+    fprintf(f, "| image | verdict | bias +- error | where | likely mistake | page |\n|---|---|---|---|---|---|\n");
     for (k = 0; k < n; k++) {
         const grade_row *r = &rows[k];
-        fprintf(f, "| %s | %s | ", r->path, verdict_word(r->status));
-        if (r->status < 2 && r->channel[0] && r->bias_se == -2.0) fprintf(f, "%+.2f%% (where significant)", 100 * r->bias);
-        else if (r->status < 2 && r->channel[0] && r->bias_se < 0.0) fprintf(f, "%+.2f%% (plain mean)", 100 * r->bias);
-        else if (r->status < 2 && r->channel[0]) fprintf(f, "%+.2f%% +- %.2f%% (%s)", 100 * r->bias, 100 * r->bias_se, r->channel);
-        fprintf(f, " | %s | %s |\n", r->where, r->mistake);
+        char bias[128];
+        grade_bias_text(bias, sizeof bias, r);
+        fprintf(f, "| %s | %s | %s | %s | %s | ", r->path, verdict_word(r->status), bias, r->where, r->mistake);
+        if (r->page[0]) md_link(f, r->page);
+        fprintf(f, " |\n");
     }
 }
 
 static void write_csv(FILE *f, const grade_row *rows, int n)
 {
     int k;
-    fprintf(f, "image,verdict,bias_percent,error_percent,channel,where,likely_mistake\n");
+    fprintf(f, "image,verdict,bias_percent,error_percent,channel,where,likely_mistake,page\n");
     for (k = 0; k < n; k++) {
         const grade_row *r = &rows[k];
         csv_field(f, r->path);
@@ -193,16 +206,24 @@ static void write_csv(FILE *f, const grade_row *rows, int n)
         csv_field(f, r->where);
         fputc(',', f);
         csv_field(f, r->mistake);
+        fputc(',', f);
+        csv_field(f, r->page);
         fputc('\n', f);
     }
 }
 
-int grade_write_report(const char *path, const grade_row *rows, int n, const grade_opts *o, const char *ref_path)
+int grade_write_report(const char *path, const grade_row *rows, int n, const grade_opts *o, const char *ref_path,
+                       const grade_refs *refs, const image *imgs)
 {
     char tmp[4200];
     size_t len = strlen(path);
-    FILE *f = textfile_open(path, tmp, sizeof tmp);
-    if (!f) return 1;
+    FILE *f;
+    if (len > 5 && !strcmp(path + len - 5, ".html")) {
+        if (grade_write_class_page(path, rows, n, o, ref_path, refs, imgs)) return 1;
+        printf("report: %s\n", path);
+        return 0;
+    }
+    if (!(f = textfile_open(path, tmp, sizeof tmp))) return 1;
     if (len > 4 && !strcmp(path + len - 4, ".csv")) write_csv(f, rows, n);
     else write_md(f, rows, n, o, ref_path);
     if (textfile_close(f, tmp, path)) return 1;

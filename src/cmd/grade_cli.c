@@ -3,7 +3,10 @@
  * its sidecar REF.pfm.meta names: render --variance and --split outputs), grades
  * each image (grade.c), names the likely mistake of those that fail (grade_diagnose.c), prints
  * the verdicts (grade_print.c) and writes the class report (grade_class.c). */
+#include <ctype.h>
 #include <dirent.h>
+#include <errno.h>
+#include <unistd.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -13,18 +16,22 @@
 #include "cmd/grade.h"
 #include "cmd/grade_class.h"
 #include "cmd/grade_diagnose.h"
+#include "cmd/grade_page.h"
 #include "cmd/grade_print.h"
 #include "cmd/render_files.h"
 
 #define GRADE_USAGE \
-    "usage: pathlab grade IMAGE.pfm... | FOLDER --ref REF.pfm [--alpha A] [--report FILE.md|FILE.csv]\n" \
+    "usage: pathlab grade IMAGE.pfm... | FOLDER --ref REF.pfm [--alpha A] [--report FILE.md|.csv|.html] [--pages DIR]\n" \
     "                     [--heatmap OUT.png|FOLDER] [--block B] [--var REF_VAR.pfm] [--layers PREFIX] [--details]\n" \
     "                     [--spp N --ref-spp M]\n"
 #define GRADE_MAX_HYP 6
 
 typedef struct {
-    const char *ref, *var, *layers, *heatmap, *report;
+    const char *ref, *var, *layers, *heatmap, *report, *pages;
     int details;
+    char pages_dir[4096];  /* where the pages go: --pages, else REPORT-pages beside the report; "" none */
+    char back[4300];       /* the pages' link to the report, or "" */
+    int same_name;         /* 1: another image of the run has this one's file name (its page is named by its path) */
     grade_opts o;
     const char **images;   /* the images, folders expanded */
     int nimages;
@@ -133,11 +140,56 @@ static int check_outputs(const grade_args *a)
                                        : "pathlab grade: --heatmap %s: unknown image format (use .pfm, .ppm or .png)\n", a->heatmap);
         return 1;
     }
-    if (a->report && !ends_with(a->report, ".md") && !ends_with(a->report, ".csv")) {
-        fprintf(stderr, "pathlab grade: --report %s: use a name ending in .md (Markdown) or .csv\n", a->report);
+    if (a->report && !ends_with(a->report, ".md") && !ends_with(a->report, ".csv") && !ends_with(a->report, ".html")) {
+        fprintf(stderr, "pathlab grade: --report %s: use a name ending in .md (Markdown), .csv or .html\n", a->report);
         return 1;
     }
     return 0;
+}
+
+/* dir/file (file NULL: dir alone) as an absolute path: the working folder before it when relative. */
+static void absolute(char *out, size_t cap, const char *dir, const char *file)
+{
+    char cwd[4096];
+    int n;
+    if (dir[0] != '/' && getcwd(cwd, sizeof cwd)) n = snprintf(out, cap, "%s/%s%s%s", cwd, dir, file ? "/" : "", file ? file : "");
+    else n = snprintf(out, cap, "%s%s%s", dir, file ? "/" : "", file ? file : "");
+    if (n < 0 || (size_t)n >= cap) out[0] = '\0';   /* too long: no link rather than a wrong one */
+}
+
+/* The pages' folder: --pages DIR, else with --report R.EXT the folder R-pages beside the report (the
+ * report's links are then relative and survive moving both), else none. Made if missing, once the
+ * reference has been read (bad input writes nothing); the pages' link back to the report is set
+ * when it has a report. 0, or 1 (said). */
+static int setup_pages(grade_args *a)
+{
+    const char *base = a->report ? (strrchr(a->report, '/') ? strrchr(a->report, '/') + 1 : a->report) : "";
+    size_t stem = strrchr(base, '.') ? (size_t)(strrchr(base, '.') - base) : strlen(base);
+    char dir[4096];
+    if (a->pages) snprintf(a->pages_dir, sizeof a->pages_dir, "%s", a->pages);
+    else if (a->report) snprintf(a->pages_dir, sizeof a->pages_dir, "%.*s-pages", (int)(base - a->report + stem), a->report);
+    else return 0;
+    if (mkdir(a->pages_dir, 0777) && errno != EEXIST) {
+        fprintf(stderr, "pathlab grade: cannot create the folder %s for the pages: %s\n", a->pages_dir, strerror(errno));
+        return 1;
+    }
+    if (!is_dir(a->pages_dir)) { fprintf(stderr, "pathlab grade: --pages %s is not a folder\n", a->pages_dir); return 1; }
+    snprintf(dir, sizeof dir, "%.*s", base > a->report ? (int)(base - a->report) : 1, base > a->report ? a->report : ".");
+    if (!a->report) a->back[0] = '\0';
+    else if (!a->pages) snprintf(a->back, sizeof a->back, "../%s", base);
+    else absolute(a->back, sizeof a->back, dir, base);
+    return 0;
+}
+
+/* The link from the report to a page DIR/FILE: relative when DIR lies under the report's folder,
+ * else absolute. */
+static void page_link(char *out, size_t cap, const grade_args *a, const char *page)
+{
+    const char *slash = a->report ? strrchr(a->report, '/') : NULL;
+    size_t n = slash ? (size_t)(slash - a->report) + 1 : 0;
+    if (n && !strncmp(page, a->report, n)) snprintf(out, cap, "%s", page + n);
+    else if (page[0] == '/' || !a->report || (n == 0 && strncmp(page, "../", 3))) snprintf(out, cap, "%s", page);
+    else absolute(out, cap, page, NULL);
 }
 
 static int parse_args(grade_args *a, int argc, char **argv)
@@ -149,6 +201,7 @@ static int parse_args(grade_args *a, int argc, char **argv)
         {"--layers", CLI_STRING, &a->layers, 0, 0, NULL, NULL, NULL},
         {"--heatmap", CLI_STRING, &a->heatmap, 0, 0, NULL, NULL, NULL},
         {"--report", CLI_STRING, &a->report, 0, 0, NULL, NULL, NULL},
+        {"--pages", CLI_STRING, &a->pages, 0, 0, NULL, NULL, NULL},
         {"--details", CLI_SWITCH, &a->details, 0, 0, NULL, NULL, NULL},
         {"--spp", CLI_INT, &a->o.spp, 1, 1 << 30, NULL, NULL, NULL},
         {"--ref-spp", CLI_INT, &a->o.ref_spp, 1, 1 << 30, NULL, NULL, NULL},
@@ -238,12 +291,12 @@ static void heatmap_path(char *out, size_t cap, const grade_args *a, const char 
 
 /* The likely mistakes of a failing image: printed in full (one image, or --details) and joined into
  * the row. */
-static int diagnose(grade_row *row, const image *img, const reference *R, const grade_args *a, double excess, int loud)
+static int diagnose(grade_row *row, const image *img, const reference *R, const grade_args *a, double excess, int loud,
+                    grade_hypothesis *h, int *nh)
 {
-    grade_hypothesis h[GRADE_MAX_HYP];
-    int n = grade_diagnose(img, &R->refs, &a->o, excess, h, GRADE_MAX_HYP), k;
+    int n = *nh = grade_diagnose(img, &R->refs, &a->o, excess, h, GRADE_MAX_HYP), k;
     size_t used = 0;
-    if (n < 0) { fprintf(stderr, "pathlab grade: out of memory\n"); return 2; }
+    if (n < 0) { fprintf(stderr, "pathlab grade: out of memory\n"); *nh = 0; return 2; }
     if (loud) grade_print_hypotheses(h, n);
     if (n == 0) snprintf(row->mistake, sizeof row->mistake, "none of the catalogue%s", R->refs.nlayers ? "" :
                          " (no layers REF_split_L0.pfm ... beside the reference: the bounce mistakes were not tried)");
@@ -254,12 +307,75 @@ static int diagnose(grade_row *row, const image *img, const reference *R, const 
     return 0;
 }
 
-/* Grades one image into its row: 0 pass, 1 fail, 2 could not be read or graded. */
-static int grade_one(grade_row *row, const reference *R, const grade_args *a, int loud)
+/* The heatmap of one graded image, if asked: 0, or 2 (said). */
+static int write_heatmap(const grade_report *r, const reference *R, const grade_args *a, const char *image_path, int loud)
 {
-    image img, heat;
+    char path[4200];
+    image heat;
+    int err;
+    if (!a->heatmap) return 0;
+    heatmap_path(path, sizeof path, a, image_path);
+    err = grade_heatmap(&heat, r, &R->ref) || img_write(&heat, path, 0.0f);
+    if (!err && loud) printf("heatmap: %s (red: significantly brighter blocks, blue: darker, grey: the reference)\n", path);
+    img_free(&heat);
+    return err ? 2 : 0;
+}
+
+static const char *file_name(const char *path) { return strrchr(path, '/') ? strrchr(path, '/') + 1 : path; }
+
+/* The page of one graded image, PAGES/STEM.html, if there is a pages folder; the row's link to it.
+ * 0, or 2 (said). */
+static int write_page(grade_row *row, const grade_report *r, const image *img, const reference *R, const grade_args *a,
+                      const grade_hypothesis *h, int nh, int loud)
+{
+    const char *base = file_name(row->path);
+    size_t stem, k, n;
+    char path[8400];
+    grade_page p;
+    if (!a->pages_dir[0]) return 0;
+    if (a->same_name && base > row->path) base--;   /* with its folder: ana/render.pfm */
+    while (a->same_name && base > row->path && base[-1] != '/') base--;
+    stem = ends_with(base, ".pfm") ? strlen(base) - 4 : strlen(base);
+    n = (size_t)snprintf(path, sizeof path, "%s/", a->pages_dir);
+    for (k = 0; k < stem && n + 6 < sizeof path; k++)   /* ana/render.pfm, when render.pfm is not alone: ana_render.html */
+        path[n++] = (char)(isalnum((unsigned char)base[k]) || strchr("-.", base[k]) ? base[k] : '_');
+    snprintf(path + n, sizeof path - n, ".html");
+    p.path = path, p.ref_path = a->ref, p.var_path = R->var_path, p.img = img, p.refs = &R->refs, p.r = r, p.row = row;
+    p.h = h, p.nh = nh, p.back = a->back[0] ? a->back : NULL;
+    if (grade_write_page(&p)) return 2;
+    page_link(row->page, sizeof row->page, a, path);
+    if (loud) printf("page: %s\n", path);
+    return 0;
+}
+
+static int by_file_name(const void *a, const void *b)
+{
+    return strcmp(file_name(**(const char *const *const *)a), file_name(**(const char *const *const *)b));
+}
+
+/* same[k] = 1 when another image has images[k]'s file name (students/NAME/render.pfm): their pages
+ * are then named by their paths. 0, or 1 when out of memory. */
+static int mark_same_names(const char **images, int n, unsigned char *same)
+{
+    const char ***order = malloc((size_t)n * sizeof *order);
+    int k;
+    if (!order) return 1;
+    for (k = 0; k < n; k++) order[k] = &images[k];
+    qsort(order, (size_t)n, sizeof *order, by_file_name);
+    for (k = 0; k + 1 < n; k++)
+        if (!strcmp(file_name(*order[k]), file_name(*order[k + 1]))) same[order[k] - images] = same[order[k + 1] - images] = 1;
+    free(order);
+    return 0;
+}
+
+/* Grades one image into its row: 0 pass, 1 fail, 2 could not be read or graded. keep (or NULL)
+ * receives the graded image, for the class's page. */
+static int grade_one(grade_row *row, const reference *R, const grade_args *a, int loud, image *keep)
+{
+    grade_hypothesis h[GRADE_MAX_HYP];
+    image img;
     grade_report r;
-    int rc;
+    int rc, nh = 0;
     memset(row, 0, sizeof *row);
     row->path = a->images[0];
     rc = grade_read_image(&img, row, &R->refs, a->ref);
@@ -273,15 +389,10 @@ static int grade_one(grade_row *row, const reference *R, const grade_args *a, in
     if (loud) grade_print_report(&r, row->path, a->ref, &a->o);
     grade_fill_row(row, &r);
     row->status = grade_failed(&r);
-    if (row->status == 1 && diagnose(row, &img, R, a, grade_excess(&r), loud)) row->status = 2;
-    if (a->heatmap) {
-        char path[4200];
-        heatmap_path(path, sizeof path, a, row->path);
-        if (grade_heatmap(&heat, &r, &R->ref) || img_write(&heat, path, 0.0f)) row->status = 2;
-        else if (loud) printf("heatmap: %s (red: significantly brighter blocks, blue: darker, grey: the reference)\n", path);
-        img_free(&heat);
-    }
+    if (row->status == 1 && diagnose(row, &img, R, a, grade_excess(&r), loud, h, &nh)) row->status = 2;
+    if (write_heatmap(&r, R, a, row->path, loud) || write_page(row, &r, &img, R, a, h, nh, loud)) row->status = 2;
     grade_free(&r);
+    if (keep && row->status < 2) { *keep = img; img.px = NULL; }
     img_free(&img);
     return row->status;
 }
@@ -303,27 +414,37 @@ int grade_main(int argc, char **argv)
     grade_args a;
     reference R;
     grade_row *rows;
+    image *kept = NULL;    /* the graded images, kept for the class's page (--report X.html) */
+    unsigned char *same = NULL;
     int k, rc = 0, loud;
     memset(&a, 0, sizeof a);
     memset(&R, 0, sizeof R);
     if (parse_args(&a, argc, argv)) { free_args(&a); return 2; }
     rows = calloc((size_t)a.nimages + 1, sizeof *rows);
-    if (!rows || read_reference(&R, &a)) { free_reference(&R); free_args(&a); free(rows); return 2; }
+    if (a.report && ends_with(a.report, ".html") && !(kept = calloc((size_t)a.nimages, sizeof *kept))) rc = 2;
+    if (!(same = calloc((size_t)a.nimages, 1)) || mark_same_names(a.images, a.nimages, same)) rc = 2;
+    if (rc || !rows || read_reference(&R, &a) || setup_pages(&a)) {
+        free_reference(&R); free_args(&a); free(rows); free(kept); free(same);
+        return 2;
+    }
     loud = a.nimages == 1 || a.details;
     if (R.has_meta) print_provenance(&R.meta, a.ref);
     if (R.has_meta) a.o.ref_var_dof = R.meta.variance_dof;   /* a sobol reference's variance: 3 dof */
     if (!loud) grade_print_class_header(&a.o, a.ref, a.nimages, &R.refs, R.var_path, R.layer_prefix);
     for (k = 0; k < a.nimages; k++) {
         grade_args one = a;
-        one.images = a.images + k;
+        one.images = a.images + k, one.same_name = same[k];
         if (loud && k) printf("\n");
-        grade_one(&rows[k], &R, &one, loud);
+        grade_one(&rows[k], &R, &one, loud, kept ? &kept[k] : NULL);
         rows[k].path = a.images[k];
         if (!loud || a.nimages > 1) grade_print_row(&rows[k]);
         if (rows[k].status > rc) rc = rows[k].status;
     }
     if (a.nimages > 1) grade_print_summary(rows, a.nimages, &a.o);
-    if (a.report && grade_write_report(a.report, rows, a.nimages, &a.o, a.ref)) rc = 2;
+    if (a.report && grade_write_report(a.report, rows, a.nimages, &a.o, a.ref, &R.refs, kept)) rc = 2;
+    for (k = 0; kept && k < a.nimages; k++) img_free(&kept[k]);
+    free(kept);
+    free(same);
     free_reference(&R);
     free_args(&a);
     free(rows);

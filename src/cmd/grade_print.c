@@ -316,3 +316,12 @@ void grade_print_row(const grade_row *row)
     if (row->where[0]) printf(" (%s)", row->where);
     printf("%s%s\n", row->mistake[0] ? "; likely: " : "", row->mistake);
 }
+
+void grade_bias_text(char *out, size_t cap, const grade_row *r)
+{
+    out[0] = '\0';
+    if (r->status == 2 || !r->channel[0]) return;
+    if (r->bias_se == -2.0) snprintf(out, cap, "%+.2f%% (where significant)", 100 * r->bias);
+    else if (r->bias_se < 0.0) snprintf(out, cap, "%+.2f%% (plain mean)", 100 * r->bias);
+    else snprintf(out, cap, "%+.2f%% +- %.2f%% (%s)", 100 * r->bias, 100 * r->bias_se, r->channel);
+}

@@ -2,6 +2,7 @@
  * summary (a row) that the class report and the class's lines share. */
 #ifndef PATHLAB_GRADE_PRINT_H
 #define PATHLAB_GRADE_PRINT_H
+#include <stddef.h>
 #include "cmd/grade.h"
 #include "cmd/grade_diagnose.h"
 
@@ -16,6 +17,7 @@ typedef struct {
     char channel[8];         /* that channel's name, "mean", "groups", or "" for no figure */
     char where[160];         /* where the significant groups are; "" if none */
     char mistake[1024];      /* the likely mistakes, "; " between them; the input error for status 2 */
+    char page[12800];        /* its page (grade_page.h) as the class report links it; "" if none */
 } grade_row;
 
 /* The tests that ran, their levels and counts, then the verdict with where and how much. */
@@ -24,6 +26,9 @@ void grade_print_report(const grade_report *r, const char *image, const char *re
 void grade_print_hypotheses(const grade_hypothesis *h, int n);
 /* Fills the row's bias and where from a report. */
 void grade_fill_row(grade_row *row, const grade_report *r);
+/* The row's bias as the report writes it: "+1.20% +- 0.30% (green)", "-5.00% (plain mean)",
+ * "+2.00% (where significant)", or "" when there is none. */
+void grade_bias_text(char *out, size_t cap, const grade_row *row);
 /* "A.pfm: FAIL, darker -54.4% +- 0.6% in green (the top-centre); likely: no L0 ..." */
 void grade_print_row(const grade_row *row);
 #endif

@@ -32,5 +32,6 @@ int main(int argc, char **argv)
 {
     int i, err = 0;
     for (i = 1; i < argc; i++) err |= replay(argv[i]);
+    printf("replayed %d inputs\n", argc - 1);   /* tests/test_fuzz_seeds.sh checks that all ran */
     return err;
 }

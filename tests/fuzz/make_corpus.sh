@@ -39,6 +39,7 @@ printf 'c -0.01 0.995 -0.025\np 0.149664 -0.266665\nr 18 16\ns 2.450631 3.48732\
 printf 'c 0 0 0\np 0 0\nr 0 0\ns 5\n' > "$C/orbiter/old-no-f"
 printf '# a comment\n\nf 60 32 16\ns 2 3\n  r 90 0\np 0 0\nc 1 2 3\n' > "$C/orbiter/any-order"
 printf 'c 0 0 0\np 0 x\nr 0 0\ns 5 5\n' > "$C/orbiter/bad-number"
+{ printf 'c 0 0 0\np 0 0\nr 0 0\ns 5 5\n#'; printf '%01022d' 0; printf 'c 9 9 9\n'; } > "$C/orbiter/long-comment"
 # PFMs: colour and grey, both byte orders, a few pixels; a truncated one; a lying size
 pfm() {   # HEADER-MAGIC W H SCALE PIXEL-BYTES
     printf '%s\n%s %s\n%s\n' "$1" "$2" "$3" "$4"; printf "$5"

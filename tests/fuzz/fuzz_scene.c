@@ -7,7 +7,11 @@
  * "mtllib m.mtl"); the view part, if there is one, is scene.view. The view file is read whether or
  * not the scene loads, then a 4x4 image is rendered at 1 spp with at most 8 bounces: a bounded
  * render, so that a material whose roulette never stops (Kd >= 1) cannot hide other findings as a
- * timeout. The last byte of the input picks the light, direction, direct and sampler strategies. */
+ * timeout. The last byte of the input picks the light, direction, direct and sampler strategies.
+ * The image must be finite: render drops (and counts) the samples that are not, and at 1 spp a
+ * pixel's mean is one sample. */
+#include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include "fuzz_common.h"
 #include "scene/camera.h"
@@ -45,12 +49,16 @@ static void render_tiny(const scene *sc, view *vw, uint8_t pick)
     camera cam;
     render_opts o;
     render_result r;
+    int i;
     mesh_bounds(&sc->m, &lo, &hi);
     view_frame_bounds(vw, lo, hi);
     vw->width = vw->height = 4;
     if (camera_init(&cam, vw)) return;
     options(&o, pick);
-    if (render(sc, &cam, &o, &r) == 0) render_result_free(&r);
+    if (render(sc, &cam, &o, &r) != 0) return;
+    for (i = 0; i < 4 * 4 * 3; i++)
+        if (!isfinite(r.mean[0].px[i])) abort();
+    render_result_free(&r);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)

@@ -39,6 +39,9 @@ printf 'c -0.01 0.995 -0.025\np 0.149664 -0.266665\nr 18 16\ns 2.450631 3.48732\
 printf 'c 0 0 0\np 0 0\nr 0 0\ns 5\n' > "$C/orbiter/old-no-f"
 printf '# a comment\n\nf 60 32 16\ns 2 3\n  r 90 0\np 0 0\nc 1 2 3\n' > "$C/orbiter/any-order"
 printf 'c 0 0 0\np 0 x\nr 0 0\ns 5 5\n' > "$C/orbiter/bad-number"
+# the limits (libFuzzer's integer mutations square or double a number: from here one step goes past them)
+printf 'c -1e30 1e30 0\np 1e30 -1e30\nr 360 -360\ns 1e30 1e-30\nf 179.999 65536 65536\n' > "$C/orbiter/limits"
+printf 'size 65536 16384\nfov 179.999\neye 1e38 -1e38 0\n' > "$C/view/limits.view"
 { printf 'c 0 0 0\np 0 0\nr 0 0\ns 5 5\n#'; printf '%01022d' 0; printf 'c 9 9 9\n'; } > "$C/orbiter/long-comment"
 # PFMs: colour and grey, both byte orders, a few pixels; a truncated one; a lying size
 pfm() {   # HEADER-MAGIC W H SCALE PIXEL-BYTES

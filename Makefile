@@ -1,14 +1,29 @@
 # pathlab — `make` builds ./pathlab, `make run` renders the Cornell box, `make test` runs every test.
-# `make test SAN=1` builds and tests with AddressSanitizer and UndefinedBehaviorSanitizer.
+# `make test SAN=1` builds and tests with AddressSanitizer and UndefinedBehaviorSanitizer;
+# `make test SAN=clang` the same with clang, whose UBSan also checks float-cast-overflow (gcc's does
+# not); `make fuzz` runs the libFuzzer harnesses of tests/fuzz/ (docs/fuzzing.md).
 CC ?= cc
 WARN = -std=c99 -Wall -Wextra -pedantic -Wdeclaration-after-statement
 DEFS = -D_POSIX_C_SOURCE=200809L
-# Three builds, each in its own folder: the default (portable: runs on any x86-64 or other machine
-# the compiler targets, asserts on), SAN=1 (sanitizers) and NATIVE=1 (-march=native, asserts off:
-# only for `make bench`, whose binary must not be copied to another machine).
+# The builds, each in its own folder: the default (portable: runs on any x86-64 or other machine
+# the compiler targets, asserts on), SAN=1 (sanitizers), SAN=clang (the same with clang, plus
+# float-cast-overflow), FUZZ=1 (clang, sanitizers and libFuzzer's coverage: `make fuzz` sets it) and
+# NATIVE=1 (-march=native, asserts off: only for `make bench`, whose binary must not be copied to
+# another machine).
+SANITIZE = -O1 -g -fno-omit-frame-pointer -fno-sanitize-recover=all -fsanitize=address,undefined
 ifeq ($(SAN),1)
   BUILD = build-san
-  OPT = -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all
+  OPT = $(SANITIZE)
+  PROG = $(BUILD)/pathlab
+else ifeq ($(SAN),clang)
+  CC = clang
+  BUILD = build-clang-san
+  OPT = $(SANITIZE),float-cast-overflow
+  PROG = $(BUILD)/pathlab
+else ifeq ($(FUZZ),1)
+  CC = clang
+  BUILD = build-fuzz
+  OPT = $(SANITIZE),float-cast-overflow,fuzzer-no-link
   PROG = $(BUILD)/pathlab
 else ifeq ($(NATIVE),1)
   BUILD = build-native
@@ -81,10 +96,24 @@ test-deps:
 	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
 	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq parallel >/dev/null; }
 
-TOOLS = $(BUILD)/tests/zcheck $(BUILD)/tests/pfmtool $(BUILD)/bench-plot
+# The fuzz harnesses (tests/fuzz/fuzz_TARGET.c): with FUZZ=1 linked to libFuzzer, in any build also
+# to tests/fuzz/replay.c, a main() that runs them on files (tests/test_fuzz_seeds.sh replays the seeds).
+FUZZ_TARGETS = scene mtl view orbiter pfm
+FUZZ_COMMON = tests/fuzz/fuzz_common.c
+FUZZ_DEPS = $(FUZZ_COMMON) tests/fuzz/fuzz_common.h $(wildcard src/*/*.h) $(LIB_OBJ)
+$(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(FUZZ_DEPS)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -fsanitize=fuzzer -Itests/fuzz -o $@ $< $(FUZZ_COMMON) $(LIB_OBJ) $(LDLIBS)
+
+$(BUILD)/fuzz/replay_%: tests/fuzz/fuzz_%.c tests/fuzz/replay.c $(FUZZ_DEPS)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -Itests/fuzz -o $@ $< tests/fuzz/replay.c $(FUZZ_COMMON) $(LIB_OBJ) $(LDLIBS)
+
+FUZZ_REPLAY = $(FUZZ_TARGETS:%=$(BUILD)/fuzz/replay_%)
+TOOLS = $(FUZZ_REPLAY) $(BUILD)/tests/zcheck $(BUILD)/tests/pfmtool $(BUILD)/bench-plot
 
 test: $(PROG) $(TEST_BIN) $(TOOLS) test-deps
-	BUILD=$(BUILD) PATHLAB=./$(PROG) PATHLAB_FAST=$(SAN) tests/run.sh
+	BUILD=$(BUILD) PATHLAB=./$(PROG) PATHLAB_FAST=$(if $(SAN),1) tests/run.sh
 
 # The numerical stress suite (tests/stress/run.sh): scaled and moved scenes, slivers, z-fighting,
 # sharp lobes, tiny and grazing lights, rays along edges, acne; about 2 minutes on 2 cores.
@@ -158,12 +187,25 @@ test-slurm: $(PROG)
 $(BUILD)/bench-plot: bench/plot.c $(LIB_OBJ)
 	$(CC) $(CFLAGS) $(DEPFLAGS) -o $@ bench/plot.c $(LIB_OBJ) $(LDLIBS)
 
+# Coverage-guided fuzzing (docs/fuzzing.md): each harness of tests/fuzz/ built with clang, libFuzzer,
+# ASan and UBSan (float-cast-overflow included), run FUZZ_SECONDS (default 60) from its seed corpus
+# tests/fuzz/corpus/TARGET/ (copied: the tree is not changed); fails on any crash, leak, timeout or
+# out-of-memory and names the reproducer. FUZZ_TARGETS="view pfm" runs some; FUZZ_ARGS passes more
+# flags to libFuzzer. Installs clang if missing.
+FUZZ_SECONDS ?= 60
+fuzz:
+	@command -v clang >/dev/null 2>&1 || { echo "installing clang for make fuzz"; \
+	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
+	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq clang >/dev/null; }
+	$(MAKE) FUZZ=1 $(FUZZ_TARGETS:%=build-fuzz/fuzz/fuzz_%)
+	FUZZ_SECONDS=$(FUZZ_SECONDS) FUZZ_ARGS="$(FUZZ_ARGS)" tests/fuzz/run.sh build-fuzz $(FUZZ_TARGETS)
+
 # Mutation testing (tests/mutants/run.sh): classic bugs put into a copy of src/, each must make
 # one fast test fail; about 2 minutes on 2 cores.
 mutants:
 	tests/mutants/run.sh
 
 clean:
-	rm -rf build build-san build-native pathlab
+	rm -rf build build-san build-clang-san build-fuzz build-native pathlab
 
-.PHONY: all run test test-deps stress refs bench bench-native bench-portable bench-cycles bench-cycles-deps grade-calibration clean mutants test-parallel test-slurm
+.PHONY: all run test test-deps fuzz stress refs bench bench-native bench-portable bench-cycles bench-cycles-deps grade-calibration clean mutants test-parallel test-slurm

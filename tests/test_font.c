@@ -18,17 +18,17 @@ int main(void)
     const float white[3] = {1.0f, 1.0f, 1.0f};
     image im;
     d = font_table_check();
-    check(d == 0, "font: every glyph row is 5 characters of '.' and '#'", d ? "first bad glyph: code %d" : "", d);
+    check(d == 0, "font: every glyph row is 5 characters of '.' and '#'", d ? "first bad glyph: code %d" : NULL, d);
     for (c = 32; c <= 126; c++) {
         glyph_bits(c, g[c - 32]);
         for (ink = 0, d = 0; d < FONT_W * FONT_H; d++) ink += g[c - 32][d];
         if ((c == ' ') != (ink == 0) && blank < 0) blank = c;
     }
-    check(blank < 0, "font: space is blank and each of the 94 other printable characters has ink", blank >= 0 ? "first wrong: code %d" : "", blank);
+    check(blank < 0, "font: space is blank and each of the 94 other printable characters has ink", blank >= 0 ? "first wrong: code %d" : NULL, blank);
     for (c = 0; c < 95; c++)
         for (d = c + 1; d < 95; d++)
             if (!memcmp(g[c], g[d], sizeof g[c]) && dup_a < 0) { dup_a = c + 32; dup_b = d + 32; }
-    check(dup_a < 0, "font: the 95 printable glyphs are pairwise different", dup_a >= 0 ? "'%c' and '%c' are the same" : "", dup_a, dup_b);
+    check(dup_a < 0, "font: the 95 printable glyphs are pairwise different", dup_a >= 0 ? "'%c' and '%c' are the same" : NULL, dup_a, dup_b);
     for (y = 7; y < FONT_H; y++)
         for (x = 0; x < FONT_W; x++) below += font_pixel('g', x, y) + font_pixel('y', x, y) - font_pixel('a', x, y);
     check(below > 0, "font: g and y descend below the baseline, a does not", "%d", below);

@@ -28,7 +28,7 @@ allowed() {
 SRC=${LAYOUT_SRC:-src}   # another tree to check (tests/test_layout.sh's own negative checks use it)
 # the tests' and benchmarks' C files follow the same dialect (the compiler's
 # -Wdeclaration-after-statement sees the rest of it: declarations after statements)
-C_ELSEWHERE=""; [ -z "${LAYOUT_SRC:-}" ] && C_ELSEWHERE="tests/*.c bench/*.c"
+C_ELSEWHERE=""; [ -z "${LAYOUT_SRC:-}" ] && C_ELSEWHERE="tests/*.c tests/fuzz/*.c bench/*.c"
 
 stray=$(find "$SRC" -type f \( -name '*.c' -o -name '*.h' \) | while read -r f; do
     d=${f#"$SRC"/}; d=${d%%/*}

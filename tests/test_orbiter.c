@@ -12,8 +12,8 @@
 static char errbuf[4096];   /* what the last read printed on stderr */
 static char path[64];       /* the temporary file of write_file */
 
-/* Writes text into a new temporary file, its name in path. */
-static void write_file(const char *text)
+/* Writes n bytes of text (NUL bytes included) into a new temporary file, its name in path. */
+static void write_bytes(const char *text, size_t n)
 {
     int fd;
     FILE *f;
@@ -21,9 +21,11 @@ static void write_file(const char *text)
     fd = mkstemp(path);
     f = fd >= 0 ? fdopen(fd, "w") : NULL;
     if (!f) { perror("test_orbiter: temporary file"); exit(1); }
-    fputs(text, f);
+    fwrite(text, 1, n, f);
     fclose(f);
 }
+
+static void write_file(const char *text) { write_bytes(text, strlen(text)); }
 
 /* orbiter_read of file, stderr captured into errbuf (on one line). */
 static int read_path(const char *file, orbiter *o)
@@ -148,6 +150,31 @@ static void test_errors(void)
           "orbiter_read: a missing file is an error", "%s", errbuf);
 }
 
+/* Found by fuzzing and by hand (issue 13): lines of any length are read whole (a long comment's tail
+ * was read as a new line), a NUL byte is an error (the rest of its line was ignored), and numbers
+ * too large for the float camera are refused with their line (they made an infinite eye). */
+static void test_hostile(void)
+{
+    static const char nul[] = "c 0 0 0\np 0 0\0p 1 1\nr 0 0\ns 5 5\n";
+    orbiter o;
+    char text[2200];
+    int rc;
+    snprintf(text, sizeof text, "c 0 0 0\np 0 0\nr 0 0\ns 5 5\n#%01022dc 9 9 9\n", 0);
+    rc = read_text(text, &o);
+    check(rc == 0 && o.c[0] == 0.0, "orbiter_read: a 1030-character comment is one line (its tail 'c 9 9 9' is no c line)",
+          "rc %d: %s", rc, errbuf);
+    snprintf(text, sizeof text, "c 0 0 0%01100d\np 0 0\nr 0 0\ns 5 5\n", 0);
+    expect_refused(text, 1, "a line over 1023 characters", "orbiter_read: a line over 1023 characters outside a comment");
+    snprintf(text, sizeof text, "c 0 0 0\np 0 0%01100d\nr 0 0\ns 5 5\n", 1);
+    expect_refused(text, 2, "a line over 1023", "orbiter_read: a long line is refused with its own line number");
+    write_bytes(nul, sizeof nul - 1);
+    rc = read_path(path, &o);
+    remove(path);
+    check(rc == 1 && strstr(errbuf, ":2: a NUL byte"), "orbiter_read: a NUL byte is an error naming its line", "rc %d: %s", rc, errbuf);
+    expect_refused("c 1e300 0 0\np 0 0\nr 0 0\ns 5 5\n", 1, "a number beyond 1e+30", "orbiter_read: a centre beyond float range");
+    expect_refused("c 0 0 0\np 0 0\nr 0 0\ns 2e38 5\n", 4, "a number beyond 1e+30", "orbiter_read: a distance beyond 1e30");
+}
+
 /* view_print then view_read: the same floats, bit for bit (%.9g), whatever the values. */
 static void test_view_round_trip(void)
 {
@@ -177,6 +204,7 @@ int main(void)
     test_check_values();
     test_gkit_forms();
     test_errors();
+    test_hostile();
     test_view_round_trip();
     return check_summary();
 }

@@ -10,7 +10,12 @@
 static const char *const KEY_FORM[] = {"c cx cy cz (the centre)", "p px py (the pan)", "r rx ry (the rotation, degrees)",
                                        "s size radius (the distance, > 0, and the scene radius)", "f fov width height (vertical fov in degrees, under 180; whole pixels)"};
 
-/* Up to max numbers from s into out; how many, or -1 if something that is not a number follows. */
+/* The largest size of a number: the camera is made of floats (FLT_MAX is about 3.4e38), and the
+ * eye, c + M (px, py, size), adds up to three of them. */
+#define ORBITER_MAX_NUMBER 1e30
+
+/* Up to max numbers from s into out; how many, -1 if something that is not a number follows, -2 if
+ * a number is beyond ORBITER_MAX_NUMBER in size. */
 static int read_numbers(const char *s, double *out, int max)
 {
     int n = 0;
@@ -21,6 +26,7 @@ static int read_numbers(const char *s, double *out, int max)
         if (n == max) return -1;
         out[n] = strtod(s, &end);
         if (end == s || !isfinite(out[n])) return -1;
+        if (fabs(out[n]) > ORBITER_MAX_NUMBER) return -2;
         n++;
         s = end;
     }
@@ -63,7 +69,8 @@ static int parse_line(orbiter *o, char *line, const char *path, int lineno, int 
     for (key = line; *key == ' ' || *key == '\t'; key++) continue;
     if (!*key) return 0;
     if (!strchr(ORBITER_KEYS, *key) || (key[1] != ' ' && key[1] != '\t' && key[1] != '\0')) {
-        fprintf(stderr, "%s:%d: '%s' is not a line of a gKit orbiter file (expected c, p, r, s or f lines)\n", path, lineno, key);
+        fprintf(stderr, "%s:%d: '%.80s%s' is not a line of a gKit orbiter file (expected c, p, r, s or f lines)\n", path,
+                lineno, key, strlen(key) > 80 ? "..." : "");
         return 1;
     }
     k = (int)(strchr(ORBITER_KEYS, *key) - ORBITER_KEYS);
@@ -73,23 +80,49 @@ static int parse_line(orbiter *o, char *line, const char *path, int lineno, int 
     }
     seen[k] = lineno;
     n = read_numbers(key + 1, v, 4);
+    if (n == -2) {
+        fprintf(stderr, "%s:%d: a number beyond %g in size in '%.80s%s': pathlab's camera is made of floats\n", path,
+                lineno, ORBITER_MAX_NUMBER, key, strlen(key) > 80 ? "..." : "");
+        return 1;
+    }
     if (n < 0 || store_key(o, k, v, n)) {
-        fprintf(stderr, "%s:%d: expected '%s', got '%s'\n", path, lineno, KEY_FORM[k], key);
+        fprintf(stderr, "%s:%d: expected '%s', got '%.80s%s'\n", path, lineno, KEY_FORM[k], key, strlen(key) > 80 ? "..." : "");
         return 1;
     }
     return 0;
 }
 
+/* The next line of fp into line (cap bytes, the '\n' dropped). Lines of any length are read whole,
+ * not in pieces that would each count as a line: past cap - 1 characters, a line may only go on
+ * inside a comment, whose tail is skipped. Returns 1 with a line, 0 at the end of the file, -1 for
+ * a line too long outside a comment, -2 for a NUL byte (a binary file, or text cut short). */
+static int next_line(FILE *fp, char *line, size_t cap)
+{
+    size_t n = 0;
+    int c;
+    while ((c = getc(fp)) != EOF && c != '\n') {
+        if (c == '\0') return -2;
+        if (n + 1 < cap) line[n++] = (char)c;
+        else if (!memchr(line, '#', n)) return -1;
+    }
+    line[n] = '\0';
+    return c != EOF || n > 0;
+}
+
 int orbiter_read(orbiter *o, const char *path)
 {
     char line[1024];
-    int seen[5] = {0, 0, 0, 0, 0}, lineno = 0, k, err = 0;
+    int seen[5] = {0, 0, 0, 0, 0}, lineno = 0, k, err = 0, got;
     FILE *fp = fopen(path, "r");
     memset(o, 0, sizeof *o);
     if (!fp) { fprintf(stderr, "%s: cannot open the orbiter file: %s\n", path, strerror(errno)); return 1; }
-    while (!err && fgets(line, sizeof line, fp)) {
+    while (!err && (got = next_line(fp, line, sizeof line)) != 0) {
         lineno++;
-        err = parse_line(o, line, path, lineno, seen);
+        if (got == -1)
+            fprintf(stderr, "%s:%d: a line over %d characters (only a comment may be that long)\n", path, lineno,
+                    (int)sizeof line - 1);
+        else if (got == -2) fprintf(stderr, "%s:%d: a NUL byte: not a text file\n", path, lineno);
+        err = got < 0 || parse_line(o, line, path, lineno, seen);
     }
     fclose(fp);
     for (k = 0; k < 4 && !err; k++)

@@ -2,6 +2,8 @@
  * and turned into a pathlab view. One line per key, in any order, '#' starts a comment:
  *   c cx cy cz (centre)  p px py (pan)  r rx ry (rotation, degrees)  s size [radius]
  *   f fov width height   (full vertical fov in degrees, pixels; older gKit files have no f line)
+ * Lines are read whole whatever their length, but only a comment may pass 1023 characters; a NUL
+ * byte, or a number beyond 1e30 in size (the camera is made of floats), is an error with its line.
  * gKit's view is T(-px,-py,-size) Rx(rx) Ry(ry) T(-c): the camera sits at c + M (px, py, size),
  * M = Ry(-ry) Rx(-rx), and looks down M's -z with M's +y up. docs/grading.md says what matches gKit. */
 #ifndef PATHLAB_ORBITER_H

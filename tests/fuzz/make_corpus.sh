@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# tests/fuzz/make_corpus.sh — (re)writes the seed corpus tests/fuzz/corpus/TARGET/ (committed; run
+# it again after adding scenes): small valid and invalid inputs of each reader, from scenes/,
+# tests/obj/ and, when present, ../shared/data/hostile/ (the inputs the first fuzzing found).
+# The scene target's inputs are "OBJ @@MTL@@ MTL @@VIEW@@ view" (tests/fuzz/fuzz_scene.c).
+set -eu
+cd "$(dirname "$0")/../.."
+C=tests/fuzz/corpus
+H=../shared/data/hostile
+rm -rf "$C"; mkdir -p "$C"/scene "$C"/mtl "$C"/view "$C"/orbiter "$C"/pfm
+combine() {   # OBJ MTL VIEW: the three as one input, the OBJ's mtllib renamed m.mtl
+    sed 's/^mtllib .*/mtllib m.mtl/' "$1"
+    if [ -n "$2" ]; then printf '\n@@MTL@@\n'; cat "$2"; fi
+    if [ -n "$3" ]; then printf '\n@@VIEW@@\n'; cat "$3"; fi
+}
+for s in cornell cornell-glossy furnace mis-plates quad-light; do   # sphere-furnace: 180 kB, too big
+    combine scenes/$s.obj scenes/$s.mtl scenes/$s.view > "$C/scene/$s"
+    cp scenes/$s.mtl "$C/mtl/$s.mtl"; cp scenes/$s.view "$C/view/$s.view"
+done
+for o in tests/obj/*.obj; do   # the parser's edge cases, with their MTL if they name one
+    lib=$(sed -n 's/^mtllib \([^ ]*\).*/\1/p' "$o" | head -n 1)
+    m=""; [ -n "$lib" ] && [ -f "tests/obj/$lib" ] && m=tests/obj/$lib
+    [ "$(wc -c < "$o")" -le 8192 ] && combine "$o" "$m" "" > "$C/scene/obj-$(basename "$o" .obj)"
+done
+for m in tests/obj/*.mtl; do cp "$m" "$C/mtl/obj-$(basename "$m")"; done
+if [ -d "$H" ]; then
+    cp "$H"/fuzz-crash-view-size.bin "$H"/fuzz-timeout-kd15.bin "$C/scene/"
+    combine "$H"/hang_kd1/furnace.obj "$H"/hang_kd1/furnace.mtl "$H"/hang_kd1/furnace.view > "$C/scene/hostile-hang-kd1"
+    combine "$H"/view_longline/quad-light.obj "$H"/view_longline/quad-light.mtl "$H"/view_longline/quad-light.view > "$C/scene/hostile-longline"
+    cp "$H"/ubsan_view_size/min.view "$C/view/hostile-size.view"
+    cp "$H"/view_longline/quad-light.view "$C/view/hostile-longline.view"
+    cp "$H"/view_longline/rejected.view "$C/view/hostile-rejected.view"
+fi
+printf 'eye 0 0 5\ntarget 0 0 0\nup 0 1 0\nfov 45\nsize 8 6\n' > "$C/view/all-keys.view"
+printf '# comment\n\n  eye 1e-3 -2 3.5 # tail\r\nsize 1 1\n' > "$C/view/comments.view"
+# gKit orbiter files: as gKit writes them, an old one without f, comments and odd spacing, an error
+printf 'c 278.000000 273.000000 280.000000\np 0.000000 0.000000\nr 0.000000 180.000000\ns 1080.000000 800.000000\nf 39.3076481 48.000000 32.000000\n' > "$C/orbiter/cornell"
+printf 'c -0.01 0.995 -0.025\np 0.149664 -0.266665\nr 18 16\ns 2.450631 3.48732\nf 45 1024 640\n' > "$C/orbiter/issue"
+printf 'c 0 0 0\np 0 0\nr 0 0\ns 5\n' > "$C/orbiter/old-no-f"
+printf '# a comment\n\nf 60 32 16\ns 2 3\n  r 90 0\np 0 0\nc 1 2 3\n' > "$C/orbiter/any-order"
+printf 'c 0 0 0\np 0 x\nr 0 0\ns 5 5\n' > "$C/orbiter/bad-number"
+# the limits (libFuzzer's integer mutations square or double a number: from here one step goes past them)
+printf 'c -1e30 1e30 0\np 1e30 -1e30\nr 360 -360\ns 1e30 1e-30\nf 179.999 65536 65536\n' > "$C/orbiter/limits"
+printf 'size 65536 16384\nfov 179.999\neye 1e38 -1e38 0\n' > "$C/view/limits.view"
+{ printf 'c 0 0 0\np 0 0\nr 0 0\ns 5 5\n#'; printf '%01022d' 0; printf 'c 9 9 9\n'; } > "$C/orbiter/long-comment"
+# PFMs: colour and grey, both byte orders, a few pixels; a truncated one; a lying size
+pfm() {   # HEADER-MAGIC W H SCALE PIXEL-BYTES
+    printf '%s\n%s %s\n%s\n' "$1" "$2" "$3" "$4"; printf "$5"
+}
+pfm PF 2 1 -1.0 '\x00\x00\x80\x3f\x00\x00\x00\x3f\x00\x00\x00\x00\x00\x00\x80\x3f\x00\x00\x80\x3f\x00\x00\x80\x3f' > "$C/pfm/rgb-le.pfm"
+pfm PF 1 1 1.0 '\x3f\x80\x00\x00\x3f\x00\x00\x00\x00\x00\x00\x00' > "$C/pfm/rgb-be.pfm"
+pfm Pf 2 2 -1.0 '\x00\x00\x80\x3f\x00\x00\x00\x3f\x00\x00\x00\x00\x00\x00\x20\x41' > "$C/pfm/grey-le.pfm"
+pfm PF 2 2 -1.0 '\x00\x00\x80\x3f' > "$C/pfm/truncated.pfm"
+pfm PF 2147483647 2147483647 -1.0 '' > "$C/pfm/huge-size.pfm"
+pfm PF 1 1 -1.0 '\x00\x00\xc0\x7f\x00\x00\x80\x7f\x00\x00\x80\xff' > "$C/pfm/nan-inf.pfm"
+for t in scene mtl view orbiter pfm; do echo "$t: $(ls "$C/$t" | wc -l) seeds, $(cat "$C/$t"/* | wc -c) bytes"; done

@@ -95,7 +95,7 @@ static int parse(objtext *t, mesh *m)
 int mtl_load(const char *path, mesh *m, int quiet)
 {
     objtext t;
-    int err = objtext_open(&t, path, quiet), ok;
+    int err = objtext_open_bounded(&t, path, quiet, MTL_FILE_MAX), ok;
     if (err) return err;
     ok = objtext_check(&t) && parse(&t, m);
     objtext_close(&t);

@@ -29,6 +29,7 @@ typedef struct {
     size_t capface;
     corner *poly;              /* scratch of the ear clipper */
     size_t cappoly;
+    long long ear_work;        /* corners tested by is_ear in this file, bounded by OBJ_EAR_WORK_MAX */
     char *dir_real;            /* the OBJ's folder, resolved (realpath), once an mtllib needs it */
 } loader;
 
@@ -97,7 +98,7 @@ static int straight(const corner *p, const corner *c, const corner *n)
  * not block. A zero-area corner is cut (the triangle is dropped) if it is a repeated point or a
  * spike; a straight one stays until it is a corner of some triangle: cutting it would leave a
  * T-junction, where rays may slip through a crack between triangles. */
-static int is_ear(const corner *poly, int p, int c, int n, double sign)
+static int is_ear(const corner *poly, int p, int c, int n, double sign, long long *work)
 {
     double area = sign * orient(&poly[p], &poly[c], &poly[n]);
     int v;
@@ -105,6 +106,7 @@ static int is_ear(const corner *poly, int p, int c, int n, double sign)
     if (area == 0) return !straight(&poly[p], &poly[c], &poly[n]);
     for (v = poly[n].next; v != p; v = poly[v].next) {
         const corner *q = &poly[v];
+        ++*work;
         if (same_point(q, &poly[p]) || same_point(q, &poly[c]) || same_point(q, &poly[n])) continue;
         if (sign * orient(&poly[p], &poly[c], q) >= 0 && sign * orient(&poly[c], &poly[n], q) >= 0
             && sign * orient(&poly[n], &poly[p], q) >= 0)
@@ -112,6 +114,10 @@ static int is_ear(const corner *poly, int p, int c, int n, double sign)
     }
     return 1;
 }
+
+/* The ear tests of a file are bounded: a face of OBJ_FACE_MAX corners takes about 8e6 steps if
+ * convex, but the search can be cubic in the corners on a self-crossing one. 2e9 steps: seconds. */
+#define OBJ_EAR_WORK_MAX 2000000000LL
 
 /* Cuts ears off polygon L->face[0..n) until one triangle is left; each triangle keeps the
  * polygon's order of corners, hence its winding. Each ear test costs O(n), and ears are usually
@@ -123,7 +129,7 @@ static int clip_ears(loader *L, int n, double sign)
     int left = n, c = 0, tries = 0, level = 2; /* 2: true ears, 1: convex corners, 0: anything */
     while (left > 3) {
         int p = poly[c].prev, nx = poly[c].next;
-        int ok = level == 2 ? is_ear(poly, p, c, nx, sign)
+        int ok = level == 2 ? is_ear(poly, p, c, nx, sign, &L->ear_work)
                : level == 1 ? sign * orient(&poly[p], &poly[c], &poly[nx]) >= 0 : 1;
         if (ok) {
             if (!add_triangle(L, L->face[p], L->face[c], L->face[nx])) return 0;
@@ -136,6 +142,9 @@ static int clip_ears(loader *L, int n, double sign)
             tries = 0;
         }
         c = nx;
+        if (L->ear_work > OBJ_EAR_WORK_MAX)
+            return objtext_fail(L->obj, "polygons too slow to triangulate: ear clipping gave up after %.0e steps in this "
+                                "file (self-crossing or very large faces); split them", (double)OBJ_EAR_WORK_MAX);
     }
     return add_triangle(L, L->face[poly[c].prev], L->face[c], L->face[poly[c].next]);
 }
@@ -224,6 +233,9 @@ static int read_face(loader *L, char *s)
     char *w;
     int n = 0, *face;
     while ((w = objtext_word(&s))) {
+        if (n == OBJ_FACE_MAX)   /* refused before anything more is read or stored */
+            return objtext_fail(L->obj, "face with more than %d corners: pathlab refuses larger polygons (their "
+                                "triangulation takes time in the square of the corners); split it", OBJ_FACE_MAX);
         if (!(face = grow(L->face, &L->capface, (size_t)n + 1, sizeof *face)))
             return objtext_fail(L->obj, "out of memory");
         L->face = face;

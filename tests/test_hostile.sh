@@ -55,6 +55,14 @@ printf 'eye 0 1 -3\nfov 40\0 size 2 2\n' > "$TMP/v2.view"
 render_t "view: a NUL byte in a line is an error" 10 2 $D/quad-light.obj --view "$TMP/v2.view" -o "$OUT"
 expect_err "view: NUL byte: file:line" "v2.view:2: a NUL byte"
 render_t "view: /dev/zero as a view file ends at once" 10 2 $D/quad-light.obj --view /dev/zero -o "$OUT"
+F=$TMP/fifo; mkdir -p "$F"; cp $D/quad-light.obj $D/quad-light.mtl "$F/"
+if mkfifo "$F/quad-light.view" 2>/dev/null; then
+    render_t "view: a FIFO named SCENE.view (no writer) reads as empty instead of hanging" 10 0 "$F/quad-light.obj" \
+        --size 4x4 --spp 1 -o "$OUT"
+fi
+printf 'size 6 6\n' | render_t "view: --view reads a pipe" 30 0 $D/quad-light.obj --view /dev/stdin --spp 1 -o "$OUT" \
+    --write-view "$TMP/w.view"
+grep -q '^size 6 6$' "$TMP/w.view" && pass "view: the pipe's size 6 6 was read" || fail "view: pipe: $(grep size "$TMP/w.view")"
 printf '# eye and target\neye 0 1 0\n\ntarget 0 1 0\n' > "$TMP/v3.view"
 render_t "view: eye == target refused" 10 2 $D/quad-light.obj --view "$TMP/v3.view" -o "$OUT"
 expect_err "view: eye == target: the view file and both lines named" "v3.view:4: eye \(line 2\) and target \(line 4\) are the same point"

@@ -18,7 +18,8 @@ static int is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == 
  * Reading stops after a chunk with a NUL byte: objtext_check refuses the file anyway, and
  * /dev/zero or a binary would otherwise be read whole (or forever). With max > 0 the file must be
  * a regular one of at most max bytes: opened without blocking (a FIFO swapped in after the
- * caller's checks must not hang the reader) and read no further than max + 1 bytes. */
+ * caller's checks must not hang the reader) and read no further than max + 1 bytes. Any file is
+ * opened without blocking: a FIFO with no writer reads as empty instead of hanging. */
 int objtext_open_bounded(objtext *t, const char *path, int quiet, size_t max)
 {
     FILE *f;
@@ -29,8 +30,10 @@ int objtext_open_bounded(objtext *t, const char *path, int quiet, size_t max)
     memset(t, 0, sizeof *t);
     t->path = path;
     t->quiet = quiet;
-    if ((fd = open(path, O_RDONLY | O_NOCTTY | (max ? O_NONBLOCK : 0))) < 0) return errno;
+    /* O_NONBLOCK: opening a FIFO without a writer returns at once (then reads end at once) */
+    if ((fd = open(path, O_RDONLY | O_NOCTTY | O_NONBLOCK)) < 0) return errno;
     if (max && fstat(fd, &st) == 0 && !S_ISREG(st.st_mode)) err = S_ISDIR(st.st_mode) ? EISDIR : ENODEV;
+    if (!err && fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK) < 0) err = errno;  /* reads wait for a writer's data */
     if (err || !(f = fdopen(fd, "rb"))) {
         err = err ? err : errno;
         close(fd);

@@ -2,12 +2,12 @@
 #include "scene/camera.h"
 #include <errno.h>
 #include <fcntl.h>
-#include <unistd.h>
 #include <float.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 void view_defaults(view *vw)
 {

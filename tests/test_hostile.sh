@@ -77,6 +77,14 @@ printf 'eye 1e30 0 0\ntarget -1e30 0 0\n' > "$TMP/v5.view"
 render_t "view: eye/target overflowing float arithmetic refused" 10 2 $D/quad-light.obj --view "$TMP/v5.view" -o "$OUT"
 expect_err "view: float overflow: file:line" "v5.view:2: eye, target or up too large"
 
+# gKit orbiter files share the view files' line reader (they had the same 1023-character buffer)
+{ printf 'c 0 0.5 0\np 0 0\nr 10 0\n#'; head -c 1100 /dev/zero | tr '\0' a; printf 's 3 3\ns 4 4\n'; } > "$TMP/long.orbiter"
+render_t "orbiter: a 1101-character comment ending in 's 3 3' is a comment" 30 0 $D/quad-light.obj --orbiter "$TMP/long.orbiter" \
+    --size 8x8 --spp 1 -o "$OUT"
+printf 'c 0 0.5 0\np 0 0\nr 10 0\ns 3\0 3\n' > "$TMP/nul.orbiter"
+render_t "orbiter: a NUL byte is an error" 10 2 $D/quad-light.obj --orbiter "$TMP/nul.orbiter" -o "$OUT"
+expect_err "orbiter: NUL byte: file:line" "nul.orbiter:4: a NUL byte"
+
 # ---- termination whatever the materials ----
 # A closed box, Kd 1: with q = min(1, max beta) = 1 every path ran to the 10^6-bounce cap (0.8 s per
 # sample). Now q <= 0.95: about 20 bounces per path after --rr 3, so 20 to 40 continuation rays.

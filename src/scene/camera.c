@@ -17,9 +17,6 @@ void view_defaults(view *vw)
     vw->width = vw->height = 512;
 }
 
-/* The longest part of a view line before its comment, a bound on the memory a line takes:
- * comments may be of any length (they are skipped as they are read). */
-#define VIEW_LINE_MAX (1 << 20)
 
 /* Reads n floats from the rest of a line into out; 0 on success, and nothing may follow them.
  * A finite double beyond the float range (1e39) is refused with its own message (code 3): cast
@@ -77,12 +74,9 @@ static int parse_view_line(view *vw, char *line, int lineno)
     return 0;
 }
 
-/* Reads one line of fp into *buf (grown as needed, *cap bytes, up to VIEW_LINE_MAX), without
- * its comment, NUL-terminated; the comment is read and dropped, whatever its length, so that a
- * long one never turns into a new line. Returns 0 at the end of the file, 1 for a line, 6 at a NUL
- * byte (reading stops there: /dev/zero has no line end), 7 when the part before the comment is
- * longer than VIEW_LINE_MAX - 1 (the rest of the line is skipped), 8 when out of memory. */
-static int read_line(FILE *fp, char **buf, size_t *cap)
+/* The comment is read and dropped, whatever its length, so that a long one never turns into a
+ * new line; reading stops at a NUL byte: /dev/zero has no line end. */
+int view_read_line(FILE *fp, char **buf, size_t *cap)
 {
     size_t n = 0;
     int c, comment = 0, rc = 1, any = 0;
@@ -155,7 +149,7 @@ int view_read(view *vw, const char *path)
     }
     snprintf(vw->file, sizeof vw->file, "%s", path);
     vw->line_eye = vw->line_target = vw->line_up = vw->line_fov = vw->line_size = 0;
-    while (!rc && (rc = read_line(fp, &line, &cap))) {
+    while (!rc && (rc = view_read_line(fp, &line, &cap))) {
         lineno++;
         if (rc == 1) rc = parse_view_line(vw, line, lineno);
         if (rc) view_error(path, lineno, rc, line);

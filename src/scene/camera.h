@@ -34,6 +34,13 @@ void view_defaults(view *vw);
  * byte, a number beyond the float range, fov outside (0, 180) and a size outside 1..65536 (at most
  * 1e9 pixels) are errors at their line. Records the file and the line of each key in vw. */
 int view_read(view *vw, const char *path);
+/* The line reader of view and orbiter files. Reads one line of fp into *buf (malloc'ed, grown as
+ * needed: *cap bytes, up to VIEW_LINE_MAX) without its '#' comment, NUL-terminated; comments may
+ * be of any length. Returns 0 at the end of the file, 1 for a line, 6 at a NUL byte (reading
+ * stops), 7 when the part before the comment is longer than VIEW_LINE_MAX - 1 (the rest of the
+ * line is skipped), 8 when out of memory. */
+#define VIEW_LINE_MAX (1 << 20)
+int view_read_line(FILE *fp, char **buf, size_t *cap);
 /* Prints vw as a view file (every key, %.9g: view_read gives back the same floats, bit for bit). */
 void view_print(FILE *f, const view *vw);
 /* Fills in eye and target from the scene bounds where no file or flag gave them. */

@@ -63,7 +63,8 @@ static int parse_line(orbiter *o, char *line, const char *path, int lineno, int 
     for (key = line; *key == ' ' || *key == '\t'; key++) continue;
     if (!*key) return 0;
     if (!strchr(ORBITER_KEYS, *key) || (key[1] != ' ' && key[1] != '\t' && key[1] != '\0')) {
-        fprintf(stderr, "%s:%d: '%s' is not a line of a gKit orbiter file (expected c, p, r, s or f lines)\n", path, lineno, key);
+        fprintf(stderr, "%s:%d: '%.40s%s' is not a line of a gKit orbiter file (expected c, p, r, s or f lines)\n", path,
+                lineno, key, strlen(key) > 40 ? "..." : "");
         return 1;
     }
     k = (int)(strchr(ORBITER_KEYS, *key) - ORBITER_KEYS);
@@ -74,7 +75,7 @@ static int parse_line(orbiter *o, char *line, const char *path, int lineno, int 
     seen[k] = lineno;
     n = read_numbers(key + 1, v, 4);
     if (n < 0 || store_key(o, k, v, n)) {
-        fprintf(stderr, "%s:%d: expected '%s', got '%s'\n", path, lineno, KEY_FORM[k], key);
+        fprintf(stderr, "%s:%d: expected '%s', got '%.40s%s'\n", path, lineno, KEY_FORM[k], key, strlen(key) > 40 ? "..." : "");
         return 1;
     }
     return 0;
@@ -82,16 +83,26 @@ static int parse_line(orbiter *o, char *line, const char *path, int lineno, int 
 
 int orbiter_read(orbiter *o, const char *path)
 {
-    char line[1024];
-    int seen[5] = {0, 0, 0, 0, 0}, lineno = 0, k, err = 0;
+    size_t cap = 256;
+    char *line = malloc(cap);
+    int seen[5] = {0, 0, 0, 0, 0}, lineno = 0, k, err = 0, rc;
     FILE *fp = fopen(path, "r");
     memset(o, 0, sizeof *o);
-    if (!fp) { fprintf(stderr, "%s: cannot open the orbiter file: %s\n", path, strerror(errno)); return 1; }
-    while (!err && fgets(line, sizeof line, fp)) {
+    if (!fp || !line) {
+        fprintf(stderr, "%s: cannot open the orbiter file: %s\n", path, strerror(fp ? ENOMEM : errno));
+        free(line);
+        if (fp) fclose(fp);
+        return 1;
+    }
+    /* view files' reader: lines of any length, a long comment never read as a line, NUL refused */
+    while (!err && (rc = view_read_line(fp, &line, &cap))) {
         lineno++;
-        err = parse_line(o, line, path, lineno, seen);
+        if (rc != 1) fprintf(stderr, "%s:%d: %s\n", path, lineno, rc == 6 ? "a NUL byte: not a text file"
+                             : rc == 7 ? "line too long" : "out of memory");
+        err = rc != 1 || parse_line(o, line, path, lineno, seen);
     }
     fclose(fp);
+    free(line);
     for (k = 0; k < 4 && !err; k++)
         if (!seen[k]) {
             fprintf(stderr, "%s:%d: the file ends without its '%s' line (a gKit orbiter file has c, p, r and s lines)\n",

@@ -97,6 +97,10 @@ grep -q ' 0 paths cut at 1000 bounces' "$TMP/err" \
 render_t "roulette off: Kd 1 ends at the hard bounce cap" 60 0 $D/kd1/furnace.obj --size 4x4 --spp 1 --rr off -o "$OUT"
 grep -q ' 16 paths cut at 1000 bounces' "$TMP/err" && pass "roulette off: the 16 paths cut at 1000 bounces are counted" \
     || fail "roulette off: stats line: $(tail -n 1 "$TMP/err")"
+render_t "roulette off, light sampling only: Kd 1 ends at the hard bounce cap" 60 0 $D/kd1/furnace.obj --size 4x4 --spp 1 \
+    --rr off --direct light -o "$OUT"
+grep -q ' 16 paths cut at 1000 bounces' "$TMP/err" && pass "roulette off, light sampling only: the 16 paths cut are counted" \
+    || fail "roulette off, light sampling only: stats line: $(tail -n 1 "$TMP/err")"
 split_bin $D/fuzz-timeout-kd15.bin "$TMP/kd15"
 render_t "roulette: fuzz-timeout-kd15.bin (Kd 1.5, closed box) ends" 60 0 "$TMP/kd15/s.obj" --size 16x16 --spp 4 -o "$OUT"
 expect_err "roulette: Kd 1.5 warned at load, MTL file:line" "m.mtl:3: material 'furnace' has Kd \+ Ks = 1.5 > 1: it creates energy"

@@ -266,6 +266,6 @@ vec3 integrate(const scene *sc, const integrator_opts *opt, const ray *camera, s
         /* "et on arrête quand ?" */
         if (opt->rr_depth >= 0 && k >= opt->rr_depth && k < kmax && !survives_roulette(&beta, smp, k)) break;
     }
-    if (k > kmax && kmax < opt->bmax) st->paths_cut++;   /* alive at the cap: its next bounces are lost */
+    if (k >= kmax && kmax < opt->bmax) st->paths_cut++;   /* it reached the cap: its next bounces are lost */
     return sum.L;
 }

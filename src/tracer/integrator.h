@@ -32,7 +32,7 @@ typedef struct {
 
 typedef struct {
     uint64_t camera_rays, continuation_rays, shadow_rays;
-    uint64_t paths_cut;       /* paths still going at BOUNCES_CAP bounces, cut there (--bounces A:inf) */
+    uint64_t paths_cut;       /* paths that reached BOUNCES_CAP bounces, cut there (--bounces A:inf) */
 } trace_stats;
 
 /* Returns the radiance L_bmin + ... + L_bmax along the camera ray, summed in path order, drawing its

@@ -270,11 +270,12 @@ int render_make_camera(render_args *a, const scene *s, camera *cam)
 {
     vec3 lo, hi;
     if (base_view(a)) return 1;
-    if (a->eye) { a->vw.eye = a->flags.eye; a->vw.has_eye = 1; }
-    if (a->target) { a->vw.target = a->flags.target; a->vw.has_target = 1; }
-    if (a->up) a->vw.up = a->flags.up;
-    if (a->fov) a->vw.fov = a->flags.fov;
-    if (a->size) { a->vw.width = a->flags.width; a->vw.height = a->flags.height; }
+    /* a flag overrides its key: camera errors then name the flag's value, not the view file's line */
+    if (a->eye) { a->vw.eye = a->flags.eye; a->vw.has_eye = 1; a->vw.line_eye = 0; }
+    if (a->target) { a->vw.target = a->flags.target; a->vw.has_target = 1; a->vw.line_target = 0; }
+    if (a->up) { a->vw.up = a->flags.up; a->vw.line_up = 0; }
+    if (a->fov) { a->vw.fov = a->flags.fov; a->vw.line_fov = 0; }
+    if (a->size) { a->vw.width = a->flags.width; a->vw.height = a->flags.height; a->vw.line_size = 0; }
     mesh_bounds(&s->m, &lo, &hi);
     view_frame_bounds(&a->vw, lo, hi);
     if (camera_init(cam, &a->vw)) return 1;

@@ -1,9 +1,72 @@
 /* mtl.c — the Wavefront MTL reader declared in mtl.h. Only what the course's BRDF uses is read
- * (Kd, Ks, Ns, Ke); every other key is accepted and reported once per file as ignored. */
+ * (Kd, Ks, Ns, Ke); every other key is accepted, counted, and summarised in one line per file at
+ * its end ("FILE: ignored keys: illum (8), Ka (8); not supported: transmission (Ni, d) ..."). */
 #include "scene/mtl.h"
 #include "scene/objtext.h"
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+/* The keys of a file that pathlab ignores, with their counts; past IGNORED_MAX distinct keys the
+ * others are only counted. Keys are kept to their first OBJTEXT_SEEN_LEN - 1 characters. */
+#define IGNORED_MAX 32
+typedef struct {
+    char key[IGNORED_MAX][OBJTEXT_SEEN_LEN];
+    int count[IGNORED_MAX], cut[IGNORED_MAX];
+    int n, others;
+} ignored_keys;
+
+static void note_ignored(ignored_keys *ig, const char *kw)
+{
+    size_t len = strlen(kw), n = len < OBJTEXT_SEEN_LEN - 1 ? len : OBJTEXT_SEEN_LEN - 1;
+    int i;
+    for (i = 0; i < ig->n; i++)
+        if (strncmp(ig->key[i], kw, n) == 0 && ig->key[i][n] == '\0' && ig->cut[i] == (len > n)) {
+            ig->count[i]++;
+            return;
+        }
+    if (ig->n == IGNORED_MAX) { ig->others++; return; }
+    memcpy(ig->key[ig->n], kw, n);
+    ig->key[ig->n][n] = '\0';
+    ig->cut[ig->n] = len > n;
+    ig->count[ig->n++] = 1;
+}
+
+/* Transmission (transparent and refracting surfaces): filter, index of refraction, dissolve. */
+static int is_transmission(const char *kw)
+{
+    return !strcmp(kw, "Tf") || !strcmp(kw, "Ni") || !strcmp(kw, "d") || !strcmp(kw, "Tr");
+}
+
+/* Prints the ignored keys that are (or are not) transmission keys, "key (count)" comma-separated. */
+static void print_keys(const ignored_keys *ig, int transmission)
+{
+    int i, any = 0;
+    for (i = 0; i < ig->n; i++)
+        if (is_transmission(ig->key[i]) == transmission)
+            fprintf(stderr, "%s%s%s (%d)", any++ ? ", " : "", ig->key[i], ig->cut[i] ? "..." : "", ig->count[i]);
+}
+
+/* The one line that sums up the ignored keys of a file, transmission named apart: a glass
+ * material renders as an opaque one, which a user should know. */
+static void print_ignored(const objtext *t, const ignored_keys *ig)
+{
+    int i, trans = 0;
+    if (t->quiet || ig->n == 0) return;
+    for (i = 0; i < ig->n; i++) trans += is_transmission(ig->key[i]);
+    fprintf(stderr, "%s: ", t->path);
+    if (trans < ig->n) {
+        fprintf(stderr, "ignored keys: ");
+        print_keys(ig, 0);
+        if (ig->others) fprintf(stderr, ", %d other keys", ig->others);
+        fprintf(stderr, trans ? "; " : " (pathlab reads Kd, Ks, Ns, Ke)\n");
+    }
+    if (trans) {
+        fprintf(stderr, "not supported: transmission (");
+        print_keys(ig, 1);
+        fprintf(stderr, "): every surface is opaque\n");
+    }
+}
 
 int mtl_find(const mesh *m, const char *name)
 {
@@ -48,17 +111,17 @@ static void check_energy(const objtext *t, const material *mat, int line)
 {
     float most = v3_max_comp(v3_add(mat->Kd, mat->Ks));
     if (most > 1.0f)
-        objtext_warn(t, line, "material '%s' has Kd + Ks = %g > 1: it creates energy", mat->name, most);
+        objtext_warn(t, line, "material '%s' has Kd + Ks = %g > 1: it creates energy (the image of a closed "
+                             "scene has no finite limit: README.md, Materials)", mat->name, most);
 }
 
 /* One statement other than newmtl, for material mat (NULL before the first newmtl). */
-static int statement(objtext *t, const char *kw, char *s, material *mat)
+static int statement(objtext *t, const char *kw, char *s, material *mat, ignored_keys *ig)
 {
     float ns;
     int used = !strcmp(kw, "Kd") || !strcmp(kw, "Ks") || !strcmp(kw, "Ke") || !strcmp(kw, "Ns");
     if (!used) {
-        if (objtext_first_time(t, kw))
-            objtext_warn(t, 0, "ignoring MTL key '%s' (pathlab uses Kd, Ks, Ns, Ke)", kw);
+        note_ignored(ig, kw);
         return 1;
     }
     if (!mat) return objtext_fail(t, "'%s' before the first newmtl", kw);
@@ -76,11 +139,13 @@ static int parse(objtext *t, mesh *m)
 {
     int first = m->nmats, mat_line = 0; /* materials of this file start at index first */
     char *s, *kw;
+    ignored_keys ig;
+    memset(&ig, 0, sizeof ig);
     while ((s = objtext_line(t))) {
         material *cur = m->nmats > first ? &m->mats[m->nmats - 1] : NULL;
         if (!(kw = objtext_word(&s))) continue;
         if (strcmp(kw, "newmtl") != 0) {
-            if (!statement(t, kw, s, cur)) return 0;
+            if (!statement(t, kw, s, cur, &ig)) return 0;
             continue;
         }
         if (cur) check_energy(t, cur, mat_line);
@@ -89,13 +154,14 @@ static int parse(objtext *t, mesh *m)
     }
     if (t->oom) return objtext_fail(t, "out of memory");
     if (m->nmats > first) check_energy(t, &m->mats[m->nmats - 1], mat_line);
+    print_ignored(t, &ig);
     return 1;
 }
 
 int mtl_load(const char *path, mesh *m, int quiet)
 {
     objtext t;
-    int err = objtext_open(&t, path, quiet), ok;
+    int err = objtext_open_bounded(&t, path, quiet, MTL_FILE_MAX), ok;
     if (err) return err;
     ok = objtext_check(&t) && parse(&t, m);
     objtext_close(&t);

@@ -2,14 +2,18 @@
  * Lines come from objtext.c (comments, CR, '\' continuations, no length limit) and MTL files from
  * mtl.c, read when their mtllib line is. Polygons are triangulated by ear clipping in their
  * best-fit plane, keeping the winding of the file. */
+/* realpath (mtllib confinement) is POSIX 2008 but glibc declares it only for X/Open */
+#define _XOPEN_SOURCE 700
 #include "scene/obj.h"
 #include "scene/mtl.h"
 #include "scene/objtext.h"
+#include <errno.h>
 #include <limits.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 /* One corner of the polygon being ear-clipped: its projection and its neighbours still left. */
 typedef struct { double x, y; int prev, next; } corner;
@@ -25,6 +29,8 @@ typedef struct {
     size_t capface;
     corner *poly;              /* scratch of the ear clipper */
     size_t cappoly;
+    long long ear_work;        /* corners tested by is_ear in this file, bounded by OBJ_EAR_WORK_MAX */
+    char *dir_real;            /* the OBJ's folder, resolved (realpath), once an mtllib needs it */
 } loader;
 
 /* Returns arr with room for need items of size bytes (*cap updated), or NULL when out of memory,
@@ -92,7 +98,7 @@ static int straight(const corner *p, const corner *c, const corner *n)
  * not block. A zero-area corner is cut (the triangle is dropped) if it is a repeated point or a
  * spike; a straight one stays until it is a corner of some triangle: cutting it would leave a
  * T-junction, where rays may slip through a crack between triangles. */
-static int is_ear(const corner *poly, int p, int c, int n, double sign)
+static int is_ear(const corner *poly, int p, int c, int n, double sign, long long *work)
 {
     double area = sign * orient(&poly[p], &poly[c], &poly[n]);
     int v;
@@ -100,6 +106,7 @@ static int is_ear(const corner *poly, int p, int c, int n, double sign)
     if (area == 0) return !straight(&poly[p], &poly[c], &poly[n]);
     for (v = poly[n].next; v != p; v = poly[v].next) {
         const corner *q = &poly[v];
+        ++*work;
         if (same_point(q, &poly[p]) || same_point(q, &poly[c]) || same_point(q, &poly[n])) continue;
         if (sign * orient(&poly[p], &poly[c], q) >= 0 && sign * orient(&poly[c], &poly[n], q) >= 0
             && sign * orient(&poly[n], &poly[p], q) >= 0)
@@ -107,6 +114,10 @@ static int is_ear(const corner *poly, int p, int c, int n, double sign)
     }
     return 1;
 }
+
+/* The ear tests of a file are bounded: a face of OBJ_FACE_MAX corners takes about 8e6 steps if
+ * convex, but the search can be cubic in the corners on a self-crossing one. 2e9 steps: seconds. */
+#define OBJ_EAR_WORK_MAX 2000000000LL
 
 /* Cuts ears off polygon L->face[0..n) until one triangle is left; each triangle keeps the
  * polygon's order of corners, hence its winding. Each ear test costs O(n), and ears are usually
@@ -118,7 +129,7 @@ static int clip_ears(loader *L, int n, double sign)
     int left = n, c = 0, tries = 0, level = 2; /* 2: true ears, 1: convex corners, 0: anything */
     while (left > 3) {
         int p = poly[c].prev, nx = poly[c].next;
-        int ok = level == 2 ? is_ear(poly, p, c, nx, sign)
+        int ok = level == 2 ? is_ear(poly, p, c, nx, sign, &L->ear_work)
                : level == 1 ? sign * orient(&poly[p], &poly[c], &poly[nx]) >= 0 : 1;
         if (ok) {
             if (!add_triangle(L, L->face[p], L->face[c], L->face[nx])) return 0;
@@ -131,6 +142,9 @@ static int clip_ears(loader *L, int n, double sign)
             tries = 0;
         }
         c = nx;
+        if (L->ear_work > OBJ_EAR_WORK_MAX)
+            return objtext_fail(L->obj, "polygons too slow to triangulate: ear clipping gave up after %.0e steps in this "
+                                "file (self-crossing or very large faces); split them", (double)OBJ_EAR_WORK_MAX);
     }
     return add_triangle(L, L->face[poly[c].prev], L->face[c], L->face[poly[c].next]);
 }
@@ -208,7 +222,7 @@ static int read_corner(loader *L, const char *w, int *vi)
         s++;
         ok = has_vn = read_int(&s, &vn);
     }
-    if (!ok || *s != '\0') return objtext_fail(t, "bad face corner '%s' (expected v, v/t, v/t/n or v//n)", w);
+    if (!ok || *s != '\0') return objtext_fail(t, "bad face corner '%.*s%s' (expected v, v/t, v/t/n or v//n)", OBJTEXT_CUT(w));
     return resolve(t, v, m->nverts, "vertex", vi)
         && (!has_vt || resolve(t, vt, m->ntexcoords, "texture coordinate", &unused))
         && (!has_vn || resolve(t, vn, m->nnormals, "normal", &unused));
@@ -219,6 +233,9 @@ static int read_face(loader *L, char *s)
     char *w;
     int n = 0, *face;
     while ((w = objtext_word(&s))) {
+        if (n == OBJ_FACE_MAX)   /* refused before anything more is read or stored */
+            return objtext_fail(L->obj, "face with more than %d corners: pathlab refuses larger polygons (their "
+                                "triangulation takes time in the square of the corners); split it", OBJ_FACE_MAX);
         if (!(face = grow(L->face, &L->capface, (size_t)n + 1, sizeof *face)))
             return objtext_fail(L->obj, "out of memory");
         L->face = face;
@@ -250,10 +267,10 @@ static int use_material(loader *L, const char *name)
     int i = mtl_find(L->m, name);
     if (i >= 0) { L->cur_mat = i; return 1; }
     if (L->nlibs > 0)
-        return objtext_fail(t, "unknown material '%s' (no newmtl of that name in the mtllib files read so far)",
-                            name);
+        return objtext_fail(t, "unknown material '%.*s%s' (no newmtl of that name in the mtllib files read so far)",
+                            OBJTEXT_CUT(name));
     if (objtext_first_time(t, "usemtl"))
-        objtext_warn(t, t->line, "usemtl '%s' but no mtllib before it: using the default material", name);
+        objtext_warn(t, t->line, "usemtl '%.*s%s' but no mtllib before it: using the default material", OBJTEXT_CUT(name));
     L->cur_mat = 0;
     return 1;
 }
@@ -288,7 +305,7 @@ static int statement(loader *L, const char *kw, char *s)
         if (objtext_first_time(t, "l"))
             objtext_warn(t, t->line, "ignoring points and lines ('p', 'l'): pathlab renders faces");
     } else if (objtext_first_time(t, kw)) {
-        objtext_warn(t, t->line, "ignoring unknown keyword '%s'", kw);
+        objtext_warn(t, t->line, "ignoring unknown keyword '%.*s%s'", OBJTEXT_CUT(kw));
     }
     return 1;
 }
@@ -305,6 +322,60 @@ static char *sibling_path(const char *from, const char *name)
     memcpy(path, from, dir);
     strcpy(path + dir, name);
     return path;
+}
+
+/* The OBJ's folder, resolved once (realpath) into L->dir_real: files the scene names must be in it. */
+static int scene_folder(loader *L)
+{
+    const char *path = L->obj->path, *slash = strrchr(path, '/');
+    size_t n = !slash ? 0 : slash == path ? 1 : (size_t)(slash - path);
+    char *dir;
+    if (L->dir_real) return 1;
+    if (!(dir = malloc(n + 2))) return objtext_fail(L->obj, "out of memory");
+    memcpy(dir, n ? path : ".", n ? n : 1);
+    dir[n ? n : 1] = '\0';
+    L->dir_real = realpath(dir, NULL);
+    free(dir);
+    if (!L->dir_real) return objtext_fail(L->obj, "cannot resolve the scene's folder: %s", strerror(errno));
+    return 1;
+}
+
+/* Whether resolved path real is folder dir (resolved too) or below it. */
+static int inside(const char *dir, const char *real)
+{
+    size_t n = strlen(dir);
+    return n == 1 || (strncmp(real, dir, n) == 0 && real[n] == '/');   /* n == 1: dir is "/" */
+}
+
+/* A file the scene names (path: name joined to the OBJ's folder) must be a regular file in the
+ * scene's folder or below, of at most MTL_FILE_MAX bytes: a grading machine renders students'
+ * files, which must not read /etc/passwd, /dev/zero (forever) or a FIFO (blocks). Symlinks are
+ * followed (realpath), so one pointing out is refused too. 1, or 0 after printing why. */
+static int check_scene_file(loader *L, const char *name, const char *path)
+{
+    const objtext *t = L->obj;
+    struct stat st;
+    char *real;
+    int ok = 0;
+    if (!scene_folder(L)) return 0;
+    if (!(real = realpath(path, NULL)))
+        return objtext_fail(t, "cannot open '%.*s%s': %s", OBJTEXT_CUT(name), strerror(errno));
+    if (!inside(L->dir_real, real))
+        objtext_fail(t, "mtllib '%.*s%s' is outside the scene's folder %s (it is %s): a scene may only name files in "
+                        "its folder or below", OBJTEXT_CUT(name), L->dir_real, real);
+    else if (stat(real, &st) != 0)
+        objtext_fail(t, "cannot open '%.*s%s': %s", OBJTEXT_CUT(name), strerror(errno));
+    else if (S_ISDIR(st.st_mode))
+        objtext_fail(t, "mtllib '%.*s%s' is a folder, not a file", OBJTEXT_CUT(name));
+    else if (!S_ISREG(st.st_mode))
+        objtext_fail(t, "mtllib '%.*s%s' is not a regular file (a device, FIFO or socket)", OBJTEXT_CUT(name));
+    else if (st.st_size > (off_t)MTL_FILE_MAX)
+        objtext_fail(t, "mtllib '%.*s%s' is larger than %d MiB, the limit of a file a scene names",
+                     OBJTEXT_CUT(name), (int)(MTL_FILE_MAX >> 20));
+    else
+        ok = 1;
+    free(real);
+    return ok;
 }
 
 /* Reads MTL file name, relative to the OBJ's folder; its materials are then usable. A file read
@@ -324,8 +395,9 @@ static int load_mtl(loader *L, const char *name)
     }
     L->libs = libs;
     L->libs[L->nlibs++] = path;
+    if (!check_scene_file(L, name, path)) return 0;
     err = mtl_load(path, L->m, L->obj->quiet);
-    if (err > 0) return objtext_fail(L->obj, "cannot open '%s': %s", name, strerror(err));
+    if (err > 0) return objtext_fail(L->obj, "cannot open '%.*s%s': %s", OBJTEXT_CUT(name), strerror(err));
     return err == 0;
 }
 
@@ -384,6 +456,7 @@ int obj_load(const char *path, mesh *m, int quiet)
     free(L.poly);
     for (i = 0; i < L.nlibs; i++) free(L.libs[i]);
     free(L.libs);
+    free(L.dir_real);
     if (!ok) mesh_free(m);
     return ok ? 0 : 1;
 }

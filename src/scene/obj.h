@@ -20,6 +20,8 @@
  *   "Kd g" means grey g. Negative values are errors. Other keys are ignored (one warning per
  *   key and file). Kd + Ks > 1 in a channel gets a warning naming file:line and the material.
  * - mats[0] is "(default)", Kd 0.5 grey, for faces before any usemtl.
+ * - A face has at most OBJ_FACE_MAX (4096) corners, else it is an error: ear clipping takes time
+ *   in the square of the corners (100k corners: 50 s), and a face line can be any length.
  * - Polygons are ear-clipped in the plane facing their Newell normal. A triangle is degenerate,
  *   dropped and counted, when |(b - a) x (c - a)| computed in float is 0 or not finite; so
  *   normalizing a kept triangle's cross product is always safe.
@@ -28,6 +30,8 @@
 #ifndef PATHLAB_OBJ_H
 #define PATHLAB_OBJ_H
 #include "scene/mesh.h"
+
+#define OBJ_FACE_MAX 4096   /* corners of a face; more is an error (see above) */
 
 /* Loads path into m. Returns 0 on success, nonzero after printing the error. Warnings (ignored
  * MTL keys, once each; Kd+Ks > 1) go to stderr unless quiet. */

@@ -3,6 +3,9 @@
  * no copy (only '\'-continued lines are copied, into t->join). */
 #include "scene/objtext.h"
 #include <errno.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -11,27 +14,44 @@
 
 static int is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
-/* Reading in a loop rather than asking for the size works for pipes and reports directories. */
-int objtext_open(objtext *t, const char *path, int quiet)
+/* Reading in a loop rather than asking for the size works for pipes and reports directories.
+ * Reading stops after a chunk with a NUL byte: objtext_check refuses the file anyway, and
+ * /dev/zero or a binary would otherwise be read whole (or forever). With max > 0 the file must be
+ * a regular one of at most max bytes: opened without blocking (a FIFO swapped in after the
+ * caller's checks must not hang the reader) and read no further than max + 1 bytes. Any file is
+ * opened without blocking: a FIFO with no writer reads as empty instead of hanging. */
+int objtext_open_bounded(objtext *t, const char *path, int quiet, size_t max)
 {
     FILE *f;
     char *buf = NULL, *bigger;
-    size_t len = 0, cap = 1 << 16;
-    int err = 0;
+    size_t len = 0, cap = 1 << 16, got;
+    int err = 0, fd;
+    struct stat st;
     memset(t, 0, sizeof *t);
     t->path = path;
     t->quiet = quiet;
-    if (!(f = fopen(path, "rb"))) return errno;
+    /* O_NONBLOCK: opening a FIFO without a writer returns at once (then reads end at once) */
+    if ((fd = open(path, O_RDONLY | O_NOCTTY | O_NONBLOCK)) < 0) return errno;
+    if (max && fstat(fd, &st) == 0 && !S_ISREG(st.st_mode)) err = S_ISDIR(st.st_mode) ? EISDIR : ENODEV;
+    if (!err && fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK) < 0) err = errno;  /* reads wait for a writer's data */
+    if (err || !(f = fdopen(fd, "rb"))) {
+        err = err ? err : errno;
+        close(fd);
+        return err;
+    }
     for (;;) {
         if (!(bigger = realloc(buf, cap + 1))) { err = ENOMEM; break; } /* +1: the final NUL */
         buf = bigger;
         errno = 0;
-        len += fread(buf + len, 1, cap - len, f);
+        len += got = fread(buf + len, 1, cap - len, f);
+        if (max && len > max) { err = EFBIG; break; }
         if (len < cap) {
             if (ferror(f)) err = errno ? errno : EIO;
             break;
         }
+        if (memchr(buf + len - got, '\0', got)) break;
         cap *= 2;
+        if (max && cap > max + 1) cap = max + 1;
     }
     fclose(f);
     if (err) { free(buf); return err; }
@@ -39,6 +59,13 @@ int objtext_open(objtext *t, const char *path, int quiet)
     t->buf = t->at = buf;
     t->end = buf + len;
     return 0;
+}
+
+int objtext_open(objtext *t, const char *path, int quiet) { return objtext_open_bounded(t, path, quiet, 0); }
+
+const char *objtext_cut_tail(const char *s)
+{
+    return strnlen(s, OBJTEXT_CUT_LEN + 1) > OBJTEXT_CUT_LEN ? "..." : "";
 }
 
 void objtext_close(objtext *t)
@@ -138,8 +165,8 @@ static int parse_float(const objtext *t, const char *w, float *v)
 {
     char *end;
     *v = (float)strtod(w, &end);
-    if (end == w || *end) return objtext_fail(t, "bad number '%s'", w);
-    if (!isfinite(*v)) return objtext_fail(t, "'%s' is not a finite float", w);
+    if (end == w || *end) return objtext_fail(t, "bad number '%.*s%s'", OBJTEXT_CUT(w));
+    if (!isfinite(*v)) return objtext_fail(t, "'%.*s%s' is not a finite float", OBJTEXT_CUT(w));
     return 1;
 }
 

@@ -26,8 +26,18 @@ typedef struct {
 #define OBJTEXT_PRINTF(i)
 #endif
 
+/* A token quoted in a message is cut to its first OBJTEXT_CUT_LEN characters, then "...": a
+ * 100 MB word must not be echoed whole. Use with "%.*s%s": OBJTEXT_CUT(word). */
+#define OBJTEXT_CUT_LEN 40
+#define OBJTEXT_CUT(s) OBJTEXT_CUT_LEN, (s), objtext_cut_tail(s)
+/* "..." when s is longer than OBJTEXT_CUT_LEN characters, else "". */
+const char *objtext_cut_tail(const char *s);
+
 /* Reads file path into t (path is kept, not copied). Returns 0, or the errno of the failure. */
 int objtext_open(objtext *t, const char *path, int quiet);
+/* The same for a file a scene names: with max > 0, anything but a regular file of at most max bytes
+ * is refused (EISDIR for a folder, ENODEV for a device, FIFO or socket, EFBIG when larger). */
+int objtext_open_bounded(objtext *t, const char *path, int quiet, size_t max);
 /* Frees what objtext_open() allocated; harmless after a failed open. */
 void objtext_close(objtext *t);
 /* Refuses files with NUL bytes or a UTF-16 byte-order mark (prints the error, returns 0). */

@@ -69,8 +69,8 @@ static int parse_line(orbiter *o, char *line, const char *path, int lineno, int 
     for (key = line; *key == ' ' || *key == '\t'; key++) continue;
     if (!*key) return 0;
     if (!strchr(ORBITER_KEYS, *key) || (key[1] != ' ' && key[1] != '\t' && key[1] != '\0')) {
-        fprintf(stderr, "%s:%d: '%.80s%s' is not a line of a gKit orbiter file (expected c, p, r, s or f lines)\n", path,
-                lineno, key, strlen(key) > 80 ? "..." : "");
+        fprintf(stderr, "%s:%d: '%.40s%s' is not a line of a gKit orbiter file (expected c, p, r, s or f lines)\n", path,
+                lineno, key, strlen(key) > 40 ? "..." : "");
         return 1;
     }
     k = (int)(strchr(ORBITER_KEYS, *key) - ORBITER_KEYS);
@@ -81,50 +81,39 @@ static int parse_line(orbiter *o, char *line, const char *path, int lineno, int 
     seen[k] = lineno;
     n = read_numbers(key + 1, v, 4);
     if (n == -2) {
-        fprintf(stderr, "%s:%d: a number beyond %g in size in '%.80s%s': pathlab's camera is made of floats\n", path,
-                lineno, ORBITER_MAX_NUMBER, key, strlen(key) > 80 ? "..." : "");
+        fprintf(stderr, "%s:%d: a number beyond %g in size in '%.40s%s': pathlab's camera is made of floats\n", path,
+                lineno, ORBITER_MAX_NUMBER, key, strlen(key) > 40 ? "..." : "");
         return 1;
     }
     if (n < 0 || store_key(o, k, v, n)) {
-        fprintf(stderr, "%s:%d: expected '%s', got '%.80s%s'\n", path, lineno, KEY_FORM[k], key, strlen(key) > 80 ? "..." : "");
+        fprintf(stderr, "%s:%d: expected '%s', got '%.40s%s'\n", path, lineno, KEY_FORM[k], key, strlen(key) > 40 ? "..." : "");
         return 1;
     }
     return 0;
 }
 
-/* The next line of fp into line (cap bytes, the '\n' dropped). Lines of any length are read whole,
- * not in pieces that would each count as a line: past cap - 1 characters, a line may only go on
- * inside a comment, whose tail is skipped. Returns 1 with a line, 0 at the end of the file, -1 for
- * a line too long outside a comment, -2 for a NUL byte (a binary file, or text cut short). */
-static int next_line(FILE *fp, char *line, size_t cap)
-{
-    size_t n = 0;
-    int c;
-    while ((c = getc(fp)) != EOF && c != '\n') {
-        if (c == '\0') return -2;
-        if (n + 1 < cap) line[n++] = (char)c;
-        else if (!memchr(line, '#', n)) return -1;
-    }
-    line[n] = '\0';
-    return c != EOF || n > 0;
-}
-
 int orbiter_read(orbiter *o, const char *path)
 {
-    char line[1024];
-    int seen[5] = {0, 0, 0, 0, 0}, lineno = 0, k, err = 0, got;
+    size_t cap = 256;
+    char *line = malloc(cap);
+    int seen[5] = {0, 0, 0, 0, 0}, lineno = 0, k, err = 0, rc;
     FILE *fp = fopen(path, "r");
     memset(o, 0, sizeof *o);
-    if (!fp) { fprintf(stderr, "%s: cannot open the orbiter file: %s\n", path, strerror(errno)); return 1; }
-    while (!err && (got = next_line(fp, line, sizeof line)) != 0) {
+    if (!fp || !line) {
+        fprintf(stderr, "%s: cannot open the orbiter file: %s\n", path, strerror(fp ? ENOMEM : errno));
+        free(line);
+        if (fp) fclose(fp);
+        return 1;
+    }
+    /* view files' reader: lines of any length, a long comment never read as a line, NUL refused */
+    while (!err && (rc = view_read_line(fp, &line, &cap))) {
         lineno++;
-        if (got == -1)
-            fprintf(stderr, "%s:%d: a line over %d characters (only a comment may be that long)\n", path, lineno,
-                    (int)sizeof line - 1);
-        else if (got == -2) fprintf(stderr, "%s:%d: a NUL byte: not a text file\n", path, lineno);
-        err = got < 0 || parse_line(o, line, path, lineno, seen);
+        if (rc != 1) fprintf(stderr, "%s:%d: %s\n", path, lineno, rc == 6 ? "a NUL byte: not a text file"
+                             : rc == 7 ? "line too long" : "out of memory");
+        err = rc != 1 || parse_line(o, line, path, lineno, seen);
     }
     fclose(fp);
+    free(line);
     for (k = 0; k < 4 && !err; k++)
         if (!seen[k]) {
             fprintf(stderr, "%s:%d: the file ends without its '%s' line (a gKit orbiter file has c, p, r and s lines)\n",

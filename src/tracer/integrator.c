@@ -175,16 +175,21 @@ static ray continuation_ray(const vertex *p, vec3 wi_local)
 
 /* "et on arrête quand ?": Russian roulette. The path goes on with probability p_survive, which
  * follows its throughput, and a surviving path's throughput is divided by p_survive, so that
- * E[beta] is unchanged and no L_k is biased; the clamp at 0.05 bounds that weight by 20.
+ * E[beta] is unchanged and no L_k is biased; the clamp at 0.05 bounds that weight by 20. The cap
+ * at RR_SURVIVE_MAX (Mitsuba 3 caps it at 0.95 too) ends every path after 1 / (1 - 0.95) = 20 more
+ * bounces on average whatever the materials: with Kd >= 1 the throughput never falls, and a
+ * survival probability of 1 ran every path to the bounce cap (0.8 s per sample in a closed box).
  * Returns 0 when the path stops. */
+#define RR_SURVIVE_MAX 0.95f
 static int survives_roulette(vec3 *beta, sampler *smp, int k)
 {
     vec3 before = *beta;
-    float p_survive = fminf(1.0f, fmaxf(0.05f, v3_max_comp(before)));
+    float p_survive = fminf(RR_SURVIVE_MAX, fmaxf(0.05f, v3_max_comp(before)));
     if (sampler_1d(smp, sampler_dim(k, SAMPLER_DIM_ROULETTE)) >= p_survive) return 0;
     *beta = v3_scale(before, 1.0f / p_survive);
-    /* when below 1, p_survive is >= every channel of beta, which thus ends <= 1: finite stays finite */
-    assert(v3_is_finite(*beta) || !v3_is_finite(before));
+    /* below the cap, p_survive is >= every channel of beta, which thus ends <= 1 (at the cap,
+     * materials with Kd + Ks > 1 may make beta grow without bound: their image has no limit) */
+    assert(p_survive == RR_SURVIVE_MAX || v3_max_comp(before) < 0.05f || v3_max_comp(*beta) <= 1.0f);
     return 1;
 }
 
@@ -221,13 +226,16 @@ vec3 integrate(const scene *sc, const integrator_opts *opt, const ray *camera, s
     ray ray_pq = *camera;     /* from p (first the eye) toward the next vertex q */
     hit q;
     vec3 beta = v3(1, 1, 1);  /* the path throughput: the product of f G / pdf2(q) over the vertices before p */
-    int k, has_lights = sc->lights.n > 0;
+    /* the hard bounce cap: with the roulette on (p_survive <= 0.95) a path reaches it with
+     * probability below 0.95^(BOUNCES_CAP - rr_depth), never in practice; with --rr off and Kd >= 1
+     * it is what ends the path. The paths it cuts are counted: the stats line shows them. */
+    int k, has_lights = sc->lights.n > 0, kmax = opt->bmax < BOUNCES_CAP ? opt->bmax : BOUNCES_CAP;
 
     st->camera_rays++;
     if (!bvh_intersect(sc->accel, &ray_pq, &q)) return sum.L;
     if (opt->bmin == 0) add_Lk(&sum, 0, emitted(sc, &q, ray_pq.d));                    /* L0 */
 
-    for (k = 1; k <= opt->bmax; k++) {
+    for (k = 1; k <= kmax; k++) {
         vertex p = make_vertex(sc, &q, ray_pq.d);     /* the last q is the new p */
         vec3 wi_local, f;
         float pdf2_sa, cos_p;
@@ -238,7 +246,7 @@ vec3 integrate(const scene *sc, const integrator_opts *opt, const ray *camera, s
             add_Lk(&sum, k, v3_mul(beta, direct_from_light(sc, opt, &p, smp, k, st)));
 
         /* the last bounce needs a continuation ray only to find emitters by direction sampling */
-        if (k == opt->bmax && !uses_dir_sampling(opt->direct)) break;
+        if (k == kmax && !uses_dir_sampling(opt->direct)) break;
 
         /* the next vertex q, in a direction chosen with pdf2: beta *= f G(p, q) / pdf2_area(q) */
         wi_local = sample_dir(opt, &p, smp, k, &pdf2_sa);
@@ -256,7 +264,8 @@ vec3 integrate(const scene *sc, const integrator_opts *opt, const ray *camera, s
             add_Lk(&sum, k, v3_mul(beta, direct_from_dir(sc, opt, &p, &q, &ray_pq, pdf2_sa)));
 
         /* "et on arrête quand ?" */
-        if (opt->rr_depth >= 0 && k >= opt->rr_depth && k < opt->bmax && !survives_roulette(&beta, smp, k)) break;
+        if (opt->rr_depth >= 0 && k >= opt->rr_depth && k < kmax && !survives_roulette(&beta, smp, k)) break;
     }
+    if (k >= kmax && kmax < opt->bmax) st->paths_cut++;   /* it reached the cap: its next bounces are lost */
     return sum.L;
 }

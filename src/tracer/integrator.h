@@ -18,6 +18,9 @@ extern const char *const DIR_STRATEGY_NAMES[];
 extern const char *const DIRECT_STRATEGY_NAMES[];
 
 #define BOUNCES_INF 1000000   /* --bounces A:inf */
+/* The hard bounce cap of every path, whatever --bounces says: Kd >= 1 (or Kd + Ks > 1) and
+ * --rr off would otherwise never end a path. 1000 is also the largest finite --bounces. */
+#define BOUNCES_CAP 1000
 
 typedef struct {
     light_strategy light;
@@ -29,6 +32,7 @@ typedef struct {
 
 typedef struct {
     uint64_t camera_rays, continuation_rays, shadow_rays;
+    uint64_t paths_cut;       /* paths that reached BOUNCES_CAP bounces, cut there (--bounces A:inf) */
 } trace_stats;
 
 /* Returns the radiance L_bmin + ... + L_bmax along the camera ray, summed in path order, drawing its

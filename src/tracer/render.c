@@ -230,6 +230,7 @@ static void add_stats(trace_stats *sum, const trace_stats *st)
     sum->camera_rays += st->camera_rays;
     sum->continuation_rays += st->continuation_rays;
     sum->shadow_rays += st->shadow_rays;
+    sum->paths_cut += st->paths_cut;
 }
 
 static int alloc_layers(render_result *out, int n, int w, int h)
@@ -320,8 +321,9 @@ void render_print_stats(const render_result *r, int spp, int npixels)
     double secs = r->seconds > 0 ? r->seconds : 1e-9;
     uint64_t rays = st->camera_rays + st->continuation_rays + st->shadow_rays;
     fprintf(stderr, "%.2f s, %d spp, %.2f Msamples/s, %.2f Mrays/s (camera %llu, continuation %llu, shadow %llu), "
-            "%llu NaN/Inf samples\n",
+            "%llu NaN/Inf samples, %llu paths cut at %d bounces\n",
             r->seconds, spp, (double)spp * npixels / secs * 1e-6, (double)rays / secs * 1e-6,
             (unsigned long long)st->camera_rays, (unsigned long long)st->continuation_rays,
-            (unsigned long long)st->shadow_rays, (unsigned long long)r->nonfinite);
+            (unsigned long long)st->shadow_rays, (unsigned long long)r->nonfinite,
+            (unsigned long long)st->paths_cut, BOUNCES_CAP);
 }

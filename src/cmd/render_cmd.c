@@ -62,7 +62,7 @@ static int check_render_args(render_args *a)
         fprintf(stderr, "pathlab render: --resume needs --spp N (the samples wanted in all) or --time SEC\n");
         return 1;
     }
-    if (render_adaptive_check(a)) return 1;
+    if (render_adaptive_check(a) || render_check_camera_flags(a)) return 1;
     if (a->ro.time_limit > 0 && !a->spp_given && !a->samples_given && !a->target_given) a->ro.spp = 1 << 30;   /* --time alone: no cap */
     return check_sampler_args(a);
 }

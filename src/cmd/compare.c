@@ -35,6 +35,7 @@
 #include "image/mosaic.h"
 #include "tracer/render.h"
 #include "util/cli.h"
+#include "sys/output_path.h"
 
 #define MAX_EST 16
 #define CALIB_FRACTION 0.2    /* of --time: the length of the last calibration render */
@@ -147,7 +148,7 @@ static int check_flags(const comparison *c)
     if (c->spp_given && c->time > 0.0f) { fprintf(stderr, "pathlab: compare: --spp (equal samples) or --time (equal time), not both\n"); return 1; }
     if (c->ref_var && !c->ref) { fprintf(stderr, "pathlab: compare: --ref-var goes with --ref\n"); return 1; }
     if (c->ref && c->ref_spp) { fprintf(stderr, "pathlab: compare: --ref-spp is for a rendered reference, not with --ref\n"); return 1; }
-    return render_check_camera_flags(&c->base);
+    return render_check_camera_flags(&c->base) || output_dir_check("compare", "-o", c->dir);
 }
 
 /* Each estimator writes DIR/SLUG.*: not one of compare's own files, nor another estimator's. */

@@ -6,6 +6,7 @@
 #include <string.h>
 #include "image/radiance.h"
 #include "util/cli.h"
+#include "sys/output_path.h"
 
 int diff_compute(diff_stats *s, const image *a, const image *ref)
 {
@@ -57,6 +58,8 @@ int diff_heatmap(image *out, const image *a, const image *ref, double scale)
     }
     return 0;
 }
+
+static const char *const IMAGE_EXTS[] = {".pfm", ".ppm", ".png", NULL};
 
 #define DIFF_USAGE "usage: pathlab diff A.pfm REF.pfm [--heatmap OUT.ppm|OUT.png] [--scale S]\n" \
                    "       pathlab diff A.pfm [B.pfm ...] --ref REF.pfm   (the arguments as grade takes them)\n"
@@ -136,6 +139,7 @@ int diff_main(int argc, char **argv)
         return 2;
     }
     if (!ref || n < 1) { fprintf(stderr, "pathlab diff: needs an image and a reference\n" DIFF_USAGE); free(words); return 2; }
+    if (heat && n == 1 && output_path_check("diff", "--heatmap", heat, IMAGE_EXTS)) { free(words); return 2; }
     if (heat && (img_format_of(heat) == IMG_UNKNOWN || n > 1)) {
         fprintf(stderr, n > 1 ? "pathlab diff: --heatmap %s: with one image only\n"
                               : "pathlab diff: --heatmap %s: unknown image format (use .pfm, .ppm or .png)\n", heat);

@@ -15,6 +15,7 @@
 #include "cmd/grade_diagnose.h"
 #include "cmd/grade_print.h"
 #include "cmd/render_files.h"
+#include "sys/output_path.h"
 
 #define GRADE_USAGE \
     "usage: pathlab grade IMAGE.pfm... | FOLDER --ref REF.pfm [--alpha A] [--report FILE.md|FILE.csv]\n" \
@@ -128,6 +129,10 @@ static int add_folder(grade_args *a, const char *dir, int cap)
 
 static int check_outputs(const grade_args *a)
 {
+    static const char *const images[] = {".pfm", ".ppm", ".png", NULL}, *const reports[] = {".md", ".csv", NULL};
+    if (a->heatmap && (a->nimages > 1 ? output_dir_check("grade", "--heatmap", a->heatmap)
+                                      : output_path_check("grade", "--heatmap", a->heatmap, images))) return 1;
+    if (a->report && output_path_check("grade", "--report", a->report, reports)) return 1;
     if (a->heatmap && !(a->nimages > 1 ? is_dir(a->heatmap) : img_format_of(a->heatmap) != IMG_UNKNOWN)) {
         fprintf(stderr, a->nimages > 1 ? "pathlab grade: --heatmap %s: with several images, give a folder that exists\n"
                                        : "pathlab grade: --heatmap %s: unknown image format (use .pfm, .ppm or .png)\n", a->heatmap);

@@ -16,6 +16,7 @@
 #include "cmd/merge.h"
 #include "cmd/render_cmd.h"
 #include "cmd/version.h"
+#include "sys/interrupt.h"
 #include "util/cli.h"
 
 static const char HEADER[] = "pathlab — a teaching path tracer (see README.md)\n\nusage:\n";
@@ -207,6 +208,7 @@ static int asks_help(int argc, char **argv)
 int main(int argc, char **argv)
 {
     const command *c;
+    interrupt_quit_on_signal();   /* Ctrl-C at any moment leaves no temporary file (render: two steps) */
     if (argc < 2) { help_all(stderr); return 2; }
     if (!strcmp(argv[1], "--version")) return version_main(1, argv + 1);
     if (!strcmp(argv[1], "help") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {

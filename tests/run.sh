@@ -43,8 +43,8 @@ run_one() {   # FILE: runs it, leaves its output, exit status and milliseconds i
         *) "$t" > "$log/$name.out" 2>&1 ;;
     esac
     rc=$?
+    rm -f "$log/$name.run"   # first: the heartbeat must not speak of a file that has ended
     echo "$rc $(( ($(date +%s%N) - start) / 1000000 ))" > "$log/$name.end"
-    rm -f "$log/$name.run"
 }
 
 heartbeat() {   # every 30 s, a line for each file still running (in the background until the end)
@@ -56,7 +56,7 @@ heartbeat() {   # every 30 s, a line for each file still running (in the backgro
             [ -e "$r" ] || continue
             name=$(basename "$r" .run)
             el=$(( $(date +%s) - $(cat "$r" 2> /dev/null || date +%s) ))
-            [ "$el" -ge 30 ] || continue
+            [ "$el" -ge 30 ] && [ -e "$r" ] || continue
             printf 'still running: %s (%dm%02ds, %d passed, %d failed so far)\n' "$name" $((el / 60)) $((el % 60)) \
                 "$(grep -c '^PASS ' "$log/$name.out" 2> /dev/null)" "$(grep -c '^FAIL ' "$log/$name.out" 2> /dev/null)"
         done

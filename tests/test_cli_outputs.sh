@@ -21,12 +21,12 @@ mkdir -p "$TMP/dir.pfm"
 {
 refuse "render -o in a missing folder" "^pathlab render: -o $TMP/no/x.pfm: the folder $TMP/no does not exist" $PATHLAB render $S $big -o "$TMP/no/x.pfm"
 refuse "render -o a folder" "-o $TMP/dir.pfm: is a folder" $PATHLAB render $S $big -o "$TMP/dir.pfm"
-refuse "render -o .jpg" "unknown extension \(use .pfm, .ppm or .png\)" $PATHLAB render $S $big -o "$TMP/x.jpg"
+refuse "render -o .jpg" "unknown image format \(use .pfm, .ppm or .png\)" $PATHLAB render $S $big -o "$TMP/x.jpg"
 refuse "render --variance in a missing folder" "^pathlab render: --variance $TMP/no/v.pfm: the folder" $PATHLAB render $S $big -o "$TMP/x.pfm" --variance "$TMP/no/v.pfm"
 refuse "render --variance = -o" "three different files" $PATHLAB render $S $big -o "$TMP/x.pfm" --variance "$TMP/x.pfm"
 refuse "render --sample-count in a missing folder" "^pathlab render: --sample-count $TMP/no/c.pfm" \
     $PATHLAB render $S --size 2048x2048 --target-error 0.001 -o "$TMP/x.pfm" --sample-count "$TMP/no/c.pfm"
-refuse "render --sample-count .png" "--sample-count .*unknown extension \(use .pfm\)" \
+refuse "render --sample-count .png" "--sample-count .*c.png.*pfm" \
     $PATHLAB render $S --size 2048x2048 --target-error 0.001 -o "$TMP/x.pfm" --sample-count "$TMP/c.png"
 refuse "render --write-view in a missing folder" "^pathlab render: --write-view $TMP/no/v.view" $PATHLAB render $S $big -o "$TMP/x.pfm" --write-view "$TMP/no/v.view"
 mkdir -p "$TMP/x_L2.pfm"
@@ -38,7 +38,7 @@ refuse "convert to .tif" "unknown" $PATHLAB convert ref/cornell.pfm "$TMP/x.tif"
 refuse "merge to a missing folder" "^pathlab merge: output $TMP/no/m.pfm" $PATHLAB merge "$TMP/no/m.pfm" ref/cornell.pfm
 refuse "merge --variance in a missing folder" "^pathlab merge: --variance $TMP/no/v.pfm" $PATHLAB merge "$TMP/m.pfm" ref/cornell.pfm --variance "$TMP/no/v.pfm"
 refuse "grade --report in a missing folder" "^pathlab grade: --report $TMP/no/r.md" $PATHLAB grade ref/cornell_L1.pfm --ref ref/cornell.pfm --report "$TMP/no/r.md"
-refuse "grade --report .txt" "--report .*unknown extension \(use .md or .csv\)" $PATHLAB grade ref/cornell_L1.pfm --ref ref/cornell.pfm --report "$TMP/r.txt"
+refuse "grade --report .txt" "--report .*r.txt: use a name ending in .md" $PATHLAB grade ref/cornell_L1.pfm --ref ref/cornell.pfm --report "$TMP/r.txt"
 refuse "grade --heatmap in a missing folder" "^pathlab grade: --heatmap $TMP/no/h.png" $PATHLAB grade ref/cornell_L1.pfm --ref ref/cornell.pfm --heatmap "$TMP/no/h.png"
 refuse "compare -o under a missing folder" "^pathlab compare: -o $TMP/no/cmp" $PATHLAB compare $S --estimators light $big -o "$TMP/no/cmp"
 touch "$TMP/afile"

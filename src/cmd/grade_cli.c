@@ -130,9 +130,6 @@ static int add_folder(grade_args *a, const char *dir, int cap)
 static int check_outputs(const grade_args *a)
 {
     static const char *const images[] = {".pfm", ".ppm", ".png", NULL}, *const reports[] = {".md", ".csv", NULL};
-    if (a->heatmap && (a->nimages > 1 ? output_dir_check("grade", "--heatmap", a->heatmap)
-                                      : output_path_check("grade", "--heatmap", a->heatmap, images))) return 1;
-    if (a->report && output_path_check("grade", "--report", a->report, reports)) return 1;
     if (a->heatmap && !(a->nimages > 1 ? is_dir(a->heatmap) : img_format_of(a->heatmap) != IMG_UNKNOWN)) {
         fprintf(stderr, a->nimages > 1 ? "pathlab grade: --heatmap %s: with several images, give a folder that exists\n"
                                        : "pathlab grade: --heatmap %s: unknown image format (use .pfm, .ppm or .png)\n", a->heatmap);
@@ -142,7 +139,10 @@ static int check_outputs(const grade_args *a)
         fprintf(stderr, "pathlab grade: --report %s: use a name ending in .md (Markdown) or .csv\n", a->report);
         return 1;
     }
-    return 0;
+    /* then where they go: the folder exists and can be written */
+    if (a->heatmap && (a->nimages > 1 ? output_dir_check("grade", "--heatmap", a->heatmap)
+                                      : output_path_check("grade", "--heatmap", a->heatmap, images))) return 1;
+    return a->report && output_path_check("grade", "--report", a->report, reports);
 }
 
 static int parse_args(grade_args *a, int argc, char **argv)

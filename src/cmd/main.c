@@ -212,7 +212,7 @@ int main(int argc, char **argv)
     if (argc < 2) { help_all(stderr); return 2; }
     if (!strcmp(argv[1], "--version")) return version_main(1, argv + 1);
     if (!strcmp(argv[1], "help") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
-        if (argc < 3) { help_all(stdout); return 0; }
+        if (argc < 3 || !strcmp(argv[2], "help")) { help_all(stdout); return 0; }
         if (argc > 3) { fprintf(stderr, "pathlab help: one command at a time (pathlab help COMMAND)\n"); return 2; }
         c = find_command(argv[2]);
         return c ? help_one(c) : unknown_command(argv[2]);

@@ -56,7 +56,7 @@ static int check_outputs(const render_args *a)
         return 1;
     }
     if (a->variance && output_path_check("render", "--variance", a->variance, PFM_EXT)) return 1;
-    if (a->sample_count && output_path_check("render", "--sample-count", a->sample_count, PFM_EXT)) return 1;
+    if (a->sample_count && output_path_check("render", "--sample-count", a->sample_count, NULL)) return 1;   /* .pfm: render_adaptive_check */
     if (a->write_view && output_path_check("render", "--write-view", a->write_view, NULL)) return 1;
     if ((a->variance && !strcmp(a->variance, a->out)) || (a->sample_count && !strcmp(a->sample_count, a->out))
         || (a->variance && a->sample_count && !strcmp(a->variance, a->sample_count))) {

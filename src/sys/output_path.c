@@ -57,7 +57,7 @@ static int known_extension(const char *cmd, const char *flag, const char *path, 
     if (dot && (!slash || dot > slash))
         for (k = 0; exts[k]; k++)
             if (!strcasecmp(dot, exts[k])) return 0;
-    snprintf(why, sizeof why, "unknown extension (use");
+    snprintf(why, sizeof why, "unknown %sformat (use", !strcmp(exts[0], ".pfm") ? "image " : "");
     for (k = 0; exts[k] && strlen(why) + strlen(exts[k]) + 8 < sizeof why; k++)
         snprintf(why + strlen(why), sizeof why - strlen(why), "%s %s", k == 0 ? "" : exts[k + 1] ? "," : " or", exts[k]);
     snprintf(why + strlen(why), sizeof why - strlen(why), ")");

@@ -32,3 +32,8 @@ zcheck_expect() {
     if [ "$rc" -eq "$want" ]; then pass "$name ($msg)"; else fail "$name: zcheck exit $rc, wanted $want: $msg"; fi
 }
 PFMTOOL=$BUILD/tests/pfmtool
+# skip NAME WHY: a check that cannot run here (a tool missing), counted apart by tests/run.sh
+skip() { echo "SKIP $*"; }
+# have_oiio: 0 if OpenImageIO's idiff and oiiotool are installed (make test-deps installs them when it
+# can); PATHLAB_NO_OIIO=1 pretends they are not, to try the skips
+have_oiio() { [ -z "${PATHLAB_NO_OIIO:-}" ] && command -v idiff > /dev/null 2>&1 && command -v oiiotool > /dev/null 2>&1; }

@@ -5,14 +5,20 @@
 # Environment: BUILD (build folder, default build), PATHLAB (the program, default ./pathlab),
 # TEST_JOBS (how many test files run at once, default 2: much of a test file is serial — the shell,
 # small renders, zcheck — so two at a time keep both cores busy; 1 runs them one after the other).
-# A test file's lines are printed together when it ends, so the output is never interleaved.
+# A test file's lines are printed together when it ends, so the output is never interleaved; a
+# file still running after 30 s gets a line "still running: NAME (1m30s, 12 passed, 0 failed so
+# far)" every 30 s (its PASS/FAIL lines counted as they come), so a long file on a loaded machine
+# is never minutes of silence, and its lines stay together at its end. "SKIP" lines (a check that
+# cannot run here, e.g. without OpenImageIO) are counted apart; the last line stays "N passed, N failed".
 set -u
 cd "$(dirname "$0")/.."
 BUILD=${BUILD:-build}
 export PATHLAB=${PATHLAB:-./pathlab} BUILD
 jobs=${TEST_JOBS:-2}
 case $jobs in ''|*[!0-9]*|0) echo "tests/run.sh: TEST_JOBS must be a positive integer, got '$jobs'" >&2; exit 2 ;; esac
-log=$(mktemp -d); trap 'rm -rf "$log"' EXIT
+log=$(mktemp -d)
+hb=
+trap '[ -n "$hb" ] && kill "$hb" 2> /dev/null; rm -rf "$log"' EXIT
 only=${1:-}
 
 # The slowest files first, so that the last one to end is a short one (their names only order the
@@ -31,27 +37,46 @@ run_one() {   # FILE: runs it, leaves its output, exit status and milliseconds i
     local t=$1 name start rc
     name=$(basename "$t")
     start=$(date +%s%N)
+    echo $((start / 1000000000)) > "$log/$name.run"
     case "$t" in
         *.sh) bash "$t" > "$log/$name.out" 2>&1 ;;
         *) "$t" > "$log/$name.out" 2>&1 ;;
     esac
     rc=$?
+    rm -f "$log/$name.run"   # first: the heartbeat must not speak of a file that has ended
     echo "$rc $(( ($(date +%s%N) - start) / 1000000 ))" > "$log/$name.end"
 }
 
-passed=0; failed=0
+heartbeat() {   # every 30 s, a line for each file still running (in the background until the end)
+    local r name el s
+    trap '[ -n "${s:-}" ] && kill "$s" 2> /dev/null; exit 0' TERM
+    while :; do
+        sleep 30 & s=$!; wait "$s"
+        for r in "$log"/*.run; do
+            [ -e "$r" ] || continue
+            name=$(basename "$r" .run)
+            el=$(( $(date +%s) - $(cat "$r" 2> /dev/null || date +%s) ))
+            [ "$el" -ge 30 ] && [ -e "$r" ] || continue
+            printf 'still running: %s (%dm%02ds, %d passed, %d failed so far)\n' "$name" $((el / 60)) $((el % 60)) \
+                "$(grep -c '^PASS ' "$log/$name.out" 2> /dev/null)" "$(grep -c '^FAIL ' "$log/$name.out" 2> /dev/null)"
+        done
+    done
+}
+
+passed=0; failed=0; skipped=0
 report() {   # NAME: prints the file's FAIL lines and its count line, adds to the totals
-    local name=$1 rc ms p f
+    local name=$1 rc ms p f k
     read -r rc ms < "$log/$name.end"
-    p=$(grep -c '^PASS ' "$log/$name.out"); f=$(grep -c '^FAIL ' "$log/$name.out")
+    p=$(grep -c '^PASS ' "$log/$name.out"); f=$(grep -c '^FAIL ' "$log/$name.out"); k=$(grep -c '^SKIP ' "$log/$name.out")
     if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then
         echo "FAIL $name: exited with status $rc without a FAIL line; its last lines:"
         tail -n 15 "$log/$name.out" | sed 's/^/    /'
         f=1
     fi
-    grep '^FAIL ' "$log/$name.out" | sed "s/^/  [$name] /"
-    printf '%-28s %3d passed, %d failed  (%d.%02ds)\n' "$name" "$p" "$f" $((ms / 1000)) $((ms % 1000 / 10))
-    passed=$((passed + p)); failed=$((failed + f))
+    grep -E '^(FAIL|SKIP) ' "$log/$name.out" | sed "s/^/  [$name] /"
+    printf '%-28s %3d passed, %d failed%s  (%d.%02ds)\n' "$name" "$p" "$f" "$([ "$k" -gt 0 ] && echo ", $k skipped")" \
+        $((ms / 1000)) $((ms % 1000 / 10))
+    passed=$((passed + p)); failed=$((failed + f)); skipped=$((skipped + k))
     rm -f "$log/$name.end"
 }
 report_ended() {   # reports the files that have ended since the last call
@@ -59,15 +84,19 @@ report_ended() {   # reports the files that have ended since the last call
     for e in "$log"/*.end; do [ -e "$e" ] && report "$(basename "$e" .end)"; done
 }
 
-running=0
+heartbeat & hb=$!
+running=0; pids=()
 for t in "${list[@]}"; do
     name=$(basename "$t")
     [ -n "$only" ] && [[ "$name" != *"$only"* ]] && continue
     if [ "$running" -ge "$jobs" ]; then wait -n; running=$((running - 1)); report_ended; fi
     run_one "$t" &
+    pids+=($!)
     running=$((running + 1))
 done
-wait
+[ ${#pids[@]} -gt 0 ] && wait "${pids[@]}"
+kill "$hb" 2> /dev/null; wait "$hb" 2> /dev/null; hb=
 report_ended
+[ "$skipped" -gt 0 ] && echo "$skipped checks skipped (a tool missing: see the SKIP lines above)"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

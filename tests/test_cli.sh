@@ -64,7 +64,7 @@ expect_err "no emitters: warning" "no emitters"
 if [ -f "$out" ] && [ "$(tail -c 768 "$out" | tr -d '\0' | wc -c)" -eq 0 ]; then pass "no emitters: black image"; else fail "no emitters: image missing or not black"; fi
 
 # an output that cannot be written: status 1, a message naming it, nothing left behind
-expect_status "unwritable output: status 1" 1 $PATHLAB render scenes/cornell.obj --size 8x8 --spp 1 --quiet -o "$TMP/no/such/dir/x.pfm"
+expect_status "output in a missing folder: status 2, before rendering" 2 $PATHLAB render scenes/cornell.obj --size 8x8 --spp 1 --quiet -o "$TMP/no/such/dir/x.pfm"
 expect_err "unwritable output named" "no/such/dir/x.pfm"
 # the help lists the strategy names from the tables the parser reads: every name it shows is accepted
 $PATHLAB help > "$TMP/help" 2>&1

@@ -144,6 +144,6 @@ else fail "grade: no command from the sidecar: $(grep -o 'a reference at this si
 # 9. the files of a render are renamed together: a variance that cannot be written leaves no new image
 $R --spp 2 -o "$TMP/set.pfm" --variance "$TMP/set_var.pfm"
 cp "$TMP/set.pfm" "$TMP/set_before.pfm"
-expect_status "a variance in a folder that does not exist: exit 1" 1 $R --spp 4 --seed 3 -o "$TMP/set.pfm" --variance "$TMP/nofolder/v.pfm"
+expect_status "a variance in a folder that does not exist: exit 2 (checked before rendering)" 2 $R --spp 4 --seed 3 -o "$TMP/set.pfm" --variance "$TMP/nofolder/v.pfm"
 same_bytes "the image of the earlier render is left whole, not replaced by a half set" "$TMP/set.pfm" "$TMP/set_before.pfm"
 if [ -z "$(ls "$TMP" | grep -E '\.pending|\.tmp')" ]; then pass "no temporary file left"; else fail "left: $(ls "$TMP" | grep -E '\.pending|\.tmp')"; fi

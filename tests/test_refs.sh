@@ -89,6 +89,7 @@ EOF
 # id NAME WANT A A_VAR REF REF_VAR: idiff at F from the noise; WANT 0 (pass) or 2 (idiff fails)
 id() {
     local name=$1 want=$2 a=$3 va=$4 b=$5 vb=$6 F rc
+    have_oiio || { skip "$name (needs OpenImageIO's idiff)"; return; }
     F=$(threshold "$va" "$vb" "$b") || { fail "$name: no threshold (python3?)"; return; }
     idiff -v -fail "$F" -failpercent $IDIFF_PCT -warn "$F" -warnpercent $IDIFF_PCT "$a" "$b" > "$TMP/idiff" 2>&1; rc=$?
     local info; info="F $F: $(grep -E 'pixels .* over' "$TMP/idiff" | head -1 | xargs)"
@@ -97,7 +98,7 @@ id() {
     else fail "$name: idiff status $rc, wanted $want ($info): $(tail -3 "$TMP/idiff" | xargs)"; fi
 }
 
-if ! command -v idiff > /dev/null; then fail "idiff not found (OpenImageIO tools; make test installs them)"; fi
+have_oiio || echo "note: idiff not found (OpenImageIO tools; make test-deps installs them as root or with sudo): its checks are skipped"
 seed=900
 for s in $SCENES; do
     IFS=: read -r name spp flags <<< "$s"

@@ -36,6 +36,7 @@
 #include "image/mosaic.h"
 #include "tracer/render.h"
 #include "util/cli.h"
+#include "sys/output_path.h"
 
 #define MAX_EST 16
 #define CALIB_FRACTION 0.2    /* of --time: the length of the last calibration render */
@@ -98,14 +99,14 @@ static int split_args(int argc, char **argv, const cli_flag *own, char **mine, i
     int i, k;
     for (i = 1; i < argc; i++) {
         for (k = 0; RENDER_ONLY[k]; k++)
-            if (!strcmp(argv[i], RENDER_ONLY[k])) {
+            if (cli_flag_is(argv[i], RENDER_ONLY[k])) {
                 fprintf(stderr, "pathlab: compare: %s is a flag of render only\n", argv[i]);
                 return 1;
             }
-        for (k = 0; own[k].name && strcmp(own[k].name, argv[i]); k++) continue;
+        for (k = 0; own[k].name && !cli_flag_is(argv[i], own[k].name); k++) continue;
         if (!own[k].name) { rest[(*nrest)++] = argv[i]; continue; }
-        mine[(*nmine)++] = argv[i];
-        if (own[k].kind != CLI_SWITCH && i + 1 < argc) mine[(*nmine)++] = argv[++i];
+        mine[(*nmine)++] = argv[i];   /* --flag=value carries its value */
+        if (own[k].kind != CLI_SWITCH && !strchr(argv[i], '=') && i + 1 < argc) mine[(*nmine)++] = argv[++i];
     }
     return 0;
 }
@@ -148,7 +149,7 @@ static int check_flags(const comparison *c)
     if (c->spp_given && c->time > 0.0f) { fprintf(stderr, "pathlab: compare: --spp (equal samples) or --time (equal time), not both\n"); return 1; }
     if (c->ref_var && !c->ref) { fprintf(stderr, "pathlab: compare: --ref-var goes with --ref\n"); return 1; }
     if (c->ref && c->ref_spp) { fprintf(stderr, "pathlab: compare: --ref-spp is for a rendered reference, not with --ref\n"); return 1; }
-    return 0;
+    return render_check_camera_flags(&c->base) || output_dir_check("compare", "-o", c->dir);
 }
 
 /* Each estimator writes DIR/SLUG.*: not one of compare's own files, nor another estimator's. */

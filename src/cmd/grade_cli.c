@@ -19,6 +19,7 @@
 #include "cmd/grade_page.h"
 #include "cmd/grade_print.h"
 #include "cmd/render_files.h"
+#include "sys/output_path.h"
 
 #define GRADE_USAGE \
     "usage: pathlab grade IMAGE.pfm... | FOLDER --ref REF.pfm [--alpha A] [--report FILE.md|.csv|.html] [--pages DIR]\n" \
@@ -135,6 +136,7 @@ static int add_folder(grade_args *a, const char *dir, int cap)
 
 static int check_outputs(const grade_args *a)
 {
+    static const char *const images[] = {".pfm", ".ppm", ".png", NULL}, *const reports[] = {".md", ".csv", ".html", NULL};
     if (a->heatmap && !(a->nimages > 1 ? is_dir(a->heatmap) : img_format_of(a->heatmap) != IMG_UNKNOWN)) {
         fprintf(stderr, a->nimages > 1 ? "pathlab grade: --heatmap %s: with several images, give a folder that exists\n"
                                        : "pathlab grade: --heatmap %s: unknown image format (use .pfm, .ppm or .png)\n", a->heatmap);
@@ -144,7 +146,11 @@ static int check_outputs(const grade_args *a)
         fprintf(stderr, "pathlab grade: --report %s: use a name ending in .md (Markdown), .csv or .html\n", a->report);
         return 1;
     }
-    return 0;
+    /* then where they go: the folder exists and can be written */
+    if (a->heatmap && (a->nimages > 1 ? output_dir_check("grade", "--heatmap", a->heatmap)
+                                      : output_path_check("grade", "--heatmap", a->heatmap, images))) return 1;
+    if (a->pages && output_dir_check("grade", "--pages", a->pages)) return 1;
+    return a->report && output_path_check("grade", "--report", a->report, reports);
 }
 
 /* dir/file (file NULL: dir alone) as an absolute path: the working folder before it when relative. */

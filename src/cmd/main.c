@@ -1,6 +1,8 @@
-/* main.c — pathlab's command line: the help text, and each command handed to its own file
- * (render_cmd.c, convert.c, diff.c, grade_cli.c, compare.c, bench_rays.c, check_sampling.c,
- * check_sampler.c). */
+/* main.c — pathlab's command line: the commands, each with its help, handed to its own file
+ * (render_cmd.c, convert.c, diff.c, grade_cli.c, compare.c, merge.c, bench_rays.c,
+ * check_sampling.c, check_sampler.c).
+ * A new command is one entry of COMMANDS: its name, its main, the lines of the overview
+ * (`pathlab help`) and the parts of its own help (`pathlab NAME --help`, `pathlab help NAME`). */
 #include <stdio.h>
 #include <string.h>
 #include "cmd/check_sampler.h"
@@ -15,31 +17,51 @@
 #include "cmd/render_cmd.h"
 #include "cmd/version.h"
 #include "cmd/view.h"
+#include "sys/interrupt.h"
+#include "util/cli.h"
 
-static const char *USAGE =
-    "pathlab — a teaching path tracer (see README.md)\n"
-    "\n"
-    "usage:\n"
-    "  pathlab render SCENE.obj [flags] -o FILE.pfm|FILE.ppm|FILE.png\n"
-    "  pathlab bench-rays MESH.obj [-r RES] [-t THREADS]\n"
-    "  pathlab check-sampling [--samples N] [--seed S] [--threads T] [--quiet]\n"
-    CHECK_SAMPLER_USAGE
+static const char HEADER[] = "pathlab — a teaching path tracer (see README.md)\n\nusage:\n";
+static const char FOOTER[] =
+    "  pathlab help [COMMAND] | COMMAND --help | --version\n"
+    "\n";
+static const char SYN_RENDER[] = "  pathlab render SCENE.obj [flags] -o FILE.pfm|FILE.ppm|FILE.png\n";
+static const char SYN_BENCH[] = "  pathlab bench-rays MESH.obj [-r RES] [-t THREADS]   rays per second of the BVH on a mesh\n";
+static const char SYN_CHECK_SAMPLING[] =
+    "  pathlab check-sampling [--samples N] [--seed S] [--threads T] [--quiet]   chi-square tests of pathlab's own samplers\n";
+static const char SYN_DIFF[] =
     "  pathlab diff A.pfm REF.pfm [--heatmap OUT.ppm|OUT.png] [--scale S]   (or A.pfm [B.pfm ...] --ref REF.pfm)\n"
     "                heatmap of |A - REF|: black 0 to white S (default: the largest difference, so\n"
-    "                give the same --scale to compare two heatmaps)\n"
-    "  pathlab grade IMAGE.pfm... | FOLDER --ref REF.pfm [--alpha A] [--report FILE.md|FILE.csv]\n"
-    "                [--heatmap OUT.png|FOLDER] [--block B] [--var REF_VAR.pfm] [--layers PREFIX] [--details]\n"
-    "                is each IMAGE - REF noise or bias, and if bias, the likely mistake (below; docs/grading.md)\n"
-    COMPARE_USAGE
-    MERGE_USAGE
-    VIEW_USAGE
+    "                give the same --scale to compare two heatmaps)\n";
+static const char SYN_GRADE[] =
+    "  pathlab grade IMAGE.pfm... | FOLDER --ref REF.pfm [--alpha A] [--report FILE.md|FILE.csv|FILE.html]\n"
+    "                [--pages DIR] [--heatmap OUT.png|FOLDER] [--block B] [--var REF_VAR.pfm] [--layers PREFIX] [--details]\n"
+    "                is each IMAGE - REF noise or bias, and if bias, the likely mistake (pathlab grade --help; docs/grading.md)\n";
+static const char SYN_CONVERT[] =
     "  pathlab convert IN.pfm OUT.png|OUT.ppm|OUT.pfm [--exposure STOPS]   view a PFM (e.g. a --split layer);\n"
-    "                prints the size and each channel's mean, min and max\n"
-    "  pathlab help | --version\n"
-    "\n"
-    ;
+    "                prints the size and each channel's mean, min and max\n";
+static const char MORE_BENCH[] =
+    "  -r RES        the rays: a RES x RES grid of camera rays (default 1024)\n"
+    "  -t THREADS    worker threads (default 1)\n";
+static const char MORE_DIFF[] =
+    "  prints RMSE, relMSE, MAE, max, PSNR and the mean difference (with its standard error)\n"
+    "  --heatmap OUT.ppm|OUT.png   also write the heatmap of |A - REF|\n"
+    "  --scale S     the heatmap's white (default: the largest difference)\n"
+    "  --ref REF.pfm the reference, for several images (one line each)\n";
+static const char MORE_MERGE[] =
+    "  --variance OUT_var.pfm   also write the variance of the merged mean (the inputs' variances, found beside them)\n";
+static const char MORE_CONVERT[] =
+    "  --exposure STOPS   PPM and PNG: multiply by 2^STOPS before the sRGB curve (default 0)\n";
+static const char MORE_VIEW[] =
+    "  --ref REF.pfm   the reference: split view, signed difference, its value under the mouse\n"
+    "  --var VAR.pfm   the first image's variance (for the z-score; else STEM_var.pfm or its sidecar's)\n"
+    "  --layers PREFIX a strip of PREFIX_L0.pfm, PREFIX_L1.pfm... (default: the first image's --split layers)\n"
+    "  --title T       the page's title\n"
+    "  in the page: left/right or n/p cycle the images, 1-9 pick one; i, s, d: image, split, difference;\n"
+    "  r, g, b: the channels; + and -: exposure, a: automatic; f: fit, 0: one pixel a pixel. No network needed\n";
+static const char SYN_VERSION[] = "  pathlab version   the version (the git revision it was built from), as --version\n";
+
 /* in parts: ISO C99 promises string literals of 4095 characters only */
-static const char *USAGE_RENDER =
+static const char USAGE_RENDER[] =
     "render flags:\n"
     "  -o FILE              output image; .pfm (linear float), .ppm or .png (8-bit sRGB)\n"
     "  --spp N              samples per pixel (default 16), rendered in passes: every pixel gets sample i\n"
@@ -74,7 +96,7 @@ static const char *USAGE_RENDER =
     "  --variance FILE.pfm  also write the variance of each pixel's mean (with --split, one per bounce too)\n";
 
 /* The third part: adaptive sampling (docs/adaptive.md). */
-static const char *USAGE_ADAPTIVE =
+static const char USAGE_ADAPTIVE[] =
     "adaptive sampling (docs/adaptive.md): a pilot of --pilot samples per pixel, from another seed and never kept,\n"
     "decides each pixel's count n(x); pixel x then gets the samples 0..n(x)-1 of the uniform render (unbiased)\n"
     "  --target-error E     n(x) for a relative standard error E of each pixel's mean (e.g. 0.01; the largest of\n"
@@ -87,7 +109,7 @@ static const char *USAGE_ADAPTIVE =
     "  not with --samples, --resume or merge: pixels with different counts do not combine\n";
 
 /* C99 compilers need only take string literals of 4095 characters: the help is in two parts. */
-static const char *USAGE_TOOLS =
+static const char USAGE_TOOLS[] =
     "grade (exit 0 all pass, 1 a fail, 2 an input error), on d = IMAGE - REF per pixel-channel, at family-wise level\n"
     "alpha per image (default 0.01; alpha/3 to each family below, Sidak within it); the noise is measured on d:\n"
     "  exact pixels where REF_var.pfm (found beside REF) is 0, e.g. the background: compared as numbers\n"
@@ -99,39 +121,113 @@ static const char *USAGE_TOOLS =
     "  several images or a FOLDER: one line each, a summary; --report writes them as a Markdown or CSV table;\n"
     "               --details prints each image's tests in full; --heatmap FOLDER writes one heatmap per image\n"
     "  --heatmap    the reference in grey, significantly brighter blocks red, darker blue\n"
-    "  --spp N --ref-spp M (with the variance) a per-pixel Z-test assuming the reference's estimator (information only)\n"
-    COMPARE_HELP;
+    "  --spp N --ref-spp M (with the variance) a per-pixel Z-test assuming the reference's estimator (information only)\n";
+static const char COMPARE_MORE[] = COMPARE_HELP "  render flags (pathlab render --help) apply to every estimator\n";
 
-/* The commands, by name. */
+static int version_main(int argc, char **argv)
+{
+    (void)argv;
+    if (argc > 1) { fprintf(stderr, "pathlab version: takes no arguments\n"); return 2; }
+    printf("pathlab %s\n", pathlab_revision());
+    return 0;
+}
+
+/* The commands, by name: their lines in the overview, and the parts of their own help printed
+ * after those lines (NULL-terminated). own_help: the command prints its help itself on --help. */
 typedef struct {
     const char *name;
     int (*run)(int argc, char **argv);   /* argv[0] is the command's name */
+    const char *synopsis;
+    const char *help[4];
+    int own_help;
 } command;
 
 static const command COMMANDS[] = {
-    {"render", render_main}, {"bench-rays", bench_rays_main}, {"check-sampling", check_sampling_main},
-    {"check-sampler", check_sampler_main},
-    {"diff", diff_main}, {"grade", grade_main}, {"compare", compare_main}, {"convert", convert_main},
-    {"merge", merge_main}, {"view", view_main},
-    {NULL, NULL}};
+    {"render", render_main, SYN_RENDER, {USAGE_RENDER, USAGE_ADAPTIVE, NULL}, 0},
+    {"bench-rays", bench_rays_main, SYN_BENCH, {MORE_BENCH, NULL}, 0},
+    {"check-sampling", check_sampling_main, SYN_CHECK_SAMPLING, {NULL}, 1},
+    {"check-sampler", check_sampler_main, CHECK_SAMPLER_USAGE, {NULL}, 1},
+    {"diff", diff_main, SYN_DIFF, {MORE_DIFF, NULL}, 0},
+    {"grade", grade_main, SYN_GRADE, {USAGE_TOOLS, NULL}, 0},
+    {"compare", compare_main, COMPARE_USAGE, {COMPARE_MORE, NULL}, 0},
+    {"merge", merge_main, MERGE_USAGE, {MORE_MERGE, NULL}, 0},
+    {"convert", convert_main, SYN_CONVERT, {MORE_CONVERT, NULL}, 0},
+    {"view", view_main, VIEW_USAGE, {MORE_VIEW, NULL}, 0},
+    {"version", version_main, SYN_VERSION, {NULL}, 0},
+    {NULL, NULL, NULL, {NULL}, 0}};
 
-static void help(FILE *f)
+/* Everything: the overview, then each command's own help. */
+static void help_all(FILE *f)
 {
-    help_print(f, USAGE);
-    help_print(f, USAGE_RENDER);
-    help_print(f, USAGE_ADAPTIVE);
-    help_print(f, USAGE_TOOLS);
+    const command *c;
+    int k;
+    help_print(f, HEADER);
+    for (c = COMMANDS; c->name; c++) help_print(f, c->synopsis);
+    help_print(f, FOOTER);
+    for (c = COMMANDS; c->name; c++)
+        for (k = 0; c->help[k]; k++) help_print(f, c->help[k]);
+}
+
+/* One command's help on stdout: its overview lines and its flags; 0. */
+static int help_one(const command *c)
+{
+    char *args[3];
+    int k;
+    if (c->own_help) {
+        args[0] = (char *)c->name, args[1] = "--help", args[2] = NULL;
+        return c->run(2, args);
+    }
+    help_print(stdout, "usage:\n");
+    help_print(stdout, c->synopsis);
+    for (k = 0; c->help[k]; k++) help_print(stdout, c->help[k]);
+    return 0;
+}
+
+static const command *find_command(const char *name)
+{
+    const command *c;
+    for (c = COMMANDS; c->name; c++)
+        if (!strcmp(name, c->name)) return c;
+    return NULL;
+}
+
+/* A short error for a name that is no command, with the closest command's name; 2. */
+static int unknown_command(const char *name)
+{
+    const command *c;
+    const char *best = NULL;
+    int d = 0;
+    for (c = COMMANDS; c->name; c++) cli_consider(name, c->name, &best, &d);
+    cli_consider(name, "help", &best, &d);
+    fprintf(stderr, "pathlab: unknown command '%.200s'", name);
+    if (best) fprintf(stderr, "; did you mean '%s'?", best);
+    fprintf(stderr, " (pathlab help lists the commands)\n");
+    return 2;
+}
+
+/* -h or --help among a command's arguments (a file named -h is written ./-h). */
+static int asks_help(int argc, char **argv)
+{
+    int i;
+    for (i = 1; i < argc; i++)
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return 1;
+    return 0;
 }
 
 int main(int argc, char **argv)
 {
     const command *c;
-    if (argc < 2) { help(stderr); return 2; }
-    for (c = COMMANDS; c->name; c++)
-        if (!strcmp(argv[1], c->name)) return c->run(argc - 1, argv + 1);
-    if (!strcmp(argv[1], "--version")) { printf("pathlab %s\n", pathlab_revision()); return 0; }
-    if (!strcmp(argv[1], "help") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) { help(stdout); return 0; }
-    fprintf(stderr, "pathlab: unknown command '%s'\n\n", argv[1]);
-    help(stderr);
-    return 2;
+    interrupt_quit_on_signal();   /* Ctrl-C at any moment leaves no temporary file (render: two steps) */
+    if (argc < 2) { help_all(stderr); return 2; }
+    if (!strcmp(argv[1], "--version")) return version_main(1, argv + 1);
+    if (!strcmp(argv[1], "help") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
+        if (argc < 3 || !strcmp(argv[2], "help")) { help_all(stdout); return 0; }
+        if (argc > 3) { fprintf(stderr, "pathlab help: one command at a time (pathlab help COMMAND)\n"); return 2; }
+        c = find_command(argv[2]);
+        return c ? help_one(c) : unknown_command(argv[2]);
+    }
+    c = find_command(argv[1]);
+    if (!c) return unknown_command(argv[1]);
+    if (asks_help(argc - 1, argv + 1)) return help_one(c);
+    return c->run(argc - 1, argv + 1);
 }

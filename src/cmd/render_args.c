@@ -266,6 +266,27 @@ static int write_view(const render_args *a)
     return textfile_close(f, tmp, a->write_view);
 }
 
+int render_check_camera_flags(const render_args *a)
+{
+    const view *f = &a->flags;
+    char v[64];
+    if (a->fov && !(f->fov > 0.0f && f->fov < 180.0f)) {
+        snprintf(v, sizeof v, "%g", f->fov);
+        return cli_fail(a->cmd, "--fov", "a vertical field of view in degrees, more than 0 and less than 180 (e.g. 40)", v);
+    }
+    if (a->up && !(v3_length(f->up) > 0.0f)) return cli_fail(a->cmd, "--up", "a direction, not 0,0,0", "0,0,0");
+    if (a->eye && a->target && !(v3_length(v3_sub(f->target, f->eye)) > 0.0f)) {
+        fprintf(stderr, "pathlab %s: --eye and --target are the same point: the camera would look nowhere\n", a->cmd);
+        return 1;
+    }
+    if (a->eye && a->target && a->up
+        && !(v3_length(v3_cross(v3_sub(f->target, f->eye), f->up)) > 1e-6f * v3_length(v3_sub(f->target, f->eye)) * v3_length(f->up))) {
+        fprintf(stderr, "pathlab %s: --up is parallel to the view direction (--target minus --eye): the image's up is undefined\n", a->cmd);
+        return 1;
+    }
+    return 0;
+}
+
 int render_make_camera(render_args *a, const scene *s, camera *cam)
 {
     vec3 lo, hi;

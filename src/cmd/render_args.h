@@ -30,6 +30,10 @@ void render_flag_table(render_args *a, cli_flag t[RENDER_NFLAGS]);
 /* One argument argv[*i]: a flag of the table (advancing *i past its value), or a word, which is the
  * scene. 0 if understood and valid, else 1 after printing why. */
 int render_parse_flag(render_args *a, int argc, char **argv, int *i);
+/* The camera flags that cannot make a camera whatever the scene (--fov out of (0, 180), --up 0,0,0,
+ * --eye equal to --target, --up along the view): checked before the scene loads. 0, or 1 after
+ * printing why, naming the flag. */
+int render_check_camera_flags(const render_args *a);
 /* The view: --orbiter FILE, --view FILE or else SCENE.view if it exists, then the camera flags on top,
  * then framing for what is left; the camera made of it, written to --write-view if given.
  * 0, or 1 after printing why. */

@@ -11,6 +11,7 @@
 #include "cmd/version.h"
 #include "stats/combine.h"
 #include "sys/interrupt.h"
+#include "sys/output_path.h"
 #include "sys/progress.h"
 
 /* What a Sobol sampler cannot do: 1 after saying why. */
@@ -32,20 +33,46 @@ static int check_sampler_args(const render_args *a)
     return 0;
 }
 
+static const char *const IMAGE_EXTS[] = {".pfm", ".ppm", ".png", NULL};
+static const char *const PFM_EXT[] = {".pfm", NULL};
+
+/* Every file the render will write, checked before the scene is read: the folder exists and can be
+ * written, the extension is known (the --split layers and their variances go beside -o and
+ * --variance, so checking those covers them). 0, or 1 after printing why. */
+static int check_outputs(const render_args *a)
+{
+    char layer[4200];
+    int k;
+    if (output_path_check("render", "-o", a->out, IMAGE_EXTS)) return 1;
+    for (k = a->ro.io.bmin; a->ro.split && a->ro.io.bmax != BOUNCES_INF && k <= a->ro.io.bmax; k++) {
+        render_files_layer_path(layer, sizeof layer, a->out, k);
+        if (output_path_check("render", "--split", layer, IMAGE_EXTS)) return 1;
+        if (!a->variance) continue;
+        render_files_layer_path(layer, sizeof layer, a->variance, k);
+        if (output_path_check("render", "--split --variance", layer, PFM_EXT)) return 1;
+    }
+    if (a->variance && img_format_of(a->variance) != IMG_PFM) {
+        fprintf(stderr, "pathlab render: --variance %s: the variance is written as .pfm\n", a->variance);
+        return 1;
+    }
+    if (a->variance && output_path_check("render", "--variance", a->variance, PFM_EXT)) return 1;
+    if (a->sample_count && output_path_check("render", "--sample-count", a->sample_count, NULL)) return 1;   /* .pfm: render_adaptive_check */
+    if (a->write_view && output_path_check("render", "--write-view", a->write_view, NULL)) return 1;
+    if ((a->variance && !strcmp(a->variance, a->out)) || (a->sample_count && !strcmp(a->sample_count, a->out))
+        || (a->variance && a->sample_count && !strcmp(a->variance, a->sample_count))) {
+        fprintf(stderr, "pathlab render: -o, --variance and --sample-count must be three different files\n");
+        return 1;
+    }
+    return 0;
+}
+
 /* What render needs beyond valid flag values: a scene, an output it can write, a last bounce for
  * --split, sample flags that go together. 0, or 1 after printing why. */
 static int check_render_args(render_args *a)
 {
     if (!a->scene) { fprintf(stderr, "pathlab render: needs a scene: pathlab render SCENE.obj -o FILE\n"); return 1; }
     if (!a->out) { fprintf(stderr, "pathlab render: needs an output: -o FILE.pfm, -o FILE.ppm or -o FILE.png\n"); return 1; }
-    if (img_format_of(a->out) == IMG_UNKNOWN) {
-        fprintf(stderr, "pathlab render: -o %s: unknown image format (use .pfm, .ppm or .png)\n", a->out);
-        return 1;
-    }
-    if (a->variance && img_format_of(a->variance) != IMG_PFM) {
-        fprintf(stderr, "pathlab render: --variance %s: the variance is written as .pfm\n", a->variance);
-        return 1;
-    }
+    if (check_outputs(a)) return 1;
     if (a->ro.split && a->ro.io.bmax == BOUNCES_INF) {
         fprintf(stderr, "pathlab render: --split needs a last bounce, e.g. --bounces 0:8\n");
         return 1;
@@ -62,7 +89,7 @@ static int check_render_args(render_args *a)
         fprintf(stderr, "pathlab render: --resume needs --spp N (the samples wanted in all) or --time SEC\n");
         return 1;
     }
-    if (render_adaptive_check(a)) return 1;
+    if (render_adaptive_check(a) || render_check_camera_flags(a)) return 1;
     if (a->ro.time_limit > 0 && !a->spp_given && !a->samples_given && !a->target_given) a->ro.spp = 1 << 30;   /* --time alone: no cap */
     return check_sampler_args(a);
 }

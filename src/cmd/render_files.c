@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 void render_files_layer_path(char *dst, size_t cap, const char *out, int k)
@@ -73,10 +74,25 @@ static const char *stage(file_set *fs, const char *final)
     return fs->pending[fs->n++];
 }
 
+/* 0 if every final name can take a rename: none is a folder (rename would fail there after the
+ * files before it were renamed, leaving a new image beside an old variance). 1 after saying which. */
+static int renamable(const file_set *fs)
+{
+    struct stat st;
+    int i;
+    for (i = 0; i < fs->n; i++)
+        if (stat(fs->final[i], &st) == 0 && S_ISDIR(st.st_mode)) {
+            fprintf(stderr, "%s: cannot write: a folder has that name (none of the %d files of this render was written)\n",
+                    fs->final[i], fs->n);
+            return 1;
+        }
+    return 0;
+}
+
 /* Renames every staged file over its final name (commit), or removes them all; frees the set. */
 static int finish(file_set *fs, int commit)
 {
-    int i, err = 0;
+    int i, err = commit && renamable(fs);
     interrupt_hold();
     for (i = 0; i < fs->n; i++) {
         if (commit && !err && rename(fs->pending[i], fs->final[i]) != 0) {

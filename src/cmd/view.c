@@ -8,6 +8,7 @@
 #include "cmd/render_files.h"
 #include "cmd/sidecar.h"
 #include "image/html_page.h"
+#include "sys/output_path.h"
 #include "util/cli.h"
 
 #define VIEW_MAX_IMAGES 64
@@ -91,6 +92,8 @@ static int read_layers(view_data *d, const view_args *a, const char **first)
     return 0;
 }
 
+static const char *const HTML_EXTS[] = {".html", ".htm", NULL};
+
 static int parse_args(view_args *a, int argc, char **argv)
 {
     const cli_flag flags[] = {
@@ -104,7 +107,7 @@ static int parse_args(view_args *a, int argc, char **argv)
     memset(a, 0, sizeof *a);
     if (cli_parse("view", argc, argv, tables, NULL, a->words, VIEW_MAX_IMAGES, &a->nwords)) return 2;
     if (!a->nwords || !a->out) { fprintf(stderr, "pathlab view: needs an image and -o PAGE.html\nusage:\n" VIEW_USAGE); return 2; }
-    return 0;
+    return output_path_check("view", "-o", a->out, HTML_EXTS) ? 2 : 0;   /* before reading anything */
 }
 
 static void free_data(view_data *d)

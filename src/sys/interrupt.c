@@ -1,5 +1,7 @@
-/* interrupt.c — two-step signal handling. The handler only sets a flag or, the second time,
- * unlinks the registered temporary files and _exits: both async-signal-safe. */
+/* interrupt.c — signal handling in two modes. From interrupt_quit_on_signal (main, before any
+ * command) a signal unlinks the registered temporary files and _exits; from interrupt_install (a
+ * render) the first signal only sets a flag and the second does the same as a quit. Both are
+ * async-signal-safe: write, unlink, _exit. */
 #include "sys/interrupt.h"
 #include <pthread.h>
 #include <signal.h>
@@ -8,13 +10,13 @@
 
 #define MAX_TEMPS 4096
 
-static volatile sig_atomic_t first_signal;
+static volatile sig_atomic_t first_signal, two_step;
 static const char *volatile temp_name[MAX_TEMPS];   /* the caller's strings, valid until removed */
 
 static void on_signal(int sig)
 {
     int k;
-    if (!first_signal) {
+    if (two_step && !first_signal) {
         static const char msg[] = "\npathlab: interrupted: finishing the current pass to write the image reached "
                                   "(press Ctrl-C again to stop at once and write nothing)\n";
         first_signal = sig;
@@ -26,7 +28,9 @@ static void on_signal(int sig)
     _exit(128 + sig);
 }
 
-void interrupt_install(void)
+/* The handler for SIGINT and SIGTERM (also when the shell started pathlab with SIGINT ignored, as a
+ * script's background job: the tests interrupt such renders). */
+static void set_handler(void)
 {
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
@@ -37,6 +41,18 @@ void interrupt_install(void)
     sa.sa_flags = SA_RESTART;
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
+}
+
+void interrupt_quit_on_signal(void)
+{
+    two_step = 0;
+    set_handler();
+}
+
+void interrupt_install(void)
+{
+    two_step = 1;
+    set_handler();
 }
 
 int interrupt_signal(void) { return first_signal; }

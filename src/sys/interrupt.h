@@ -1,11 +1,15 @@
-/* interrupt.h — Ctrl-C (SIGINT) and SIGTERM during a render: the first asks the render to stop
- * after its current pass, so that the image reached is written; the second stops at once,
- * removing any temporary file being written, and writes nothing. Outside interrupt_install the
- * signals keep their default action (the program dies, and it has no temporary file then). */
+/* interrupt.h — Ctrl-C (SIGINT) and SIGTERM. Before a render (interrupt_quit_on_signal, set by
+ * main for every command): pathlab stops at once, removing any temporary file being written. During
+ * a render (interrupt_install): the first asks the render to stop after its current pass, so that
+ * the image reached is written; the second stops at once like the first mode, writing nothing.
+ * Either way a file is the old one or the whole new one (renamed into place), and no *.tmp.* or
+ * *.pending file is left. SIGKILL cannot be caught: it leaves the temporary files being written
+ * (NAME.pending, NAME.tmp.XXXXXX beside the output), never a half-written output. */
 #ifndef PATHLAB_INTERRUPT_H
 #define PATHLAB_INTERRUPT_H
 
-/* Installs the two-step handlers for SIGINT and SIGTERM. */
+/* Installs the handlers: quit at once (removing the temporary files), or the render's two steps. */
+void interrupt_quit_on_signal(void);
 void interrupt_install(void);
 /* 0, or the first signal received since interrupt_install (SIGINT or SIGTERM). */
 int interrupt_signal(void);

@@ -140,29 +140,99 @@ int cli_parse_value(const char *cmd, const cli_flag *f, const char *v, void *ctx
     return e ? cli_fail(cmd, f->name, e, v) : 0;
 }
 
-/* The flag of the tables named f, or NULL. */
-static const cli_flag *find_flag(const cli_flag *const *tables, const char *f)
+/* ---- did you mean: the closest name by edit distance ---- */
+
+int cli_distance(const char *a, const char *b)
+{
+    /* optimal string alignment: insertions, deletions, substitutions and swaps of two neighbours
+     * ("rendr", "--sp", "--sapmler"); three rows suffice, the words are cut at 63 characters */
+    int row[3][64], la = (int)strlen(a), lb = (int)strlen(b), i, j;
+    if (la > 63) la = 63;
+    if (lb > 63) lb = 63;
+    for (j = 0; j <= lb; j++) row[0][j] = j;
+    for (i = 1; i <= la; i++) {
+        int *r = row[i % 3], *p = row[(i - 1) % 3], *pp = row[(i + 1) % 3];
+        r[0] = i;
+        for (j = 1; j <= lb; j++) {
+            int cost = a[i - 1] != b[j - 1], d = p[j - 1] + cost;
+            if (p[j] + 1 < d) d = p[j] + 1;
+            if (r[j - 1] + 1 < d) d = r[j - 1] + 1;
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] && pp[j - 2] + 1 < d) d = pp[j - 2] + 1;
+            r[j] = d;
+        }
+    }
+    return row[la % 3][lb];
+}
+
+void cli_consider(const char *word, const char *name, const char **best, int *best_d)
+{
+    const char *w = word, *n = name;
+    int d, len;
+    while (*w == '-') w++;   /* --sp against --spp: the dashes are not part of the typo */
+    while (*n == '-') n++;
+    len = (int)strlen(n);
+    d = cli_distance(w, n);
+    if (strlen(w) >= 2 && !strncmp(n, w, strlen(w))) d = 1;   /* a prefix: --var for --variance */
+    /* close enough to be what was meant: one edit in a short name, two in a name of 6 or more */
+    if (d > (len >= 6 ? 2 : 1) || d >= len) return;
+    if (!*best || d < *best_d) { *best = name; *best_d = d; }
+}
+
+/* The flag of the tables named by f, the first `len` characters of it, or NULL. */
+static const cli_flag *find_flag(const cli_flag *const *tables, const char *f, size_t len)
 {
     int t, k;
     for (t = 0; tables[t]; t++)
         for (k = 0; tables[t][k].name; k++)
-            if (!strcmp(tables[t][k].name, f)) return &tables[t][k];
+            if (strlen(tables[t][k].name) == len && !strncmp(tables[t][k].name, f, len)) return &tables[t][k];
     return NULL;
+}
+
+/* "unknown flag", with the closest flag of the tables if one is close enough; returns 1. */
+static int unknown_flag(const char *cmd, const cli_flag *const *tables, const char *arg, size_t len)
+{
+    const char *best = NULL;
+    char word[64];
+    int t, k, d = 0;
+    snprintf(word, sizeof word, "%.*s", (int)(len < sizeof word ? len : sizeof word - 1), arg);
+    for (t = 0; tables[t]; t++)
+        for (k = 0; tables[t][k].name; k++) cli_consider(word, tables[t][k].name, &best, &d);
+    say_who(cmd);
+    fprintf(stderr, "unknown flag '%.*s'", (int)(len > 200 ? 200 : len), arg);
+    if (best) fprintf(stderr, "; did you mean '%s'?", best);
+    fprintf(stderr, " (pathlab %s --help lists its flags)\n", cmd ? cmd : "help");
+    return 1;
+}
+
+size_t cli_flag_length(const char *arg)
+{
+    const char *eq = strchr(arg, '=');
+    return arg[0] == '-' && arg[1] == '-' && eq ? (size_t)(eq - arg) : strlen(arg);
+}
+
+int cli_flag_is(const char *arg, const char *name)
+{
+    size_t n = cli_flag_length(arg);
+    return n == strlen(name) && !strncmp(arg, name, n);
 }
 
 int cli_parse_flag(const char *cmd, int argc, char **argv, int *i, const cli_flag *const *tables, void *ctx)
 {
-    const cli_flag *f = find_flag(tables, argv[*i]);
-    if (!f) {
+    const char *arg = argv[*i];
+    size_t len = cli_flag_length(arg);
+    const cli_flag *f = find_flag(tables, arg, len);
+    if (!f) return unknown_flag(cmd, tables, arg, len);
+    if (f->given) *f->given = 1;
+    if (arg[len] == '=') {   /* --flag=value, the same as --flag value */
+        if (f->kind != CLI_SWITCH) return cli_parse_value(cmd, f, arg + len + 1, ctx);
         say_who(cmd);
-        fprintf(stderr, "unknown flag '%s' (see pathlab help)\n", argv[*i]);
+        fprintf(stderr, "%s takes no value, got '%s'\n", f->name, arg);
         return 1;
     }
-    if (f->given) *f->given = 1;
     if (f->kind == CLI_SWITCH) return cli_parse_value(cmd, f, NULL, ctx);
     if (*i + 1 >= argc) {
         say_who(cmd);
-        fprintf(stderr, "%s needs a value (see pathlab help)\n", f->name);
+        fprintf(stderr, "%s needs a value (see pathlab %s --help)\n", f->name, cmd ? cmd : "help");
         return 1;
     }
     return cli_parse_value(cmd, f, argv[++*i], ctx);
@@ -180,9 +250,9 @@ int cli_parse(const char *cmd, int argc, char **argv, const cli_flag *const *tab
             words[(*nwords)++] = argv[i];
         } else {
             say_who(cmd);
-            if (max_words == 0) fprintf(stderr, "unexpected '%s': %s takes flags only (see pathlab help)\n", argv[i], cmd ? cmd : "it");
-            else fprintf(stderr, "unexpected '%s' after '%s': %s takes at most %d file name%s (see pathlab help)\n",
-                         argv[i], words[max_words - 1], cmd ? cmd : "it", max_words, max_words > 1 ? "s" : "");
+            if (max_words == 0) fprintf(stderr, "unexpected '%s': %s takes flags only (see pathlab %s --help)\n", argv[i], cmd ? cmd : "it", cmd ? cmd : "help");
+            else fprintf(stderr, "unexpected '%s' after '%s': %s takes at most %d file name%s (see pathlab %s --help)\n",
+                         argv[i], words[max_words - 1], cmd ? cmd : "it", max_words, max_words > 1 ? "s" : "", cmd ? cmd : "help");
             return 1;
         }
     }

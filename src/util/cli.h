@@ -4,6 +4,7 @@
  * Every command reads its arguments with cli_parse. */
 #ifndef PATHLAB_CLI_H
 #define PATHLAB_CLI_H
+#include <stddef.h>
 #include <stdint.h>
 #include "math/vec.h"
 
@@ -29,7 +30,7 @@ typedef struct {
 /* The arguments argv[1..argc-1] of command `cmd` ("render", "diff"...): flags of the tables (a flag
  * may appear in several tables: the first match wins), and up to max_words words (file names),
  * stored in words[] and counted in *nwords. Flags and words come in any order; a flag's value is
- * the next argument whatever it starts with (--eye -1,0,0). Returns 0, or 1 after printing what is
+ * the next argument whatever it starts with (--eye -1,0,0), or follows '=' (--spp=64). Returns 0, or 1 after printing what is
  * wrong (unknown flag, missing or bad value, one word too many). */
 int cli_parse(const char *cmd, int argc, char **argv, const cli_flag *const *tables, void *ctx,
               const char **words, int max_words, int *nwords);
@@ -37,6 +38,15 @@ int cli_parse(const char *cmd, int argc, char **argv, const cli_flag *const *tab
 int cli_parse_flag(const char *cmd, int argc, char **argv, int *i, const cli_flag *const *tables, void *ctx);
 /* The value of flag f, stored as f says (CLI_CUSTOM gets ctx); 0, or 1 after printing why. */
 int cli_parse_value(const char *cmd, const cli_flag *f, const char *value, void *ctx);
+/* The length of the flag's name in arg: up to the '=' of --flag=value, else all of it. */
+size_t cli_flag_length(const char *arg);
+/* 1 if arg is the flag `name`, alone or as name=value. */
+int cli_flag_is(const char *arg, const char *name);
+/* The edit distance of a and b (insert, delete, substitute, swap two neighbours). */
+int cli_distance(const char *a, const char *b);
+/* For "did you mean": if name is close enough to what the user typed (word, leading dashes aside) and
+ * closer than *best (NULL at first), sets *best = name and *best_d to its distance. */
+void cli_consider(const char *word, const char *name, const char **best, int *best_d);
 /* 1 if arg is a word, not a flag: it does not start with '-', or it is "-" alone. */
 int cli_is_word(const char *arg);
 /* Prints "pathlab CMD: FLAG expects WHAT, got 'VALUE'" ("pathlab: ..." if cmd is NULL); returns 1. */

@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# Outputs checked before any work (issue 13, part 4): a missing folder, a folder given as a file, an
+# unknown extension, for every file a command writes, is refused with status 2 and a message naming
+# the flag and the path, before the scene is read or a pixel rendered (the scene here is missing or
+# the render is big: a check done after the work would show in the message or the time); and a
+# --variance or --split set that cannot be written whole is not written at all.
+. "$(dirname "$0")/lib.sh"
+S=scenes/cornell.obj
+big="--size 2048x2048 --spp 4096"   # minutes of work: these runs must stop before rendering
+refuse() {   # NAME PATTERN COMMAND...: status 2 at once, stderr matching PATTERN
+    local name=$1 pat=$2 t0 t1; shift 2
+    t0=$(date +%s%N)
+    expect_status "$name: status 2" 2 timeout -k 5 20 "$@"   # a check after the work: killed, status 124
+    t1=$(date +%s%N)
+    expect_err "$name: named" "$pat"
+    if [ $(( (t1 - t0) / 1000000 )) -lt 5000 ]; then pass "$name: before the work ($(( (t1 - t0) / 1000000 )) ms)"
+    else fail "$name: took $(( (t1 - t0) / 1000000 )) ms: the check came after the work"; fi
+}
+mkdir -p "$TMP/dir.pfm"
+# shellcheck disable=SC2086
+{
+refuse "render -o in a missing folder" "^pathlab render: -o $TMP/no/x.pfm: the folder $TMP/no does not exist" $PATHLAB render $S $big -o "$TMP/no/x.pfm"
+refuse "render -o a folder" "-o $TMP/dir.pfm: is a folder" $PATHLAB render $S $big -o "$TMP/dir.pfm"
+refuse "render -o .jpg" "unknown image format \(use .pfm, .ppm or .png\)" $PATHLAB render $S $big -o "$TMP/x.jpg"
+refuse "render --variance in a missing folder" "^pathlab render: --variance $TMP/no/v.pfm: the folder" $PATHLAB render $S $big -o "$TMP/x.pfm" --variance "$TMP/no/v.pfm"
+refuse "render --variance = -o" "three different files" $PATHLAB render $S $big -o "$TMP/x.pfm" --variance "$TMP/x.pfm"
+refuse "render --sample-count in a missing folder" "^pathlab render: --sample-count $TMP/no/c.pfm" \
+    $PATHLAB render $S --size 2048x2048 --target-error 0.001 -o "$TMP/x.pfm" --sample-count "$TMP/no/c.pfm"
+refuse "render --sample-count .png" "--sample-count .*c.png.*pfm" \
+    $PATHLAB render $S --size 2048x2048 --target-error 0.001 -o "$TMP/x.pfm" --sample-count "$TMP/c.png"
+refuse "render --write-view in a missing folder" "^pathlab render: --write-view $TMP/no/v.view" $PATHLAB render $S $big -o "$TMP/x.pfm" --write-view "$TMP/no/v.view"
+mkdir -p "$TMP/x_L2.pfm"
+refuse "render --split: a layer's name taken by a folder" "--split $TMP/x_L2.pfm: is a folder" $PATHLAB render $S $big --bounces 0:3 --split -o "$TMP/x.pfm"
+refuse "render: a missing scene and a bad output: the output named first" "^pathlab render: -o $TMP/no/x.png" $PATHLAB render "$TMP/none.obj" -o "$TMP/no/x.png"
+refuse "diff --heatmap in a missing folder" "^pathlab diff: --heatmap $TMP/no/h.png" $PATHLAB diff ref/cornell.pfm ref/cornell.pfm --heatmap "$TMP/no/h.png"
+refuse "convert to a missing folder" "^pathlab convert: output $TMP/no/x.png" $PATHLAB convert ref/cornell.pfm "$TMP/no/x.png"
+refuse "convert to .tif" "unknown" $PATHLAB convert ref/cornell.pfm "$TMP/x.tif"
+refuse "merge to a missing folder" "^pathlab merge: output $TMP/no/m.pfm" $PATHLAB merge "$TMP/no/m.pfm" ref/cornell.pfm
+refuse "merge --variance in a missing folder" "^pathlab merge: --variance $TMP/no/v.pfm" $PATHLAB merge "$TMP/m.pfm" ref/cornell.pfm --variance "$TMP/no/v.pfm"
+refuse "grade --report in a missing folder" "^pathlab grade: --report $TMP/no/r.md" $PATHLAB grade ref/cornell_L1.pfm --ref ref/cornell.pfm --report "$TMP/no/r.md"
+refuse "grade --report .txt" "--report .*r.txt: use a name ending in .md" $PATHLAB grade ref/cornell_L1.pfm --ref ref/cornell.pfm --report "$TMP/r.txt"
+refuse "grade --heatmap in a missing folder" "^pathlab grade: --heatmap $TMP/no/h.png" $PATHLAB grade ref/cornell_L1.pfm --ref ref/cornell.pfm --heatmap "$TMP/no/h.png"
+refuse "compare -o under a missing folder" "^pathlab compare: -o $TMP/no/cmp" $PATHLAB compare $S --estimators light $big -o "$TMP/no/cmp"
+touch "$TMP/afile"
+refuse "compare -o a file" "exists and is not a folder" $PATHLAB compare $S --estimators light $big -o "$TMP/afile"
+}
+ls "$TMP"/no > /dev/null 2>&1 && fail "a refused run created $TMP/no" || pass "no refused run created a folder or file"
+
+# a --split/--variance set that fails at the end is not written at all: the folder named like
+# a layer's variance appears while the render runs (after the checks), so the rename would fail
+mkdir -p "$TMP/set"
+$PATHLAB render $S --size 32x32 --spp 2000 --bounces 0:3 --split --quiet -o "$TMP/set/b.pfm" --variance "$TMP/set/b_var.pfm" &
+pid=$!
+sleep 0.3; mkdir "$TMP/set/b_var_L2.pfm"
+wait $pid; rc=$?
+left=$(cd "$TMP/set" && ls | grep -v '^b_var_L2.pfm$' | tr '\n' ' ')
+if [ "$rc" -eq 1 ] && [ -z "$left" ]; then pass "a layer that cannot be written: status 1 and none of the 20 files written"
+else fail "a layer that cannot be written: status $rc, written: $left"; fi
+exit 0

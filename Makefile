@@ -129,6 +129,10 @@ test: $(PROG) $(TEST_BIN) $(TOOLS) test-deps
 
 # The numerical stress suite (tests/stress/run.sh): scaled and moved scenes, slivers, z-fighting,
 # sharp lobes, tiny and grazing lights, rays along edges, acne; about 2 minutes on 2 cores.
+# Every --direct x --light x --dir combination against the references (make test runs a subset of 12).
+test-estimators: $(PROG) $(TOOLS)
+	BUILD=$(BUILD) PATHLAB=./$(PROG) EST_ALL=1 tests/run.sh test_estimators
+
 stress: $(PROG) $(TOOLS)
 	BUILD=$(BUILD) PATHLAB=./$(PROG) tests/stress/run.sh
 
@@ -220,4 +224,4 @@ mutants:
 clean:
 	rm -rf build build-san build-clang-san build-fuzz build-native pathlab
 
-.PHONY: all run test test-deps fuzz stress refs bench bench-native bench-portable bench-cycles bench-cycles-deps grade-calibration clean mutants test-parallel test-slurm
+.PHONY: all run test test-estimators test-deps fuzz stress refs bench bench-native bench-portable bench-cycles bench-cycles-deps grade-calibration clean mutants test-parallel test-slurm

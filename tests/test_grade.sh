@@ -85,7 +85,7 @@ cp -r src "$TMP/broken/src"
 sed -i 's|beta = v3_mul(beta, v3_scale(f, cos_p / pdf2_sa));|beta = v3_mul(beta, v3_scale(f, (k == 1 ? 1.0f : cos_p) / pdf2_sa));|' "$TMP/broken/src/tracer/integrator.c"
 if cmp -s src/tracer/integrator.c "$TMP/broken/src/tracer/integrator.c"; then
     fail "cosine forgotten: the throughput line 'beta = v3_mul(beta, v3_scale(f, cos_p / pdf2_sa));' is no longer in src/tracer/integrator.c; update this test"
-elif ! ${CC:-cc} -std=c99 -D_POSIX_C_SOURCE=200809L -O1 -I"$TMP/broken/src" -o "$TMP/broken/pathlab" "$TMP"/broken/src/*/*.c -lm -lpthread 2> "$TMP/err"; then
+elif ! ${CC:-cc} -std=c99 -D_POSIX_C_SOURCE=200809L -O1 -I"$TMP/broken/src" -o "$TMP/broken/pathlab" "$TMP"/broken/src/*/*.c "${BUILD:-build}/gen/web_assets.c" -lm -lpthread 2> "$TMP/err"; then
     fail "cosine forgotten: the broken copy does not build: $(head -c 300 "$TMP/err")"
 else
     for spp in 4 64; do

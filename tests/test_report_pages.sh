@@ -95,7 +95,7 @@ expect_status "grade: one image with --pages, exit 0" 0 $PATHLAB grade "$G/class
 if [ -s "$G/one/alice.html" ] && grep -q "^page: $G/one/alice.html" "$TMP/out"; then pass "grade: one image's page written and named"
 else fail "grade: no $G/one/alice.html: $(cat "$TMP/out" | tail -3)"; fi
 expect_status "grade: --pages in a missing folder, exit 2" 2 $PATHLAB grade "$G/class/alice.pfm" --ref "$G/ref.pfm" --pages "$G/no/such"
-expect_err "grade: the pages' folder named" "cannot create the folder .*no/such"
+expect_err "grade: the pages' folder named" "--pages .*no/such: the folder .*/no does not exist"
 expect_status "grade: a missing reference with --pages, exit 2" 2 $PATHLAB grade "$G/class/alice.pfm" --ref "$G/none.pfm" --pages "$G/never"
 expect_no_file "grade: bad input makes no pages' folder" "$G/never"
 # students' folders holding files of one name: one page each, named by the path

@@ -11,16 +11,6 @@
 
 #define MAX_IMAGES 64
 
-/* text escaped into f; 1 when out of memory */
-static int put_esc(FILE *f, const char *text)
-{
-    char *e = html_escape(text);
-    if (!e) return 1;
-    fputs(e, f);
-    free(e);
-    return 0;
-}
-
 /* The table of table.md, one row per estimator. */
 static int put_table(FILE *f, const compare_page *p)
 {
@@ -31,9 +21,9 @@ static int put_table(FILE *f, const compare_page *p)
     for (k = 0; k < p->n; k++) {
         const compare_row *r = &p->rows[k];
         fputs("<tr><td>", f);
-        err |= put_esc(f, r->label);
+        err |= html_put_escaped(f, r->label);
         fputs("</td><td><code>", f);
-        err |= put_esc(f, r->flags);
+        err |= html_put_escaped(f, r->flags);
         fprintf(f, "</code></td><td>%d</td><td>%.3f</td><td>%.4g</td><td>%.4g</td><td>%.4g</td><td>%.4g</td><td>%.4g</td><td>%.3f</td></tr>\n",
                 r->spp, r->secs, r->rmse, r->relmse, r->mae, r->mse, r->eff, best > 0.0 ? r->eff / best : 0.0);
     }
@@ -48,10 +38,10 @@ static int put_code(FILE *f, char *line)
     int err = 0, code = 0;
     for (; (tick = strchr(line, '`')) != NULL; line = tick + 1, code = !code) {
         *tick = '\0';
-        err |= put_esc(f, line);
+        err |= html_put_escaped(f, line);
         fputs(code ? "</code>" : "<code>", f);
     }
-    err |= put_esc(f, line);
+    err |= html_put_escaped(f, line);
     if (code) fputs("</code>", f);
     return err;
 }
@@ -109,11 +99,11 @@ static int put_files(FILE *f, const compare_page *p)
     fputs("<p>Files: <a href=\"mosaic.png\">mosaic.png</a>, <a href=\"table.md\">table.md</a>, <a href=\"table.csv\">table.csv</a>", f);
     for (k = 0; k < p->n; k++) {
         fputs(", <a href=\"", f);
-        err |= put_esc(f, p->slugs[k]);
+        err |= html_put_escaped(f, p->slugs[k]);
         fputs(".pfm\">", f);
-        err |= put_esc(f, p->slugs[k]);
+        err |= html_put_escaped(f, p->slugs[k]);
         fputs(".pfm</a> (<a href=\"heat-", f);
-        err |= put_esc(f, p->slugs[k]);
+        err |= html_put_escaped(f, p->slugs[k]);
         fputs(".png\">heatmap</a>)", f);
     }
     fputs("</p>\n", f);

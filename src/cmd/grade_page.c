@@ -87,16 +87,6 @@ void grade_make_marks(grade_marks *out, const grade_report *r)
 
 /* ---- the pages ---- */
 
-/* text escaped into f; 1 when out of memory */
-static int put_esc(FILE *f, const char *text)
-{
-    char *e = html_escape(text);
-    if (!e) return 1;
-    fputs(e, f);
-    free(e);
-    return 0;
-}
-
 static const char *verdict_word(int status) { return status == 0 ? "PASS" : status == 1 ? "FAIL" : "UNREADABLE"; }
 
 static const char *base_name(const char *path) { return strrchr(path, '/') ? strrchr(path, '/') + 1 : path; }
@@ -107,20 +97,20 @@ static int put_verdict(FILE *f, const grade_page *p)
     char bias[128];
     int k, err = 0;
     grade_bias_text(bias, sizeof bias, p->row);
-    if (p->back) { fputs("<p><a href=\"", f); err |= put_esc(f, p->back); fputs("\">the class report</a></p>\n", f); }
+    if (p->back) { fputs("<p><a href=\"", f); err |= html_put_escaped(f, p->back); fputs("\">the class report</a></p>\n", f); }
     fprintf(f, "<p class=\"verdict\"><b>%s</b> against ", verdict_word(p->row->status));
-    err |= put_esc(f, p->ref_path);
+    err |= html_put_escaped(f, p->ref_path);
     fprintf(f, " at family-wise level alpha %g", p->r->alpha);
-    if (bias[0]) { fputs("; bias ", f); err |= put_esc(f, bias); }
-    if (p->row->where[0]) { fputs(" in ", f); err |= put_esc(f, p->row->where); }
+    if (bias[0]) { fputs("; bias ", f); err |= html_put_escaped(f, bias); }
+    if (p->row->where[0]) { fputs(" in ", f); err |= html_put_escaped(f, p->row->where); }
     fputs(".</p>\n", f);
     if (p->row->status == 1) fputs(p->nh ? "<p>Likely mistake:</p>\n<ul class=\"mistakes\">\n" : "<p>None of the catalogue of mistakes explains "
                                    "the difference (pathlab grade; docs/grading.md).</p>\n", f);
     for (k = 0; k < p->nh; k++) {
         fputs("<li>", f);
-        err |= put_esc(f, p->h[k].what);
+        err |= html_put_escaped(f, p->h[k].what);
         fputs(": ", f);
-        err |= put_esc(f, p->h[k].evidence);
+        err |= html_put_escaped(f, p->h[k].evidence);
         fputs("</li>\n", f);
     }
     if (p->row->status == 1 && p->nh) fputs("</ul>\n", f);
@@ -163,14 +153,14 @@ static int put_class_table(FILE *f, const grade_row *rows, int n)
         const grade_row *r = &rows[k];
         grade_bias_text(bias, sizeof bias, r);
         fputs("<tr><td>", f);
-        if (r->page[0]) { fputs("<a href=\"", f); err |= put_esc(f, r->page); fputs("\">", f); }
-        err |= put_esc(f, r->path);
+        if (r->page[0]) { fputs("<a href=\"", f); err |= html_put_escaped(f, r->page); fputs("\">", f); }
+        err |= html_put_escaped(f, r->path);
         fprintf(f, "%s</td><td>%s</td><td>", r->page[0] ? "</a>" : "", verdict_word(r->status));
-        err |= put_esc(f, bias);
+        err |= html_put_escaped(f, bias);
         fputs("</td><td>", f);
-        err |= put_esc(f, r->where);
+        err |= html_put_escaped(f, r->where);
         fputs("</td><td>", f);
-        err |= put_esc(f, r->mistake);
+        err |= html_put_escaped(f, r->mistake);
         fputs("</td></tr>\n", f);
     }
     fputs("</table>\n", f);

@@ -228,3 +228,12 @@ char *html_escape(const char *text)
     *o = 0;
     return out;
 }
+
+int html_put_escaped(FILE *f, const char *text)
+{
+    char *e = html_escape(text);
+    if (!e) return 1;
+    fputs(e, f);
+    free(e);
+    return 0;
+}

@@ -8,6 +8,7 @@
 #ifndef PATHLAB_HTML_PAGE_H
 #define PATHLAB_HTML_PAGE_H
 #include <stddef.h>
+#include <stdio.h>
 #include "image/image.h"
 
 typedef struct {
@@ -36,6 +37,8 @@ typedef struct {
 int html_page_write(const char *path, const html_page *page);
 /* A copy of text with & < > " ' escaped for HTML, to free; NULL when out of memory. */
 char *html_escape(const char *text);
+/* text escaped into f (for the pages' own HTML: tables, verdicts); 1 when out of memory. */
+int html_put_escaped(FILE *f, const char *text);
 /* "data:MIME;base64,..." of n bytes, to free; NULL when out of memory. The page's Content-Security-
  * Policy lets images load from data: URIs only (no file, no network): a PNG heatmap or an SVG plot in
  * before_html/after_html goes in as <img src="data:image/png;base64,...">. */

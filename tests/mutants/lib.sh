@@ -24,7 +24,7 @@ mutant_index() {
 # copy_tree DEST: copies the working tree's src/ tests/ scenes/ ref/ Makefile (uncommitted work
 # included, which `git archive` would miss) into the new folder DEST
 copy_tree() {
-    mkdir -p "$1" && (cd "$ROOT" && cp -r src tests scenes ref Makefile "$1/")
+    mkdir -p "$1" && (cd "$ROOT" && cp -r src tests scenes ref web tools Makefile "$1/")
 }
 
 # build_in DIR TARGETS...: builds there quietly (warnings of a mutant are expected: an unused

@@ -52,6 +52,7 @@ EOF
         esac
     done > "$d/cmds"
     echo "$CC $flags -c -o $d/origin_variant.o $d/origin.c" >> "$d/cmds"
+    echo "$CC $flags -c -o $d/web_assets.o ${BUILD:-build}/gen/web_assets.c" >> "$d/cmds"   # the viewer's, made by make
     if xargs -P "$(nproc 2>/dev/null || echo 2)" -I{} sh -c '{}' < "$d/cmds" > "$d/log" 2>&1 &&
        $CC -o "$d/pathlab" "$d"/*.o -lm -lpthread >> "$d/log" 2>&1; then ok=1; fi
     [ $ok = 1 ] || { echo "FAIL acne: could not build the '$1' variant: $(head -c 400 "$d/log")"; return 1; }

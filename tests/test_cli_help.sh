@@ -51,6 +51,9 @@ typo "render --sapmler sobol" "did you mean '--sampler'\?" $PATHLAB render scene
 typo "render --varaince" "did you mean '--variance'\?" $PATHLAB render scenes/cornell.obj --varaince v.pfm -o "$out"
 typo "grade --alhpa" "did you mean '--alpha'\?" $PATHLAB grade x.pfm --ref r.pfm --alhpa 0.01
 typo "diff --heatmpa" "did you mean '--heatmap'\?" $PATHLAB diff a.pfm b.pfm --heatmpa h.png
+typo "compare --estimatorz (its own flag)" "^pathlab compare: unknown flag '--estimatorz'; did you mean '--estimators'\?" $PATHLAB compare scenes/cornell.obj --estimatorz light -o "$TMP/cmp"
+typo "compare --sampeler (a render flag)" "^pathlab compare: unknown flag '--sampeler'; did you mean '--sampler'\?" $PATHLAB compare scenes/cornell.obj --estimators light --sampeler sobol -o "$TMP/cmp"
+typo "view --reff" "did you mean '--ref'\?" $PATHLAB view a.pfm --reff r.pfm -o "$TMP/v.html"
 expect_status "a far-off flag: status 2" 2 $PATHLAB render scenes/cornell.obj --frobnicate -o "$out"
 if grep -q "did you mean" "$TMP/err"; then fail "--frobnicate: a suggestion for a far-off word: $(cat "$TMP/err")"
 else pass "--frobnicate: no suggestion (nothing is close)"; fi

@@ -131,7 +131,10 @@ static int parse_flags(comparison *c, int argc, char **argv)
     mine[0] = rest[0] = argv[0];
     err = split_args(argc, argv, own, mine, &nmine, rest, &nrest)
           || cli_parse("compare", nmine, mine, tables, c, NULL, 0, &nwords);
+    c->base.cmd = "compare";
+    c->base.more_flags = own;
     for (i = 1; !err && i < nrest; i++) err = render_parse_flag(&c->base, nrest, rest, &i);
+    c->base.more_flags = NULL;   /* own[] ends here */
     free(mine);
     return err;
 }

@@ -184,7 +184,7 @@ void render_flag_table(render_args *a, cli_flag t[RENDER_NFLAGS])
 int render_parse_flag(render_args *a, int argc, char **argv, int *i)
 {
     cli_flag t[RENDER_NFLAGS];
-    const cli_flag *tables[2];
+    const cli_flag *tables[3];
     if (cli_is_word(argv[*i])) {
         if (a->scene) {
             fprintf(stderr, "pathlab %s: one scene only, got '%s' and '%s'\n", a->cmd, a->scene, argv[*i]);
@@ -195,7 +195,8 @@ int render_parse_flag(render_args *a, int argc, char **argv, int *i)
     }
     render_flag_table(a, t);
     tables[0] = t;
-    tables[1] = NULL;
+    tables[1] = a->more_flags;   /* a typo of compare's own flag gets its suggestion too */
+    tables[2] = NULL;
     return cli_parse_flag(a->cmd, argc, argv, i, tables, a);
 }
 

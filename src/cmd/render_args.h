@@ -8,6 +8,7 @@
 
 typedef struct {
     const char *cmd;                 /* the command, in messages: "render" (set by render_args_init) */
+    const cli_flag *more_flags;      /* the calling command's own flags, for "did you mean" (or NULL) */
     const char *scene, *out, *variance;
     float exposure;
     view vw, flags;                  /* flags: values given on the command line */

@@ -50,6 +50,9 @@ expect_err "view: size 1e10 16: file:line" "size-1e10.view:1: size 1e10 16: out 
 split_bin $D/fuzz-crash-view-size.bin "$TMP/crash"
 render_t "view: fuzz-crash-view-size.bin" 10 2 "$TMP/crash/s.obj" -o "$OUT"
 expect_err "view: fuzz-crash-view-size.bin: the size line named" "s.view:8: size 2521474836477 256: out of range"
+printf 'size 8 %s\n' "$(printf '3%.0s' $(seq 120))" > "$TMP/v0.view"   # found by make fuzz: finite in double, inf in float
+render_t "view: a 120-digit size (inf as a float) refused" 10 2 $D/quad-light.obj --view "$TMP/v0.view" -o "$OUT"
+expect_err "view: a 120-digit size: out of range at its line" "v0.view:1: size 8 3333.*\\.\\.\\.: out of range"
 printf 'eye 1e39 0 0\n' > "$TMP/v1.view"
 render_t "view: eye 1e39 (finite double, beyond float) refused" 10 2 $D/quad-light.obj --view "$TMP/v1.view" -o "$OUT"
 expect_err "view: eye 1e39: 'too large for a float', not 'up is parallel'" "v1.view:1: a number too large for a float"

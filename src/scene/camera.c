@@ -1,13 +1,12 @@
 /* camera.c — view files and the pinhole camera. */
 #include "scene/camera.h"
+#include "scene/objtext.h"
 #include <errno.h>
-#include <fcntl.h>
 #include <float.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 void view_defaults(view *vw)
 {
@@ -121,21 +120,6 @@ static void view_error(const char *path, int lineno, int rc, const char *line)
     }
 }
 
-/* Opens a view file for reading without blocking on a FIFO that has no writer (SCENE.view is
- * looked for beside every scene: a FIFO of that name must not hang the render; it reads as empty);
- * reads then wait for a writer's data, so that --view can read a pipe. NULL with errno set. */
-static FILE *open_view(const char *path)
-{
-    int fd = open(path, O_RDONLY | O_NOCTTY | O_NONBLOCK), err;
-    FILE *fp;
-    if (fd < 0) return NULL;
-    if (fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK) == 0 && (fp = fdopen(fd, "r"))) return fp;
-    err = errno;
-    close(fd);
-    errno = err;
-    return NULL;
-}
-
 int view_read(view *vw, const char *path)
 {
     size_t cap = 256;
@@ -143,7 +127,7 @@ int view_read(view *vw, const char *path)
     int lineno = 0, rc = 0;
     FILE *fp;
     if (!line) { fprintf(stderr, "%s: out of memory\n", path); return 1; }
-    if (!(fp = open_view(path))) {
+    if (!(fp = text_file_open(path, 0))) {   /* a FIFO named SCENE.view must not hang the render */
         free(line);
         return errno == ENOENT ? -1 : (fprintf(stderr, "%s: cannot open: %s\n", path, strerror(errno)), 1);
     }

@@ -283,7 +283,7 @@ static void test_render_flags(void)
           "render_parse_flag: scene, --bounces, --rr off, --light, --dir, --direct", "status %d: %s", rc, err);
     check(a.size && a.flags.width == 64 && a.flags.height == 32 && a.eye && a.flags.eye.z == -5.0f && a.ro.quiet && !a.target,
           "render_parse_flag: --size, --eye (given), --quiet", NULL);
-    split("--bounce 2 --bounces 0:inf other.obj --rr 7 --rr maybe --bounces 3:1");
+    split("--bounce 2 --bounces 0:inf other.obj --rr 7 --rr maybe --bounces 3:1 --rr-below 0.25 --rr-below 0");
     a.scene = "scene.obj";   /* the words of the first line are gone with it */
     a.cmd = "compare";
     rc = render_flag_at(&a, 1, &i);
@@ -298,6 +298,11 @@ static void test_render_flags(void)
     check(rc == 1 && strstr(err, "pathlab compare: --rr expects") && strstr(err, "'maybe'"), "render_parse_flag: messages name a.cmd, the flag, the value", "'%s'", err);
     rc = render_flag_at(&a, 10, NULL);
     check(rc == 1 && strstr(err, "--bounces expects") && strstr(err, "'3:1'"), "render_parse_flag: --bounces A:B needs A <= B", "'%s'", err);
+    check(a.ro.io.rr_below == 0.0f, "render_parse_flag: --rr-below is 0 (the sampler's default) until given", "%g", a.ro.io.rr_below);
+    rc = render_flag_at(&a, 12, NULL);
+    check(rc == 0 && a.ro.io.rr_below == 0.25f, "render_parse_flag: --rr-below T", "status %d, %g", rc, a.ro.io.rr_below);
+    rc = render_flag_at(&a, 14, NULL);
+    check(rc == 1 && strstr(err, "--rr-below expects") && strstr(err, "'0'"), "render_parse_flag: --rr-below 0 is refused", "'%s'", err);
 }
 
 int main(void)

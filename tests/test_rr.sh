@@ -6,7 +6,8 @@
 #  2. the same with the default --rr 3 (L4..L6 depend on it) against the same --rr off render; a
 #     path red wall -> green wall -> white reaches the roulette with throughput (0.025, 0.014,
 #     0.003) and survives with the clamped probability 0.05;
-#  3. glossy Cornell box, light sampling and cosine directions: on the Ns = 1000 floor f cos / pdf
+#  3. the Cornell box with --rr 1 --rr-below 0.2 (p_survive = max(beta) / 0.2) against --rr off;
+#  4. glossy Cornell box, light sampling and cosine directions: on the Ns = 1000 floor f cos / pdf
 #     reaches 13, so the throughput exceeds 1 and the survival probability is clamped to 1.
 # Each comparison is tests/zcheck's (see tests/test_estimators.sh): per-pixel Z-test at alpha 0.01
 # with Sidak's correction over the pixels, 99.75% of the pixel-channels must pass; 8x8 blocks and
@@ -23,7 +24,7 @@
 ZCHECK=$BUILD/tests/zcheck
 FAST=${PATHLAB_FAST:-0}
 KBAR=4           # the per-pixel bar applies to L0..L4 and to the total
-if [ "$FAST" = 1 ]; then KMAX=4 SPP=4096 ncomp=1; else KMAX=6 SPP=8192 ncomp=3; fi
+if [ "$FAST" = 1 ]; then KMAX=4 SPP=4096 ncomp=1; else KMAX=6 SPP=8192 ncomp=4; fi
 R="--size 24x24 --bounces 0:$KMAX --split --spp $SPP"
 ASUITE=$(awk -v n=$((ncomp * (KMAX + 2))) 'BEGIN { printf "%.3g", 1 - exp(log(0.99) / n) }')
 
@@ -68,6 +69,9 @@ compare "Cornell box, default estimators, --rr 1 against --rr off, $SPP spp" rr1
 if [ "$FAST" = 0 ]; then
     render rr3 cornell --seed 13 --rr 3 &&
     compare "Cornell box, default estimators, --rr 3 against --rr off, $SPP spp" rr3 off
+    # --rr-below 0.2: p_survive = 5 max(beta), so a survivor's throughput is up to 0.2, not 1
+    render rrb cornell --seed 16 --rr 1 --rr-below 0.2 &&
+    compare "Cornell box, default estimators, --rr 1 --rr-below 0.2 against --rr off, $SPP spp" rrb off
     G="--direct light --light solid-angle --dir cosine"
     # shellcheck disable=SC2086
     render goff cornell-glossy $G --seed 14 --rr off &&

@@ -90,6 +90,8 @@ static const char USAGE_RENDER[] =
     "  --dir {dir|}        how a direction is chosen at a surface (default brdf)\n"
     "  --direct {direct|}   the estimator of direct light (default mis-power)\n"
     "  --rr D|off           Russian roulette after D bounces (default 3)\n"
+    "  --rr-below T         the roulette thins paths whose throughput is below T: p_survive = max(beta)/T\n"
+    "                       (default 1 with --sampler independent, 1/3 with sobol and sobol1)\n"
     "  --sampler S          independent (default: the slides' Monte Carlo), sobol (4 scrambled Sobol sets a pixel:\n"
     "                       less noise, --variance with 3 dof) or sobol1 (1 set: the least noise, no --variance;\n"
     "                       docs/sampler.md). Sobol renders cannot be resumed or merged\n"

@@ -73,6 +73,16 @@ static int parse_rr(void *ctx, const char *flag, const char *v)
     return 0;
 }
 
+/* --rr-below T: the roulette thins paths whose throughput is below T, p_survive = max(beta) / T */
+static int parse_rr_below(void *ctx, const char *flag, const char *v)
+{
+    render_args *a = ctx;
+    double t;
+    if (parse_as(a, flag, v, CLI_DOUBLE, &t, 0.01, 100.0, NULL)) return 1;
+    a->ro.io.rr_below = (float)t;
+    return 0;
+}
+
 static int parse_size(void *ctx, const char *flag, const char *v)
 {
     render_args *a = ctx;
@@ -172,6 +182,7 @@ void render_flag_table(render_args *a, cli_flag t[RENDER_NFLAGS])
         {"--dir", CLI_CUSTOM, NULL, 0, 0, NULL, parse_dir, NULL},
         {"--direct", CLI_CUSTOM, NULL, 0, 0, NULL, parse_direct, NULL},
         {"--rr", CLI_CUSTOM, NULL, 0, 0, NULL, parse_rr, NULL},
+        {"--rr-below", CLI_CUSTOM, NULL, 0, 0, NULL, parse_rr_below, NULL},
         {"--orbiter", CLI_CUSTOM, NULL, 0, 0, NULL, parse_camera_file, NULL},
         {"--view", CLI_CUSTOM, NULL, 0, 0, NULL, parse_camera_file, NULL},
         {"--write-view", CLI_STRING, &a->write_view, 0, 0, NULL, NULL, NULL},

@@ -22,7 +22,7 @@ typedef struct {
     adaptive_opts ao;
 } render_args;
 
-#define RENDER_NFLAGS 29   /* the flags of render_flag_table, and its closing NULL entry */
+#define RENDER_NFLAGS 30   /* the flags of render_flag_table, and its closing NULL entry */
 
 /* The defaults of pathlab render (16 spp, seed 1, every core, independent, area, brdf, mis-power, 0:inf, rr 3). */
 void render_args_init(render_args *a);

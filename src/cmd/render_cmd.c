@@ -117,7 +117,8 @@ static void describe_render(const render_args *a, const scene *s, sidecar *m)
     const render_opts *o = &a->ro;
     const integrator_opts *io = &o->io;
     const view *v = &a->vw;
-    char bmax[16], rr[16];
+    char bmax[16], rr[48];
+    float rr_below;
     memset(m, 0, sizeof *m);
     strcpy(m->kind, "mean");
     strcpy(m->layer, "total");
@@ -125,7 +126,10 @@ static void describe_render(const render_args *a, const scene *s, sidecar *m)
     snprintf(m->scene, sizeof m->scene, "%s", a->scene);
     snprintf(m->scene_id, sizeof m->scene_id, "fnv1a64:%016" PRIx64, mesh_fingerprint(&s->m));
     snprintf(bmax, sizeof bmax, io->bmax == BOUNCES_INF ? "inf" : "%d", io->bmax);
-    snprintf(rr, sizeof rr, io->rr_depth < 0 ? "off" : "%d", io->rr_depth);
+    /* --rr-below only when it is not 1 (the classic rule): sidecars written before it stay comparable */
+    rr_below = io->rr_below > 0.0f ? io->rr_below : rr_below_default(o->sampler);
+    if (io->rr_depth < 0) snprintf(rr, sizeof rr, "off");
+    else snprintf(rr, sizeof rr, rr_below == 1.0f ? "%d" : "%d --rr-below %.6g", io->rr_depth, (double)rr_below);
     /* --sampler only when not independent (whatever the default): the sidecars written before it
      * existed stay comparable, and a sidecar without it is independent */
     snprintf(m->flags, sizeof m->flags, "--bounces %d:%s --light %s --dir %s --direct %s --rr %s --pixel-offset %.9g%s%s%s",

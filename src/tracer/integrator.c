@@ -174,24 +174,30 @@ static ray continuation_ray(const vertex *p, vec3 wi_local)
 }
 
 /* "et on arrête quand ?": Russian roulette. The path goes on with probability p_survive, which
- * follows its throughput, and a surviving path's throughput is divided by p_survive, so that
- * E[beta] is unchanged and no L_k is biased; the clamp at 0.05 bounds that weight by 20. The cap
+ * follows its throughput, p_survive = max(beta) / below, and a surviving path's throughput is
+ * divided by p_survive, so that E[beta] is unchanged and no L_k is biased; a survivor's throughput
+ * is then `below` at most, and the clamp at 0.05 bounds the weight 1 / p_survive by 20. With below
+ * = 1 (pbrt's rule) a path that has lost half of its throughput has one chance in two to go on;
+ * below = 1/3 keeps it for sure until its throughput falls under 0.95 / 3: more bounces, less
+ * noise from the roulette itself, which is what costs most once the samples are stratified. The cap
  * at RR_SURVIVE_MAX (Mitsuba 3 caps it at 0.95 too) ends every path after 1 / (1 - 0.95) = 20 more
  * bounces on average whatever the materials: with Kd >= 1 the throughput never falls, and a
  * survival probability of 1 ran every path to the bounce cap (0.8 s per sample in a closed box).
  * Returns 0 when the path stops. */
 #define RR_SURVIVE_MAX 0.95f
-static int survives_roulette(vec3 *beta, sampler *smp, int k)
+static int survives_roulette(vec3 *beta, sampler *smp, int k, float below)
 {
     vec3 before = *beta;
-    float p_survive = fminf(RR_SURVIVE_MAX, fmaxf(0.05f, v3_max_comp(before)));
+    float p_survive = fminf(RR_SURVIVE_MAX, fmaxf(0.05f, v3_max_comp(before) / below));
     if (sampler_1d(smp, sampler_dim(k, SAMPLER_DIM_ROULETTE)) >= p_survive) return 0;
     *beta = v3_scale(before, 1.0f / p_survive);
-    /* below the cap, p_survive is >= every channel of beta, which thus ends <= 1 (at the cap,
-     * materials with Kd + Ks > 1 may make beta grow without bound: their image has no limit) */
-    assert(p_survive == RR_SURVIVE_MAX || v3_max_comp(before) < 0.05f || v3_max_comp(*beta) <= 1.0f);
+    /* below the cap, p_survive is >= every channel of beta / below, which thus ends <= below (at
+     * the cap, materials with Kd + Ks > 1 may make beta grow without bound: their image has no limit) */
+    assert(p_survive == RR_SURVIVE_MAX || p_survive == 0.05f || v3_max_comp(*beta) <= below * 1.000001f);
     return 1;
 }
+
+float rr_below_default(sampler_kind kind) { return kind == SAMPLER_INDEPENDENT ? 1.0f : RR_BELOW_STRATIFIED; }
 
 /* The radiance of one camera ray: L = the sum in path order, and with Lk each L_k on its own. */
 typedef struct {
@@ -230,6 +236,7 @@ vec3 integrate(const scene *sc, const integrator_opts *opt, const ray *camera, s
      * probability below 0.95^(BOUNCES_CAP - rr_depth), never in practice; with --rr off and Kd >= 1
      * it is what ends the path. The paths it cuts are counted: the stats line shows them. */
     int k, has_lights = sc->lights.n > 0, kmax = opt->bmax < BOUNCES_CAP ? opt->bmax : BOUNCES_CAP;
+    float rr_below = opt->rr_below > 0.0f ? opt->rr_below : rr_below_default(smp->kind);
 
     st->camera_rays++;
     if (!bvh_intersect(sc->accel, &ray_pq, &q)) return sum.L;
@@ -264,7 +271,7 @@ vec3 integrate(const scene *sc, const integrator_opts *opt, const ray *camera, s
             add_Lk(&sum, k, v3_mul(beta, direct_from_dir(sc, opt, &p, &q, &ray_pq, pdf2_sa)));
 
         /* "et on arrête quand ?" */
-        if (opt->rr_depth >= 0 && k >= opt->rr_depth && k < kmax && !survives_roulette(&beta, smp, k)) break;
+        if (opt->rr_depth >= 0 && k >= opt->rr_depth && k < kmax && !survives_roulette(&beta, smp, k, rr_below)) break;
     }
     if (k >= kmax && kmax < opt->bmax) st->paths_cut++;   /* it reached the cap: its next bounces are lost */
     return sum.L;

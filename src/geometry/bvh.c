@@ -20,6 +20,8 @@
  *     A node tests its 8 boxes with the few instructions of one loop the compiler vectorizes, and a
  *     block its 4 triangles likewise: that is what makes single rays fast without intrinsics, and
  *     the wide nodes make the tree shallow, which matters most for incoherent rays in big meshes.
+ *     With AVX-512 (a -march=native build) the same tests are written with intrinsics, whose masks
+ *     and compress instructions the compiler does not find (node_hits_v, block_hits_v).
  *
  * How it is traversed: one loop with an explicit stack. At a node, the children the ray enters are
  * sorted by entry distance: the nearest is visited next, the others pushed farthest first. Popped
@@ -676,6 +678,46 @@ static inline unsigned block_hits_float(const tri4 *restrict blk, const ray_pre 
     return mask & inside;
 }
 
+#ifdef BVH_AVX512
+/* block_hits_float with intrinsics: the same operations in the same order (see node_hits_v). */
+static inline __m128 lane_row(const tri4 *blk, int corner, int axis) { return _mm_load_ps(blk->v[corner][axis]); }
+
+static inline unsigned block_hits_v(const tri4 *restrict blk, const ray_pre *restrict p, float tmax,
+                                    lane_hits *restrict h, unsigned *restrict edge)
+{
+    const __m128 ox = _mm_set1_ps(p->o[p->kx]), oy = _mm_set1_ps(p->o[p->ky]), oz = _mm_set1_ps(p->o[p->kz]);
+    const __m128 Sx = _mm_set1_ps(p->Sx), Sy = _mm_set1_ps(p->Sy), Sz = _mm_set1_ps(p->Sz), zero = _mm_setzero_ps();
+    __m128 az = _mm_sub_ps(lane_row(blk, 0, p->kz), oz), bz = _mm_sub_ps(lane_row(blk, 1, p->kz), oz);
+    __m128 cz = _mm_sub_ps(lane_row(blk, 2, p->kz), oz);
+    __m128 ax = _mm_sub_ps(_mm_sub_ps(lane_row(blk, 0, p->kx), ox), _mm_mul_ps(Sx, az));
+    __m128 ay = _mm_sub_ps(_mm_sub_ps(lane_row(blk, 0, p->ky), oy), _mm_mul_ps(Sy, az));
+    __m128 bx = _mm_sub_ps(_mm_sub_ps(lane_row(blk, 1, p->kx), ox), _mm_mul_ps(Sx, bz));
+    __m128 by = _mm_sub_ps(_mm_sub_ps(lane_row(blk, 1, p->ky), oy), _mm_mul_ps(Sy, bz));
+    __m128 cx = _mm_sub_ps(_mm_sub_ps(lane_row(blk, 2, p->kx), ox), _mm_mul_ps(Sx, cz));
+    __m128 cy = _mm_sub_ps(_mm_sub_ps(lane_row(blk, 2, p->ky), oy), _mm_mul_ps(Sy, cz));
+    __m128 U = _mm_sub_ps(_mm_mul_ps(cx, by), _mm_mul_ps(cy, bx));
+    __m128 V = _mm_sub_ps(_mm_mul_ps(ax, cy), _mm_mul_ps(ay, cx));
+    __m128 W = _mm_sub_ps(_mm_mul_ps(bx, ay), _mm_mul_ps(by, ax));
+    __m128 det, T, rcp, t;
+    unsigned neg = _mm_cmp_ps_mask(U, zero, _CMP_LT_OQ) | _mm_cmp_ps_mask(V, zero, _CMP_LT_OQ) | _mm_cmp_ps_mask(W, zero, _CMP_LT_OQ);
+    unsigned pos = _mm_cmp_ps_mask(U, zero, _CMP_GT_OQ) | _mm_cmp_ps_mask(V, zero, _CMP_GT_OQ) | _mm_cmp_ps_mask(W, zero, _CMP_GT_OQ);
+    unsigned inside = ~(neg & pos) & 0xfu, mask;
+    *edge = inside & (_mm_cmp_ps_mask(U, zero, _CMP_EQ_OQ) | _mm_cmp_ps_mask(V, zero, _CMP_EQ_OQ) |
+                      _mm_cmp_ps_mask(W, zero, _CMP_EQ_OQ));
+    if (!inside) return 0;
+    det = _mm_add_ps(_mm_add_ps(U, V), W);
+    T = _mm_add_ps(_mm_add_ps(_mm_mul_ps(U, _mm_mul_ps(Sz, az)), _mm_mul_ps(V, _mm_mul_ps(Sz, bz))),
+                   _mm_mul_ps(W, _mm_mul_ps(Sz, cz)));
+    rcp = _mm_div_ps(_mm_set1_ps(1.0f), det);
+    t = _mm_mul_ps(T, rcp);
+    _mm_storeu_ps(h->t, t); _mm_storeu_ps(h->u, _mm_mul_ps(V, rcp)); _mm_storeu_ps(h->v, _mm_mul_ps(W, rcp));
+    mask = _mm_cmp_ps_mask(det, zero, _CMP_NEQ_UQ) & _mm_cmp_ps_mask(t, zero, _CMP_GT_OQ) &
+           _mm_cmp_ps_mask(t, _mm_set1_ps(tmax), _CMP_LT_OQ);
+    return mask & inside;
+}
+#define block_hits_float block_hits_v
+#endif
+
 /* Step 3 for one lane, in scalar code: the same float shear, then U, V, W from exact products. */
 static int lane_hit_exact(const tri4 *blk, ray_pre p, int i, float tmax, float *t, float *u, float *v)
 {
@@ -748,13 +790,13 @@ static inline int push_near_first(const wnode *n, unsigned mask, const float dis
 }
 
 #ifdef BVH_AVX512
-/* With AVX-512, nodes are tested with intrinsics: the same operations in the same order as
- * node_hits (so the same children are entered at the same distances and every hit is the same),
- * but the hit mask comes out of one compare into a mask register instead of eight bits ORed
- * together, and closest-hit rays pack the children hit with one compress instead of a branch per
- * lane, which mispredicts on incoherent rays. Measured on the dragon, 1 thread, 5 alternated rounds
- * (docs/performance.md): diffuse rays 1.18x, shadow 1.14x, primary 1.07x. Shadow rays keep the
- * branch per lane: with the compress they were 0.91x. */
+/* With AVX-512, nodes (and blocks, block_hits_v) are tested with intrinsics: the same operations
+ * in the same order as node_hits (so the same children are entered at the same distances and every
+ * hit is the same), but the hit mask comes out of one compare into a mask register instead of eight
+ * bits ORed together, and closest-hit rays pack the children hit with one compress instead of a
+ * branch per lane, which mispredicts on incoherent rays. Measured (docs/performance.md, issue 12
+ * item 4): dragon diffuse rays 1.2x faster, shadow 1.1x. Shadow rays keep the branch per lane:
+ * with the compress they were 0.91x. */
 typedef struct { __m256 o[3], inv[3]; } ray_vec;
 
 static inline ray_vec ray_vectors(const ray_pre *p)

@@ -30,21 +30,22 @@ uint32_t sobol_dim0(uint32_t index) { return reverse_bits(index); }
 /* The second Sobol dimension, primitive polynomial x + 1: direction numbers v_1 = 1/2 and
  * v_k = v_{k-1} xor v_{k-1}/2 (the rows of Pascal's triangle mod 2); u = xor of v_k over the bits k
  * of i. Row k has a 1 in column p iff C(k, p) is odd, i.e. iff the bits of p are among those of k
- * (Lucas): bit p of u (p = 0 the 1/2 place) is the xor of the index bits k that contain p. On the
- * reversed index, where bit 31 - k holds index bit k, that is the xor over the bit numbers q that
- * are subsets of q' (31 - k is k's 5-bit complement), the subset transform, done one bit b of q at
- * a time: 5 shifts instead of a loop over 32 index bits (tests/test_sampler.c checks it against it). */
-static uint32_t subset_transform(uint32_t y)
+ * (Lucas): bit p of u (p = 0 the 1/2 place) is the xor of the index bits k that contain p. On a
+ * fraction written with its 1/2 place as bit 0 (reversed, as sobol_point works), that is bit p of
+ * the result = the xor of the index's bits k over the supersets k of p, the superset transform, done
+ * one bit b of p at a time: 5 shifts instead of a loop over 32 index bits (tests/test_sampler.c
+ * checks it against that loop). */
+static uint32_t superset_transform(uint32_t y)
 {
-    y ^= (y << 1) & 0xAAAAAAAAu;
-    y ^= (y << 2) & 0xCCCCCCCCu;
-    y ^= (y << 4) & 0xF0F0F0F0u;
-    y ^= (y << 8) & 0xFF00FF00u;
-    y ^= (y << 16) & 0xFFFF0000u;
+    y ^= (y >> 1) & 0x55555555u;
+    y ^= (y >> 2) & 0x33333333u;
+    y ^= (y >> 4) & 0x0F0F0F0Fu;
+    y ^= (y >> 8) & 0x00FF00FFu;
+    y ^= (y >> 16) & 0x0000FFFFu;
     return y;
 }
 
-uint32_t sobol_dim1(uint32_t index) { return subset_transform(reverse_bits(index)); }
+uint32_t sobol_dim1(uint32_t index) { return reverse_bits(superset_transform(index)); }
 
 /* Owen's nested uniform scrambling of a 32-bit fraction x, by hashing (Burley 2020, section 3): each
  * bit is flipped or not by a hash of the bits above it and the seed. A hash in which every bit
@@ -73,7 +74,8 @@ void sampler_start(sampler *s, sampler_kind kind, uint64_t seed, uint64_t pixel,
     {
         uint64_t K = (uint64_t)sampler_groups(kind);
         s->pixel_seed = splitmix64_at(splitmix64_mix(splitmix64_mix(seed) ^ pixel), index % K);
-        s->index = (uint32_t)(index / K);   /* render refuses indices past sampler_max_index */
+        /* render refuses indices past sampler_max_index; sobol_point needs the index only reversed */
+        s->index_reversed = reverse_bits((uint32_t)(index / K));
     }
 }
 
@@ -83,16 +85,17 @@ void sampler_from_stream(sampler *s, const pcg32 *r)
     s->rng = *r;
 }
 
-/* Sobol coordinates of dimension dim: the shuffled index, then coordinate 0 (and 1 if u2). */
+/* Sobol coordinates of dimension dim: the shuffled index, then coordinate 0 (and 1 if u2). It works
+ * on reversed fractions (the 1/2 place as bit 0), where sobol_dim0(j) is j itself, sobol_dim1(j) is
+ * superset_transform(j) and Owen's scrambling is laine_karras alone: the same numbers as
+ * owen_scramble(sobol_dim0(j)) and owen_scramble(sobol_dim1(j)) with j = owen_scramble(index), but
+ * with three bit reversals instead of eight (and the index reversed once, in sampler_start). */
 static void sobol_point(const sampler *s, uint32_t dim, uint32_t *u1, uint32_t *u2)
 {
     uint64_t h = splitmix64_at(s->pixel_seed, dim);
-    /* j = owen_scramble(index), and since sobol_dim0 is a bit reversal, owen_scramble(sobol_dim0(j))
-     * = reverse(laine_karras(j)) and sobol_dim1(j) = subset_transform(rj): the same numbers with four
-     * bit reversals less */
-    uint32_t rj = laine_karras(reverse_bits(s->index), (uint32_t)h), j = reverse_bits(rj);
+    uint32_t j = reverse_bits(laine_karras(s->index_reversed, (uint32_t)h));
     *u1 = reverse_bits(laine_karras(j, (uint32_t)(h >> 32)));
-    if (u2) *u2 = owen_scramble(subset_transform(rj), (uint32_t)splitmix64_mix(h));   /* sobol_dim1(j) */
+    if (u2) *u2 = reverse_bits(laine_karras(superset_transform(j), (uint32_t)splitmix64_mix(h)));
 }
 
 static float to_float(uint32_t x) { return (float)(x >> 8) * (1.0f / 16777216.0f); }

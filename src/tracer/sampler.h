@@ -31,7 +31,7 @@ typedef struct {
     sampler_kind kind;
     pcg32 rng;              /* independent: the sample's stream */
     uint64_t pixel_seed;    /* sobol: hashed from (seed, pixel, group); each dimension's seeds derive from it */
-    uint32_t index;         /* sobol: the point's index in its group (sample index div SAMPLER_GROUPS) */
+    uint32_t index_reversed;   /* sobol: the point's index in its group (sample index div SAMPLER_GROUPS), bits reversed */
 } sampler;
 
 /* The dimensions of a sample: the pixel jitter, then SAMPLER_DIMS_PER_VERTEX per path vertex k >= 1. */

@@ -825,6 +825,9 @@ static inline __m256 slab(const wnode *n, ptrdiff_t offset, __m256 o, __m256 inv
 static inline unsigned node_hits_v(const wnode *n, const ray_pre *p, const ray_vec *v, float tmax, __m256 *dist)
 {
     __m256 t0 = _mm256_setzero_ps(), t1 = _mm256_set1_ps(INFINITY);
+    /* the child indices sit in the node's 4th cache line, read only once the mask is known: ask for
+     * that line now, alongside the box rows (dragon diffuse +1-4 % in 4 A/B runs, bunny equal) */
+    _mm_prefetch((const char *)n->child, _MM_HINT_T0);
     t0 = _mm256_max_ps(slab(n, p->near[0], v->o[0], v->inv[0]), t0);   /* max(a, b) = a > b ? a : b */
     t0 = _mm256_max_ps(slab(n, p->near[1], v->o[1], v->inv[1]), t0);
     t0 = _mm256_max_ps(slab(n, p->near[2], v->o[2], v->inv[2]), t0);

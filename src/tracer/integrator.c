@@ -223,7 +223,11 @@ static int survives_roulette(vec3 *beta, sampler *smp, int k, float below)
     return 1;
 }
 
-float rr_below_default(sampler_kind kind) { return kind == SAMPLER_INDEPENDENT ? 1.0f : RR_BELOW_STRATIFIED; }
+float rr_below_for(const integrator_opts *o, sampler_kind kind)
+{
+    if (o->rr_below > 0.0f) return o->rr_below;
+    return kind == SAMPLER_INDEPENDENT ? 1.0f : RR_BELOW_STRATIFIED;
+}
 
 /* The radiance of one camera ray: L = the sum in path order, and with Lk each L_k on its own. */
 typedef struct {
@@ -262,7 +266,7 @@ vec3 integrate(const scene *sc, const integrator_opts *opt, const ray *camera, s
      * probability below 0.95^(BOUNCES_CAP - rr_depth), never in practice; with --rr off and Kd >= 1
      * it is what ends the path. The paths it cuts are counted: the stats line shows them. */
     int k, has_lights = sc->lights.n > 0, kmax = opt->bmax < BOUNCES_CAP ? opt->bmax : BOUNCES_CAP;
-    float rr_below = opt->rr_below > 0.0f ? opt->rr_below : rr_below_default(smp->kind);
+    float rr_below = rr_below_for(opt, smp->kind);
 
     st->camera_rays++;
     if (!bvh_intersect(sc->accel, &ray_pq, &q)) return sum.L;

@@ -29,7 +29,7 @@ typedef struct {
     int bmin, bmax;           /* L_bmin + ... + L_bmax, 0 <= bmin <= bmax */
     int rr_depth;             /* Russian roulette after this many bounces; -1: off */
     float rr_below;           /* the roulette thins paths whose throughput max(beta) is below this
-                               * (--rr-below); 0: the sampler's default, rr_below_default() */
+                               * (--rr-below); 0: the sampler's default, see rr_below_for() */
 } integrator_opts;
 
 typedef struct {
@@ -41,11 +41,11 @@ typedef struct {
  * numbers from smp at the dimensions of sampler.h (SAMPLER_DIM_*, vertex by vertex). If Lk is
  * not NULL it has o->bmax + 1 entries and receives Lk[k] = L_k for k = 0..bmax (0 outside bmin..bmax).
  * Counts the rays it traces in *st. */
-/* --rr-below when not given: 1 with independent samples (the classic p_survive = max(beta)), 1/3 with
- * the Sobol samplers, whose stratified samples leave the roulette's own noise as most of the error
- * (docs/estimators.md, "Where to stop", has the measurements). */
+/* The roulette's T of o under sampler `kind`: o->rr_below if given, else 1 with independent samples
+ * (the classic p_survive = max(beta)) and 1/3 with the Sobol samplers, whose stratified samples leave
+ * the roulette's own noise as most of the error (docs/estimators.md, "Where to stop"). */
 #define RR_BELOW_STRATIFIED (1.0f / 3.0f)
-float rr_below_default(sampler_kind kind);
+float rr_below_for(const integrator_opts *o, sampler_kind kind);
 
 vec3 integrate(const scene *sc, const integrator_opts *o, const ray *camera, sampler *smp, vec3 *Lk, trace_stats *st);
 #endif

@@ -10,16 +10,18 @@
  * How it is built:
  *  1. Every triangle gets a primref (its bounds and index). A binary tree is built top down: each
  *     node bins its triangles' centroids into BVH_BINS bins on each axis, picks the plane of least
- *     surface area heuristic (SAH) cost and partitions its primrefs in place; a node becomes a leaf
- *     when that is cheaper than splitting and it holds at most BVH_LEAF_MAX triangles. The two
- *     subtrees of a big node are built by two threads (a parallel_for of 2 iterations) while the
- *     build may start one more; the tree is the same for any number of threads. Nothing is sorted,
- *     nothing allocated per node.
- *  2. The binary tree is collapsed into an 8-wide one (each node adopts grandchildren, largest area
- *     first, until it has 8 children), laid out depth first; leaves become blocks of 4 triangles.
- *     A node tests its 8 boxes with the few instructions of one loop the compiler vectorizes, and a
- *     block its 4 triangles likewise: that is what makes single rays fast without intrinsics, and
- *     the wide nodes make the tree shallow, which matters most for incoherent rays in big meshes.
+ *     surface area heuristic (SAH) cost and partitions its primrefs in place, down to leaves of at
+ *     most BVH_BINARY_LEAF triangles. On the way back up, each node gets the least SAH cost of its
+ *     subtree as 1, 2, ... 8 children of a wide node (subtree_cost). The two subtrees of a big
+ *     node are built by two threads (a parallel_for of 2 iterations) while the build may start one
+ *     more; the tree is the same for any number of threads. Nothing is sorted, nothing allocated
+ *     per node.
+ *  2. The binary tree is collapsed into an 8-wide one by those costs: a subtree becomes a leaf (a
+ *     block of up to 8 triangles) or a wide node over the cheapest cover of its subtree by at most
+ *     8 children (collapse, cover), laid out depth first. A node tests its 8 boxes with the few
+ *     instructions of one loop the compiler vectorizes, and a block its 8 triangles likewise: that
+ *     is what makes single rays fast without intrinsics, and the wide nodes make the tree shallow,
+ *     which matters most for incoherent rays in big meshes.
  *     With AVX-512 (a -march=native build) the same tests are written with intrinsics, whose masks
  *     and compress instructions the compiler does not find (node_hits_v, block_hits_v).
  *
@@ -28,7 +30,7 @@
  * nodes entered beyond the closest hit so far are skipped. Shadow rays skip the sorting.
  *
  * Robustness: the triangle test is watertight (Woop, Benthin, Wald 2013) and the box test is
- * conservative (pbrt's 1 + 2 gamma(3) on exit distances), so no ray slips between two triangles
+ * conservative (pbrt's 1 + 2 gamma(3) on exit distances, folded into the 1/d they use), so no ray slips between two triangles
  * sharing an edge or a vertex, and a box never hides a triangle the triangle test would report. */
 #include "geometry/bvh.h"
 #include "sys/big_array.h"
@@ -57,16 +59,19 @@
 /* Tuning constants. */
 #define BVH_BINS 16            /* SAH bins per axis (fewer for nodes of fewer triangles) */
 #define BVH_WIDTH 8            /* children per node: one 256-bit vector of floats per slab row */
-#define BVH_LEAF_MAX 4         /* triangles per leaf: exactly one triangle block */
+#define BVH_LEAF_MAX 8         /* triangles per leaf: one block, a 256-bit vector per row (4 works too) */
+#define BVH_BINARY_LEAF 4      /* the binary tree splits nodes of more triangles than this */
 #define BVH_COST_NODE 1.0f     /* SAH cost of visiting a node ... */
-#define BVH_COST_BLOCK 1.0f    /* ... and of testing one block of 4 triangles (as measured: alike) */
+#define BVH_COST_BLOCK 1.0f    /* ... and of testing one block (as measured: alike) */
 #define BVH_SAH_DEPTH 48       /* deeper than this, split in halves: bounds the depth for the stack */
 #define BVH_PARALLEL_MIN 4096  /* a node this big may have its two subtrees built on two threads */
 #define BVH_MAX_DEPTH 80       /* binary depth <= 48 + 30 (indices < 2^30), wide depth no more */
 #define BVH_STACK (BVH_WIDTH * BVH_MAX_DEPTH) /* traversal stack: < W entries per level */
 
 /* gamma(3) = 3 eps / (1 - 3 eps) with eps = 2^-24: the relative error of (plane - o) * (1/d)
- * (pbrt 3rd ed. 3.9). Exit distances are widened by 1 + 2 gamma(3). */
+ * (pbrt 3rd ed. 3.9). Exit distances are widened by 1 + 2 gamma(3): computed as (plane - o) *
+ * ((1/d) * widen), with as many roundings as pbrt's ((plane - o) * (1/d)) * widen, a multiply less
+ * per node. A far plane behind the origin only gets farther behind: its box stays unentered. */
 #define BVH_BOX_WIDEN (1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f))
 /* The t of a triangle is a weighted mean of its corners' depths computed with ~10 roundings, so a
  * box entered a few ulps beyond the current closest t may still hold a triangle whose computed t is
@@ -80,15 +85,15 @@
  *                   lo = +inf, hi = -inf, which no ray enters.
  *   bytes 192..223  int child[8]: >= 0 index of a node; < 0 a leaf, ~child = its block index.
  *   bytes 224..255  padding to the cache line.
- * Triangle block, 160 bytes, 32-byte aligned: float v[3][3][4] = corner, axis, lane (144 bytes),
- *   then int id[4], the caller's triangle indices. A leaf of fewer than 4 triangles repeats its last
+ * Triangle block, 320 bytes, 32-byte aligned: float v[3][3][8] = corner, axis, lane (288 bytes),
+ *   then int id[8], the caller's triangle indices. A leaf of fewer than 8 triangles repeats its last
  *   triangle: the copy hits at the same t and loses the tie, so it costs nothing but a lane. */
 typedef struct { float box[6][BVH_WIDTH]; int child[BVH_WIDTH]; int pad[BVH_WIDTH]; } wnode;
-typedef struct { float v[3][3][4]; int id[4]; } tri4;
+typedef struct { float v[3][3][BVH_LEAF_MAX]; int id[BVH_LEAF_MAX]; } tri_block;
 
 struct bvh {
     wnode *nodes;      /* nodes[0] is the root */
-    tri4 *blocks;
+    tri_block *blocks;
     int root;          /* 0, or ~0 when the whole tree is one leaf (or empty: no blocks at all) */
     int nnodes, nblocks, depth;
 };
@@ -103,10 +108,14 @@ typedef aabb primref;
  * leaf: the first primref); float hi[3]; int count (0 for inner nodes). Only the build sees these. */
 typedef struct { float lo[3]; int first; float hi[3]; int count; } node2;
 typedef struct { int axis, bin, nbins, nleft; float cost; aabb left, right; } split;
+/* What the collapse (step 2) needs of a binary node's subtree: its primrefs [first, first + count),
+ * and cost[i - 1], the least SAH cost of the subtree as at most i children of a wide node. */
+typedef struct { float cost[BVH_WIDTH]; int first, count; } subtree;
 
 typedef struct {
     primref *refs;
     node2 *nodes;
+    subtree *sub;      /* per node, filled children first (subtree_cost) */
     int nslots;        /* the length of nodes */
     int idle;          /* threads the build may still start, under lock */
     pthread_mutex_t lock;
@@ -140,7 +149,7 @@ static float aabb_area(const aabb *b)
     return dx * dy + dy * dz + dz * dx;
 }
 static int ref_id(const primref *p) { int id; memcpy(&id, &p->lo[3], sizeof id); return id; }
-/* SAH weight of n triangles: the blocks of 4 they fill. */
+/* SAH weight of n triangles: the blocks they fill. */
 static float blocks_of(int n) { return (float)((n + BVH_LEAF_MAX - 1) / BVH_LEAF_MAX); }
 
 /* Bin of a primref on one axis: cb is the doubled-centroid bounds, scale = nbins / extent. */
@@ -258,17 +267,65 @@ static int choose_split(builder *B, int ni, int first, int count, const aabb *cb
 {
     primref *r = B->refs + first;
     float scale[3];
-    aabb box = node_box(&B->nodes[ni]);
-    if (count == 1) return 0;
+    (void)ni;
+    if (count <= BVH_BINARY_LEAF) return 0;
     if (depth < BVH_SAH_DEPTH && find_split(r, count, cb, s, scale)) {
-        float split_cost = BVH_COST_NODE + BVH_COST_BLOCK * s->cost / aabb_area(&box);
-        if (count <= BVH_LEAF_MAX && BVH_COST_BLOCK * blocks_of(count) <= split_cost) return 0;
         partition(r, count, s, cb, scale[s->axis], lcb, rcb);
         return 1;
     }
     if (count <= BVH_LEAF_MAX) return 0;
     split_halves(r, count, s, lcb, rcb);
     return 1;
+}
+
+/* ---- Build, step 1b: where the wide tree's nodes and leaves will be -----------------------------
+ * The binary tree goes down to BVH_BINARY_LEAF triangles; which of its subtrees become the wide
+ * tree's nodes and leaves is chosen by dynamic programming on the SAH (Ylitie, Karras, Laine 2017,
+ * "Efficient incoherent ray traversal on GPUs through compressed wide BVHs", section 4.1): cost[i-1]
+ * of a subtree is its least cost as at most i children of a wide node, filled children first, so a
+ * node of 24 triangles need not become a wide node of three leaves when its parent can adopt them. */
+static float leaf_cost(const node2 *nd, int count)
+{
+    aabb b = node_box(nd);
+    return count <= BVH_LEAF_MAX ? BVH_COST_BLOCK * aabb_area(&b) : INFINITY;
+}
+/* Least cost of at most i >= 2 roots shared between the subtrees l and r; *k gets l's share. */
+static float share_cost(const subtree *l, const subtree *r, int i, int *k)
+{
+    float best = l->cost[0] + r->cost[i - 2], c;
+    int j;
+    *k = 1;
+    for (j = 2; j < i; j++) {
+        c = l->cost[j - 1] + r->cost[i - j - 1];
+        if (c < best) { best = c; *k = j; }
+    }
+    return best;
+}
+/* cost[] of node ni: one root is a leaf or a wide node over at most BVH_WIDTH roots below it. */
+static float root_cost(const builder *B, int ni, int *leaf)
+{
+    const node2 *nd = &B->nodes[ni];
+    const subtree *sub = &B->sub[ni];
+    float as_leaf = leaf_cost(nd, sub->count), as_node;
+    aabb b = node_box(nd);
+    int k;
+    *leaf = 1;
+    if (nd->count) return as_leaf;
+    as_node = BVH_COST_NODE * aabb_area(&b) + share_cost(&B->sub[nd->first], &B->sub[nd->first + 1], BVH_WIDTH, &k);
+    *leaf = sub->count <= BVH_LEAF_MAX && as_leaf <= as_node;
+    return *leaf ? as_leaf : as_node;
+}
+static void subtree_cost(builder *B, int ni, int first, int count)
+{
+    subtree *sub = &B->sub[ni];
+    const node2 *nd = &B->nodes[ni];
+    int i, k, leaf;
+    sub->first = first; sub->count = count;
+    sub->cost[0] = root_cost(B, ni, &leaf);
+    for (i = 2; i <= BVH_WIDTH; i++) {
+        float c = nd->count ? INFINITY : share_cost(&B->sub[nd->first], &B->sub[nd->first + 1], i, &k);
+        sub->cost[i - 1] = c < sub->cost[i - 2] ? c : sub->cost[i - 2];
+    }
 }
 
 /* Takes (delta -1) or returns (+1) one of the threads the build may start; 1 if it could. */
@@ -340,6 +397,7 @@ static int build_rec(builder *B, int ni, int first, int count, aabb cb, int dept
     assert(ni >= 0 && ni < B->nslots && count > 0);
     if (!choose_split(B, ni, first, count, &cb, depth, &s, &lcb, &rcb)) {
         nd->first = first; nd->count = count;
+        subtree_cost(B, ni, first, count);
         return 1;
     }
     assert(s.nleft > 0 && s.nleft < count && left + 2 * count - 2 <= B->nslots);
@@ -349,12 +407,15 @@ static int build_rec(builder *B, int ni, int first, int count, aabb cb, int dept
     nd->first = left; nd->count = 0;
     leaves = build_pair(B, left, first, count, &s, lcb, rcb, depth + 1, next);
     assert(*next <= left + 2 * count - 2);   /* within the range the caller set aside */
+    subtree_cost(B, ni, first, count);
     return leaves;
 }
 
 /* ---- Build, step 2: the wide tree ------------------------------------------------------------- */
 typedef struct {
+    const builder *builder;
     const node2 *bin;
+    const subtree *sub;
     const primref *refs;
     const vec3 *P;
     const int *tri;
@@ -362,60 +423,53 @@ typedef struct {
     int max_nodes, max_blocks;   /* the lengths of b->nodes and b->blocks */
 } collapser;
 
-static float node_area(const node2 *nd)
-{
-    aabb b = node_box(nd);
-    return nd->count ? -1.0f : aabb_area(&b);   /* leaves cannot be opened */
-}
+/* Appends to kids the roots of the cheapest cover of subtree ni by at most i of them (i >= 1). */
+static void cover(const collapser *C, int ni, int i, int kids[BVH_WIDTH], int *k);
 
-/* Gathers up to BVH_WIDTH binary descendants of n: opens the inner child of largest area. */
-static int gather_children(const node2 *nodes, const node2 *n, const node2 *out[BVH_WIDTH])
+/* The roots of subtree ni shared between its two children, at most i >= 2 of them. */
+static void cover_children(const collapser *C, int ni, int i, int kids[BVH_WIDTH], int *k)
 {
-    float area[BVH_WIDTH];
-    int k = 2, i;
-    out[0] = &nodes[n->first]; out[1] = &nodes[n->first + 1];
-    area[0] = node_area(out[0]); area[1] = node_area(out[1]);
-    while (k < BVH_WIDTH) {
-        const node2 *open;
-        int best = 0;
-        for (i = 1; i < k; i++) best = area[i] > area[best] ? i : best;
-        if (area[best] < 0) break;
-        open = out[best];
-        out[best] = &nodes[open->first]; area[best] = node_area(out[best]);
-        out[k] = &nodes[open->first + 1]; area[k] = node_area(out[k]);
-        k++;
-    }
-    return k;
+    int l = C->bin[ni].first, j;
+    share_cost(&C->sub[l], &C->sub[l + 1], i, &j);
+    cover(C, l, j, kids, k);
+    cover(C, l + 1, i - j, kids, k);
+}
+static void cover(const collapser *C, int ni, int i, int kids[BVH_WIDTH], int *k)
+{
+    const float *cost = C->sub[ni].cost;
+    while (i > 1 && !(cost[i - 1] < cost[i - 2])) i--;   /* as subtree_cost chose */
+    if (i == 1) kids[(*k)++] = ni;
+    else cover_children(C, ni, i, kids, k);
 }
 
 /* A leaf's block: the primref index of each lane in id[] (fill_blocks turns them into triangles). */
-static int collapse_leaf(collapser *C, const node2 *n)
+static int collapse_leaf(collapser *C, const subtree *sub)
 {
     bvh *b = C->b;
-    tri4 *blk = &b->blocks[b->nblocks];
+    tri_block *blk = &b->blocks[b->nblocks];
     int lane;
-    assert(b->nblocks < C->max_blocks && n->count <= 4);
-    for (lane = 0; lane < 4; lane++) blk->id[lane] = n->first + (lane < n->count ? lane : n->count - 1);
+    assert(b->nblocks < C->max_blocks && sub->count <= BVH_LEAF_MAX);
+    for (lane = 0; lane < BVH_LEAF_MAX; lane++) blk->id[lane] = sub->first + (lane < sub->count ? lane : sub->count - 1);
     return ~b->nblocks++;
 }
 
-/* Emits binary node n (inner or leaf) and its subtree, depth first; returns its child reference. */
-static int collapse(collapser *C, const node2 *n, int depth)
+/* Emits binary node ni as a leaf or a wide node, and its subtree, depth first; returns its reference. */
+static int collapse(collapser *C, int ni, int depth)
 {
     bvh *b = C->b;
-    const node2 *kids[BVH_WIDTH];
-    int k, wi, i, a;
+    int kids[BVH_WIDTH], k = 0, wi, i, a, leaf;
     wnode *w;
     if (depth > b->depth) b->depth = depth;
-    if (n->count) return collapse_leaf(C, n);
-    k = gather_children(C->bin, n, kids);
-    assert(b->nnodes < C->max_nodes);
+    root_cost(C->builder, ni, &leaf);
+    if (leaf) return collapse_leaf(C, &C->sub[ni]);
+    cover_children(C, ni, BVH_WIDTH, kids, &k);
+    assert(b->nnodes < C->max_nodes && k >= 2);
     wi = b->nnodes++;
     w = &b->nodes[wi];
     for (i = 0; i < BVH_WIDTH; i++) {
         for (a = 0; a < 3; a++) {
-            w->box[a][i] = i < k ? kids[i]->lo[a] : INFINITY;
-            w->box[3 + a][i] = i < k ? kids[i]->hi[a] : -INFINITY;
+            w->box[a][i] = i < k ? C->bin[kids[i]].lo[a] : INFINITY;
+            w->box[3 + a][i] = i < k ? C->bin[kids[i]].hi[a] : -INFINITY;
         }
         w->child[i] = ~0;
     }
@@ -431,8 +485,8 @@ static void fill_blocks(void *ctx, int thread, int begin, int end)
     int i, lane, k, id;
     (void)thread;
     for (i = begin; i < end; i++) {
-        tri4 *blk = &C->b->blocks[i];
-        for (lane = 0; lane < 4; lane++) {
+        tri_block *blk = &C->b->blocks[i];
+        for (lane = 0; lane < BVH_LEAF_MAX; lane++) {
             id = ref_id(&C->refs[blk->id[lane]]);
             blk->id[lane] = id;
             for (k = 0; k < 3; k++) {
@@ -499,7 +553,8 @@ static int build_binary(builder *B, const vec3 *P, const int *tri, int ntris, in
     B->nslots = 2 * ntris;
     B->refs = big_array((size_t)ntris, sizeof(primref), 64);
     B->nodes = big_array((size_t)B->nslots, sizeof(node2), 64);
-    if (!B->refs || !B->nodes) return 0;
+    B->sub = big_array((size_t)B->nslots, sizeof(subtree), 64);
+    if (!B->refs || !B->nodes || !B->sub) return 0;
     M.P = P; M.tri = tri; M.refs = B->refs;
     for (t = 0; t < threads; t++) M.box[t] = M.cb[t] = aabb_empty();
     parallel_for(ntris, parallel_even_grain(ntris, threads), threads, make_refs, &M);
@@ -516,14 +571,14 @@ static int build_binary(builder *B, const vec3 *P, const int *tri, int ntris, in
 static int build_wide(bvh *b, const builder *B, const vec3 *P, const int *tri, int leaves, int threads)
 {
     collapser C;
-    C.bin = B->nodes; C.refs = B->refs; C.P = P; C.tri = tri; C.b = b;
+    C.builder = B; C.bin = B->nodes; C.sub = B->sub; C.refs = B->refs; C.P = P; C.tri = tri; C.b = b;
     C.max_nodes = leaves > 1 ? leaves - 1 : 1;
     C.max_blocks = leaves;
     b->nodes = big_array((size_t)C.max_nodes, sizeof(wnode), 64);
-    b->blocks = big_array((size_t)C.max_blocks, sizeof(tri4), 64);
+    b->blocks = big_array((size_t)C.max_blocks, sizeof(tri_block), 64);
     if (!b->nodes || !b->blocks) return 0;
-    b->root = collapse(&C, &B->nodes[0], 1);
-    assert(b->nblocks == leaves && wide_tree_valid(b));
+    b->root = collapse(&C, 0, 1);
+    assert(b->nblocks <= leaves && wide_tree_valid(b));
     parallel_for(b->nblocks, parallel_even_grain(b->nblocks, threads), threads, fill_blocks, &C);
     return 1;
 }
@@ -533,7 +588,7 @@ bvh *bvh_build(const vec3 *P, const int *tri, int ntris, int threads)
     builder B;
     bvh *b = calloc(1, sizeof *b);
     int ok, leaves;
-    B.refs = NULL; B.nodes = NULL;   /* build_binary sets up the rest */
+    B.refs = NULL; B.nodes = NULL; B.sub = NULL;   /* build_binary sets up the rest */
     if (!b || ntris == 0) return b;             /* an empty bvh: every ray misses */
     if (ntris < 0 || ntris > INT_MAX / 2) { free(b); return NULL; }
     /* a small mesh builds faster than a thread starts (a loaded machine took 5-33 ms to start the
@@ -543,6 +598,7 @@ bvh *bvh_build(const vec3 *P, const int *tri, int ntris, int threads)
     ok = leaves > 0 && build_wide(b, &B, P, tri, leaves, threads);
     free(B.refs);
     free(B.nodes);
+    free(B.sub);
     if (!ok) { bvh_free(b); return NULL; }
     return b;
 }
@@ -574,47 +630,62 @@ void bvh_stats(const bvh *b, int *nodes, int *leaves, int *depth)
  * The loops over the lanes of a node or a block are written for the vectorizer: restrict pointers,
  * per-ray values in locals, no branch inside, one mask bit per lane at the end. The per-ray values
  * live in a ray_pre whose address never leaves the traversal, so that they stay in registers. */
+#ifdef BVH_AVX512   /* a block's lanes are one vector: L_(op) names the intrinsic of its width */
+#if BVH_LEAF_MAX == 8
+typedef __m256 lanes;
+#define L_(op) _mm256_##op
+#else
+typedef __m128 lanes;
+#define L_(op) _mm_##op
+#endif
+#endif
 typedef struct {
     float o[3], inv[3];
+    float inv_far[3];      /* inv widened by BVH_BOX_WIDEN, for the exit distances */
     ptrdiff_t near[3], far[3]; /* byte offsets in a wnode of the rows with each axis' entry and exit
                                   planes (pointer-sized: no sign extension per node) */
     int kx, ky, kz;        /* watertight test: kz the dominant axis of d, kx ky the others */
     float Sx, Sy, Sz;      /* shear that maps d to (0, 0, 1) */
 #ifdef BVH_AVX512
-    __m128 bo[3], bS[3];   /* o[kx], o[ky], o[kz] and Sx, Sy, Sz broadcast once per ray for block_hits_v */
+    lanes bo[3], bS[3];        /* o[kx], o[ky], o[kz] and Sx, Sy, Sz broadcast once per ray for block_hits_v */
 #endif
 } ray_pre;
 
-static inline ray_pre ray_prepare(const ray *r)
+/* The watertight test's axes without a branch (a diffuse ray's direction is random, so branches
+ * on it mispredict): kz the axis of the largest |d|, as "ax > ay ? (ax > az ? 0 : 2) : (ay > az ?
+ * 1 : 2)", indexed by those three comparisons; kx follows kz, or precedes it when d[kz] < 0 (the
+ * swap that keeps the winding), and ky is the third axis. */
+static const unsigned char KZ_OF[8] = {2, 2, 2, 0, 1, 2, 1, 0}, KX_OF[6] = {1, 2, 0, 2, 0, 1};
+
+static inline void ray_prepare(const ray *r, ray_pre *restrict p)
 {
-    ray_pre p;
     float o[3] = {r->o.x, r->o.y, r->o.z}, d[3] = {r->d.x, r->d.y, r->d.z};
-    float ax, ay, az;
-    int a;
+    float ax = fabsf(d[0]), ay = fabsf(d[1]), az = fabsf(d[2]);
+    int a, kx, ky, kz;
     for (a = 0; a < 3; a++) {
         int lo_row = a, hi_row = 3 + a;
-        p.o[a] = o[a];
-        p.inv[a] = 1.0f / d[a];                /* +-inf for a zero component: the slab is NaN-safe */
-        p.near[a] = (ptrdiff_t)(sizeof(float) * BVH_WIDTH) * (signbit(d[a]) ? hi_row : lo_row);
-        p.far[a] = (ptrdiff_t)(sizeof(float) * BVH_WIDTH) * (signbit(d[a]) ? lo_row : hi_row);
+        p->o[a] = o[a];
+        p->inv[a] = 1.0f / d[a];               /* +-inf for a zero component: the slab is NaN-safe */
+        p->inv_far[a] = p->inv[a] * BVH_BOX_WIDEN;
+        p->near[a] = (ptrdiff_t)(sizeof(float) * BVH_WIDTH) * (signbit(d[a]) ? hi_row : lo_row);
+        p->far[a] = (ptrdiff_t)(sizeof(float) * BVH_WIDTH) * (signbit(d[a]) ? lo_row : hi_row);
     }
-    ax = fabsf(d[0]); ay = fabsf(d[1]); az = fabsf(d[2]);
-    p.kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
-    p.kx = p.kz == 2 ? 0 : p.kz + 1;
-    p.ky = p.kx == 2 ? 0 : p.kx + 1;
-    if (d[p.kz] < 0) { int t = p.kx; p.kx = p.ky; p.ky = t; }   /* keep the winding */
-    p.Sx = d[p.kx] / d[p.kz];
-    p.Sy = d[p.ky] / d[p.kz];
-    p.Sz = 1.0f / d[p.kz];
+    kz = KZ_OF[(ax > ay) | (ax > az) << 1 | (ay > az) << 2];
+    kx = KX_OF[kz + 3 * (d[kz] < 0)];
+    ky = 3 - kx - kz;
+    p->kx = kx; p->ky = ky; p->kz = kz;
+    p->Sx = d[kx] / d[kz];
+    p->Sy = d[ky] / d[kz];
+    p->Sz = p->inv[kz];                        /* 1 / d[kz], computed once */
 #ifdef BVH_AVX512
-    p.bo[0] = _mm_set1_ps(o[p.kx]); p.bo[1] = _mm_set1_ps(o[p.ky]); p.bo[2] = _mm_set1_ps(o[p.kz]);
-    p.bS[0] = _mm_set1_ps(p.Sx); p.bS[1] = _mm_set1_ps(p.Sy); p.bS[2] = _mm_set1_ps(p.Sz);
+    p->bo[0] = L_(set1_ps)(o[kx]); p->bo[1] = L_(set1_ps)(o[ky]); p->bo[2] = L_(set1_ps)(o[kz]);
+    p->bS[0] = L_(set1_ps)(p->Sx); p->bS[1] = L_(set1_ps)(p->Sy); p->bS[2] = L_(set1_ps)(p->Sz);
 #endif
-    return p;
 }
 
 static inline const float *row(const wnode *n, ptrdiff_t offset) { return (const float *)((const char *)n + offset); }
 
+#ifndef BVH_AVX512   /* the portable tests; with AVX-512, node_hits_v and block_hits_v */
 /* Slab test of the children: dist[i] = entry distance, returns a bit per child entered before
  * tmax. A NaN from 0 * inf (origin on a slab plane, direction parallel to it) fails the comparisons
  * "t > tnear" and "t < tfar" and so leaves the interval as it was: the ray counts as inside. */
@@ -623,24 +694,25 @@ static inline unsigned node_hits(const wnode *restrict n, const ray_pre *restric
     const float *nx = row(n, p->near[0]), *ny = row(n, p->near[1]), *nz = row(n, p->near[2]);
     const float *fx = row(n, p->far[0]), *fy = row(n, p->far[1]), *fz = row(n, p->far[2]);
     const float ox = p->o[0], oy = p->o[1], oz = p->o[2], ix = p->inv[0], iy = p->inv[1], iz = p->inv[2];
+    const float jx = p->inv_far[0], jy = p->inv_far[1], jz = p->inv_far[2];
     unsigned mask = 0;
     int i;
     LANE_LOOP
     for (i = 0; i < BVH_WIDTH; i++) {
         float tnx = (nx[i] - ox) * ix, tny = (ny[i] - oy) * iy, tnz = (nz[i] - oz) * iz;
-        float tfx = (fx[i] - ox) * ix, tfy = (fy[i] - oy) * iy, tfz = (fz[i] - oz) * iz;
+        float tfx = (fx[i] - ox) * jx, tfy = (fy[i] - oy) * jy, tfz = (fz[i] - oz) * jz;
         float t0 = 0.0f, t1 = INFINITY;
         t0 = tnx > t0 ? tnx : t0; t0 = tny > t0 ? tny : t0; t0 = tnz > t0 ? tnz : t0;
         t1 = tfx < t1 ? tfx : t1; t1 = tfy < t1 ? tfy : t1; t1 = tfz < t1 ? tfz : t1;
-        t1 *= BVH_BOX_WIDEN;
         t1 = tmax < t1 ? tmax : t1;
         dist[i] = t0;
         mask |= (unsigned)(t0 <= t1) << i;
     }
     return mask;
 }
+#endif
 
-/* The watertight test (Woop, Benthin, Wald 2013) on the 4 lanes of a block:
+/* The watertight test (Woop, Benthin, Wald 2013) on the lanes of a block:
  *  1. shear the corners so that the ray is the +z axis and take the 2D edge functions U, V, W
  *     (twice the signed areas of the ray's foot with each edge): the ray is inside when they have
  *     one sign (either winding);
@@ -649,20 +721,21 @@ static inline unsigned node_hits(const wnode *restrict n, const ray_pre *restric
  *     are decided again with the products in double, where they are exact (redo_edge_lanes).
  * A nonzero float edge function already has the right sign (rounding is monotonic), so step 3 is
  * needed only for lanes that step 1 finds inside. */
-typedef struct { float t[4], u[4], v[4]; } lane_hits;
+typedef struct { float t[BVH_LEAF_MAX], u[BVH_LEAF_MAX], v[BVH_LEAF_MAX]; } lane_hits;
 
-static inline unsigned block_hits_float(const tri4 *restrict blk, const ray_pre *restrict p, float tmax,
+#ifndef BVH_AVX512
+static inline unsigned block_hits_float(const tri_block *restrict blk, const ray_pre *restrict p, float tmax,
                                         lane_hits *restrict h, unsigned *restrict edge)
 {
     const float *a_x = blk->v[0][p->kx], *a_y = blk->v[0][p->ky], *a_z = blk->v[0][p->kz];
     const float *b_x = blk->v[1][p->kx], *b_y = blk->v[1][p->ky], *b_z = blk->v[1][p->kz];
     const float *c_x = blk->v[2][p->kx], *c_y = blk->v[2][p->ky], *c_z = blk->v[2][p->kz];
     const float ox = p->o[p->kx], oy = p->o[p->ky], oz = p->o[p->kz], Sx = p->Sx, Sy = p->Sy, Sz = p->Sz;
-    float U[4], V[4], W[4], az[4], bz[4], cz[4];
+    float U[BVH_LEAF_MAX], V[BVH_LEAF_MAX], W[BVH_LEAF_MAX], az[BVH_LEAF_MAX], bz[BVH_LEAF_MAX], cz[BVH_LEAF_MAX];
     unsigned inside = 0, mask = 0, zero = 0;
     int i;
     LANE_LOOP
-    for (i = 0; i < 4; i++) {         /* steps 1 and 3: which lanes the ray passes inside */
+    for (i = 0; i < BVH_LEAF_MAX; i++) {   /* steps 1 and 3: which lanes the ray passes inside */
         float ax, ay, bx, by, cx, cy;
         int neg, pos, in;
         az[i] = a_z[i] - oz; bz[i] = b_z[i] - oz; cz[i] = c_z[i] - oz;
@@ -678,7 +751,7 @@ static inline unsigned block_hits_float(const tri4 *restrict blk, const ray_pre 
     *edge = zero;
     if (!inside) return 0;            /* the usual case: no division */
     LANE_LOOP
-    for (i = 0; i < 4; i++) {         /* step 2 */
+    for (i = 0; i < BVH_LEAF_MAX; i++) {   /* step 2 */
         float det = U[i] + V[i] + W[i], T = U[i] * (Sz * az[i]) + V[i] * (Sz * bz[i]) + W[i] * (Sz * cz[i]);
         float rcp = 1.0f / det;       /* det == 0 gives inf or NaN: t fails the tests below */
         h->t[i] = T * rcp; h->u[i] = V[i] * rcp; h->v[i] = W[i] * rcp;
@@ -686,49 +759,51 @@ static inline unsigned block_hits_float(const tri4 *restrict blk, const ray_pre 
     }
     return mask & inside;
 }
+#endif
 
 #ifdef BVH_AVX512
-/* block_hits_float with intrinsics: the same operations in the same order (see node_hits_v). */
-static inline __m128 lane_row(const tri4 *blk, int corner, int axis) { return _mm_load_ps(blk->v[corner][axis]); }
+/* block_hits_float with intrinsics: the same operations in the same order (see node_hits_v), on
+ * one vector of BVH_LEAF_MAX lanes (lanes, L_). */
+static inline lanes lane_row(const tri_block *blk, int corner, int axis) { return L_(load_ps)(blk->v[corner][axis]); }
 
-static inline unsigned block_hits_v(const tri4 *restrict blk, const ray_pre *restrict p, float tmax,
+static inline unsigned block_hits_v(const tri_block *restrict blk, const ray_pre *restrict p, float tmax,
                                     lane_hits *restrict h, unsigned *restrict edge)
 {
-    const __m128 ox = p->bo[0], oy = p->bo[1], oz = p->bo[2];
-    const __m128 Sx = p->bS[0], Sy = p->bS[1], Sz = p->bS[2], zero = _mm_setzero_ps();
-    __m128 az = _mm_sub_ps(lane_row(blk, 0, p->kz), oz), bz = _mm_sub_ps(lane_row(blk, 1, p->kz), oz);
-    __m128 cz = _mm_sub_ps(lane_row(blk, 2, p->kz), oz);
-    __m128 ax = _mm_sub_ps(_mm_sub_ps(lane_row(blk, 0, p->kx), ox), _mm_mul_ps(Sx, az));
-    __m128 ay = _mm_sub_ps(_mm_sub_ps(lane_row(blk, 0, p->ky), oy), _mm_mul_ps(Sy, az));
-    __m128 bx = _mm_sub_ps(_mm_sub_ps(lane_row(blk, 1, p->kx), ox), _mm_mul_ps(Sx, bz));
-    __m128 by = _mm_sub_ps(_mm_sub_ps(lane_row(blk, 1, p->ky), oy), _mm_mul_ps(Sy, bz));
-    __m128 cx = _mm_sub_ps(_mm_sub_ps(lane_row(blk, 2, p->kx), ox), _mm_mul_ps(Sx, cz));
-    __m128 cy = _mm_sub_ps(_mm_sub_ps(lane_row(blk, 2, p->ky), oy), _mm_mul_ps(Sy, cz));
-    __m128 U = _mm_sub_ps(_mm_mul_ps(cx, by), _mm_mul_ps(cy, bx));
-    __m128 V = _mm_sub_ps(_mm_mul_ps(ax, cy), _mm_mul_ps(ay, cx));
-    __m128 W = _mm_sub_ps(_mm_mul_ps(bx, ay), _mm_mul_ps(by, ax));
-    __m128 det, T, rcp, t;
-    unsigned neg = _mm_cmp_ps_mask(U, zero, _CMP_LT_OQ) | _mm_cmp_ps_mask(V, zero, _CMP_LT_OQ) | _mm_cmp_ps_mask(W, zero, _CMP_LT_OQ);
-    unsigned pos = _mm_cmp_ps_mask(U, zero, _CMP_GT_OQ) | _mm_cmp_ps_mask(V, zero, _CMP_GT_OQ) | _mm_cmp_ps_mask(W, zero, _CMP_GT_OQ);
-    unsigned inside = ~(neg & pos) & 0xfu, mask;
-    *edge = inside & (_mm_cmp_ps_mask(U, zero, _CMP_EQ_OQ) | _mm_cmp_ps_mask(V, zero, _CMP_EQ_OQ) |
-                      _mm_cmp_ps_mask(W, zero, _CMP_EQ_OQ));
+    const lanes ox = p->bo[0], oy = p->bo[1], oz = p->bo[2];
+    const lanes Sx = p->bS[0], Sy = p->bS[1], Sz = p->bS[2], zero = L_(setzero_ps)();
+    lanes az = L_(sub_ps)(lane_row(blk, 0, p->kz), oz), bz = L_(sub_ps)(lane_row(blk, 1, p->kz), oz);
+    lanes cz = L_(sub_ps)(lane_row(blk, 2, p->kz), oz);
+    lanes ax = L_(sub_ps)(L_(sub_ps)(lane_row(blk, 0, p->kx), ox), L_(mul_ps)(Sx, az));
+    lanes ay = L_(sub_ps)(L_(sub_ps)(lane_row(blk, 0, p->ky), oy), L_(mul_ps)(Sy, az));
+    lanes bx = L_(sub_ps)(L_(sub_ps)(lane_row(blk, 1, p->kx), ox), L_(mul_ps)(Sx, bz));
+    lanes by = L_(sub_ps)(L_(sub_ps)(lane_row(blk, 1, p->ky), oy), L_(mul_ps)(Sy, bz));
+    lanes cx = L_(sub_ps)(L_(sub_ps)(lane_row(blk, 2, p->kx), ox), L_(mul_ps)(Sx, cz));
+    lanes cy = L_(sub_ps)(L_(sub_ps)(lane_row(blk, 2, p->ky), oy), L_(mul_ps)(Sy, cz));
+    lanes U = L_(sub_ps)(L_(mul_ps)(cx, by), L_(mul_ps)(cy, bx));
+    lanes V = L_(sub_ps)(L_(mul_ps)(ax, cy), L_(mul_ps)(ay, cx));
+    lanes W = L_(sub_ps)(L_(mul_ps)(bx, ay), L_(mul_ps)(by, ax));
+    lanes det, T, rcp, t;
+    unsigned neg = L_(cmp_ps_mask)(U, zero, _CMP_LT_OQ) | L_(cmp_ps_mask)(V, zero, _CMP_LT_OQ) | L_(cmp_ps_mask)(W, zero, _CMP_LT_OQ);
+    unsigned pos = L_(cmp_ps_mask)(U, zero, _CMP_GT_OQ) | L_(cmp_ps_mask)(V, zero, _CMP_GT_OQ) | L_(cmp_ps_mask)(W, zero, _CMP_GT_OQ);
+    unsigned inside = ~(neg & pos) & ((1u << BVH_LEAF_MAX) - 1), mask;
+    *edge = inside & (L_(cmp_ps_mask)(U, zero, _CMP_EQ_OQ) | L_(cmp_ps_mask)(V, zero, _CMP_EQ_OQ) |
+                      L_(cmp_ps_mask)(W, zero, _CMP_EQ_OQ));
     if (!inside) return 0;
-    det = _mm_add_ps(_mm_add_ps(U, V), W);
-    T = _mm_add_ps(_mm_add_ps(_mm_mul_ps(U, _mm_mul_ps(Sz, az)), _mm_mul_ps(V, _mm_mul_ps(Sz, bz))),
-                   _mm_mul_ps(W, _mm_mul_ps(Sz, cz)));
-    rcp = _mm_div_ps(_mm_set1_ps(1.0f), det);
-    t = _mm_mul_ps(T, rcp);
-    _mm_storeu_ps(h->t, t); _mm_storeu_ps(h->u, _mm_mul_ps(V, rcp)); _mm_storeu_ps(h->v, _mm_mul_ps(W, rcp));
-    mask = _mm_cmp_ps_mask(det, zero, _CMP_NEQ_UQ) & _mm_cmp_ps_mask(t, zero, _CMP_GT_OQ) &
-           _mm_cmp_ps_mask(t, _mm_set1_ps(tmax), _CMP_LT_OQ);
+    det = L_(add_ps)(L_(add_ps)(U, V), W);
+    T = L_(add_ps)(L_(add_ps)(L_(mul_ps)(U, L_(mul_ps)(Sz, az)), L_(mul_ps)(V, L_(mul_ps)(Sz, bz))),
+                   L_(mul_ps)(W, L_(mul_ps)(Sz, cz)));
+    rcp = L_(div_ps)(L_(set1_ps)(1.0f), det);
+    t = L_(mul_ps)(T, rcp);
+    L_(storeu_ps)(h->t, t); L_(storeu_ps)(h->u, L_(mul_ps)(V, rcp)); L_(storeu_ps)(h->v, L_(mul_ps)(W, rcp));
+    mask = L_(cmp_ps_mask)(det, zero, _CMP_NEQ_UQ) & L_(cmp_ps_mask)(t, zero, _CMP_GT_OQ) &
+           L_(cmp_ps_mask)(t, L_(set1_ps)(tmax), _CMP_LT_OQ);
     return mask & inside;
 }
 #define block_hits_float block_hits_v
 #endif
 
 /* Step 3 for one lane, in scalar code: the same float shear, then U, V, W from exact products. */
-static int lane_hit_exact(const tri4 *blk, ray_pre p, int i, float tmax, float *t, float *u, float *v)
+static int lane_hit_exact(const tri_block *blk, ray_pre p, int i, float tmax, float *t, float *u, float *v)
 {
     float az = blk->v[0][p.kz][i] - p.o[p.kz], bz = blk->v[1][p.kz][i] - p.o[p.kz], cz = blk->v[2][p.kz][i] - p.o[p.kz];
     double ax = (blk->v[0][p.kx][i] - p.o[p.kx]) - p.Sx * az, ay = (blk->v[0][p.ky][i] - p.o[p.ky]) - p.Sy * az;
@@ -744,10 +819,10 @@ static int lane_hit_exact(const tri4 *blk, ray_pre p, int i, float tmax, float *
     return *t > 0.0f && *t < tmax;
 }
 
-static unsigned redo_edge_lanes(const tri4 *blk, ray_pre p, float tmax, unsigned mask, unsigned edge, lane_hits *h)
+static unsigned redo_edge_lanes(const tri_block *blk, ray_pre p, float tmax, unsigned mask, unsigned edge, lane_hits *h)
 {
     int i;
-    for (i = 0; i < 4; i++)
+    for (i = 0; i < BVH_LEAF_MAX; i++)
         if (edge >> i & 1) {
             mask &= ~(1u << i);
             mask |= (unsigned)lane_hit_exact(blk, p, i, tmax, &h->t[i], &h->u[i], &h->v[i]) << i;
@@ -756,7 +831,7 @@ static unsigned redo_edge_lanes(const tri4 *blk, ray_pre p, float tmax, unsigned
 }
 
 /* Returns a bit per lane of blk hit with t in (0, tmax), their t and barycentrics in h. */
-static inline unsigned block_hits(const tri4 *blk, const ray_pre *p, float tmax, lane_hits *h)
+static inline unsigned block_hits(const tri_block *blk, const ray_pre *p, float tmax, lane_hits *h)
 {
     unsigned edge, mask = block_hits_float(blk, p, tmax, h, &edge);
     return edge ? redo_edge_lanes(blk, *p, tmax, mask, edge, h) : mask;
@@ -776,6 +851,7 @@ static inline int lowest_bit(unsigned m)
  * faster than looping over the set bits, although it executes more instructions. */
 typedef struct { int ref; float t; } entry;
 
+#ifndef BVH_AVX512
 static inline int push_near_first(const wnode *n, unsigned mask, const float dist[BVH_WIDTH], entry *stack, int *sp)
 {
     entry e[BVH_WIDTH], x;
@@ -797,6 +873,7 @@ static inline int push_near_first(const wnode *n, unsigned mask, const float dis
     for (j = 0; j < k - 1; j++) stack[(*sp)++] = e[j];
     return e[k - 1].ref;
 }
+#endif
 
 #ifdef BVH_AVX512
 /* With AVX-512, nodes (and blocks, block_hits_v) are tested with intrinsics: the same operations
@@ -806,13 +883,15 @@ static inline int push_near_first(const wnode *n, unsigned mask, const float dis
  * branch per lane, which mispredicts on incoherent rays. Measured (docs/performance.md, issue 12
  * item 4): dragon diffuse rays 1.2x faster, shadow 1.1x. Shadow rays keep the branch per lane:
  * with the compress they were 0.91x. */
-typedef struct { __m256 o[3], inv[3]; } ray_vec;
+typedef struct { __m256 o[3], inv[3], inv_far[3]; } ray_vec;
 
 static inline ray_vec ray_vectors(const ray_pre *p)
 {
     ray_vec v;
     int a;
-    for (a = 0; a < 3; a++) { v.o[a] = _mm256_set1_ps(p->o[a]); v.inv[a] = _mm256_set1_ps(p->inv[a]); }
+    for (a = 0; a < 3; a++) {
+        v.o[a] = _mm256_set1_ps(p->o[a]); v.inv[a] = _mm256_set1_ps(p->inv[a]); v.inv_far[a] = _mm256_set1_ps(p->inv_far[a]);
+    }
     return v;
 }
 
@@ -831,10 +910,9 @@ static inline unsigned node_hits_v(const wnode *n, const ray_pre *p, const ray_v
     t0 = _mm256_max_ps(slab(n, p->near[0], v->o[0], v->inv[0]), t0);   /* max(a, b) = a > b ? a : b */
     t0 = _mm256_max_ps(slab(n, p->near[1], v->o[1], v->inv[1]), t0);
     t0 = _mm256_max_ps(slab(n, p->near[2], v->o[2], v->inv[2]), t0);
-    t1 = _mm256_min_ps(slab(n, p->far[0], v->o[0], v->inv[0]), t1);    /* min(a, b) = a < b ? a : b */
-    t1 = _mm256_min_ps(slab(n, p->far[1], v->o[1], v->inv[1]), t1);
-    t1 = _mm256_min_ps(slab(n, p->far[2], v->o[2], v->inv[2]), t1);
-    t1 = _mm256_mul_ps(t1, _mm256_set1_ps(BVH_BOX_WIDEN));
+    t1 = _mm256_min_ps(slab(n, p->far[0], v->o[0], v->inv_far[0]), t1);    /* min(a, b) = a < b ? a : b */
+    t1 = _mm256_min_ps(slab(n, p->far[1], v->o[1], v->inv_far[1]), t1);
+    t1 = _mm256_min_ps(slab(n, p->far[2], v->o[2], v->inv_far[2]), t1);
     t1 = _mm256_min_ps(_mm256_set1_ps(tmax), t1);
     *dist = t0;
     return _mm256_cmp_ps_mask(t0, t1, _CMP_LE_OQ);
@@ -845,7 +923,16 @@ static inline int push_near_first_v(const wnode *n, unsigned mask, __m256 dist, 
 {
     float t[BVH_WIDTH];
     int r[BVH_WIDTH], k, i, j;
-    if (!(mask & (mask - 1))) return n->child[__builtin_ctz(mask)];
+    unsigned rest = mask & (mask - 1);
+    if (!rest) return n->child[__builtin_ctz(mask)];
+    if (!(rest & (rest - 1))) {       /* two children: no compress */
+        int a = __builtin_ctz(mask), c = __builtin_ctz(rest), near;
+        _mm256_storeu_ps(t, dist);
+        near = t[c] < t[a];
+        assert(*sp + 1 <= BVH_STACK);
+        stack[*sp].ref = n->child[near ? a : c]; stack[*sp].t = t[near ? a : c]; (*sp)++;
+        return n->child[near ? c : a];
+    }
     _mm256_storeu_ps(t, _mm256_maskz_compress_ps((__mmask8)mask, dist));
     _mm256_storeu_si256((__m256i *)r, _mm256_maskz_compress_epi32((__mmask8)mask,
                                                                   _mm256_load_si256((const __m256i *)n->child)));
@@ -878,14 +965,14 @@ int bvh_intersect(const bvh *b, const ray *r, hit *h)
     entry stack[BVH_STACK];
     int sp = 0, ref = b->root, best_lane = -1;
     float tmax = r->tmax, tcull = tmax * BVH_T_WIDEN, bu = 0, bv = 0;
-    const tri4 *best = NULL;
+    const tri_block *best = NULL;
     ray_pre p;
 #ifdef BVH_AVX512
     ray_vec v;
 #endif
     h->tri = -1;
     if (!b->nblocks || !ray_is_valid(r)) return 0;
-    p = ray_prepare(r);
+    ray_prepare(r, &p);
 #ifdef BVH_AVX512
     v = ray_vectors(&p);
 #endif
@@ -901,7 +988,7 @@ int bvh_intersect(const bvh *b, const ray *r, hit *h)
             if (mask) { ref = push_near_first(&b->nodes[ref], mask, dist, stack, &sp); continue; }
 #endif
         } else {                   /* leaf: keep the nearest of its triangles closer than tmax */
-            const tri4 *blk = &b->blocks[~ref];
+            const tri_block *blk = &b->blocks[~ref];
             lane_hits lh;
             unsigned mask = block_hits(blk, &p, tmax, &lh);
             for (; mask; mask &= mask - 1) {
@@ -931,7 +1018,7 @@ int bvh_occluded(const bvh *b, const ray *r)
     ray_vec v;
 #endif
     if (!b->nblocks || !ray_is_valid(r)) return 0;
-    p = ray_prepare(r);
+    ray_prepare(r, &p);
 #ifdef BVH_AVX512
     v = ray_vectors(&p);
 #endif
@@ -963,17 +1050,17 @@ int bvh_occluded(const bvh *b, const ray *r)
 
 int bvh_triangle_hit(vec3 a, vec3 b, vec3 c, const ray *r, hit *h)
 {
-    tri4 blk;
+    tri_block blk;
     lane_hits lh;
     vec3 corners[3] = {a, b, c};
     ray_pre p;
     int k, lane;
     if (!ray_is_valid(r)) return 0;
     for (k = 0; k < 3; k++)
-        for (lane = 0; lane < 4; lane++) {
+        for (lane = 0; lane < BVH_LEAF_MAX; lane++) {
             blk.v[k][0][lane] = corners[k].x; blk.v[k][1][lane] = corners[k].y; blk.v[k][2][lane] = corners[k].z;
         }
-    p = ray_prepare(r);
+    ray_prepare(r, &p);
     if (!(block_hits(&blk, &p, r->tmax, &lh) & 1)) return 0;
     h->t = lh.t[0]; h->u = lh.u[0]; h->v = lh.v[0];
     return 1;

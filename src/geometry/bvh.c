@@ -60,7 +60,7 @@
 #define BVH_BINS 16            /* SAH bins per axis (fewer for nodes of fewer triangles) */
 #define BVH_WIDTH 8            /* children per node: one 256-bit vector of floats per slab row */
 #define BVH_LEAF_MAX 8         /* triangles per leaf: one block, a 256-bit vector per row (4 works too) */
-#define BVH_BINARY_LEAF 4      /* the binary tree splits nodes of more triangles than this */
+#define BVH_BINARY_LEAF 8      /* the binary tree splits nodes of more triangles than this */
 #define BVH_COST_NODE 1.0f     /* SAH cost of visiting a node ... */
 #define BVH_COST_BLOCK 1.0f    /* ... and of testing one block (as measured: alike) */
 #define BVH_SAH_DEPTH 48       /* deeper than this, split in halves: bounds the depth for the stack */

@@ -34,7 +34,8 @@
 # Usage (from the project's root): make bench-cycles, or bench/cycles.sh [--doc]
 # Environment: PATHLAB, PATHLAB_FLAGS, REF_PATHLAB (first column's program), REF_PATHLAB_FLAGS (""),
 #   SIZE (200x200), THREADS (2), LEVELS (64 256), REF_SPP (2048, two halves), ROUNDS (1; round r uses
-#   seed r for both renderers), SCENES (cornell mcguire), OUT (build-native/bench if it exists, else
+#   seed r for both renderers), SCENES (cornell mcguire; mcguire-NAME adds MCGUIRE/NAME.obj, e.g.
+#   mcguire-CornellBox-Empty-RG, with CornellBox-Original's camera), OUT (build-native/bench if it exists, else
 #   build/bench), REF_DIR (${XDG_CACHE_HOME:-~/.cache}/pathlab-bench-cycles: cached references),
 #   CYCLES_REF (../shared/tools/cycles/cycles_ref.py), MCGUIRE (../shared/data/cornell-mcguire).
 set -eu
@@ -88,7 +89,9 @@ for sc in $SCENES; do
         mcguire) src=$MCGUIRE/CornellBox-Original.obj
             # no camera comes with it; ../shared/data/README.md's suggestion
             CAM[$sc]="--eye 0,1,3.9 --target 0,1,0 --up 0,1,0 --fov 40" ;;
-        *) die "unknown scene $sc (cornell, mcguire)" ;;
+        mcguire-*) src=$MCGUIRE/${sc#mcguire-}.obj   # another of McGuire's boxes, the same camera
+            CAM[$sc]="--eye 0,1,3.9 --target 0,1,0 --up 0,1,0 --fov 40" ;;
+        *) die "unknown scene $sc (cornell, mcguire, mcguire-NAME for MCGUIRE/NAME.obj)" ;;
     esac
     [ -f "$src" ] || die "$src missing"
     for m in $(sed -n 's/^mtllib[[:space:]]*//p' "$src" | tr -d '\r'); do cp "$(dirname "$src")/$m" "$T/$sc/"; done

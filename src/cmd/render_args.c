@@ -128,6 +128,7 @@ static int parse_sampler(void *ctx, const char *flag, const char *v)
     int k;
     if (parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, SAMPLER_NAMES)) return 1;
     a->ro.sampler = (sampler_kind)k;
+    a->sampler_given = 1;
     return 0;
 }
 

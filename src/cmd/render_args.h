@@ -14,6 +14,7 @@ typedef struct {
     view vw, flags;                  /* flags: values given on the command line */
     int eye, target, up, fov, size;  /* which camera flags were given */
     int spp_given, samples_given, resume;
+    int sampler_given;               /* --sampler given (else render_cmd picks one: render_default_sampler) */
     const char *orbiter, *view_file, *write_view;  /* --orbiter, --view, --write-view (NULL if not given) */
     render_opts ro;
     /* render only (cmd/render_adaptive.h): adaptive sampling */

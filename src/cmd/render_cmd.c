@@ -14,6 +14,15 @@
 #include "sys/output_path.h"
 #include "sys/progress.h"
 
+/* The sampler of a render that names none: sobol1, the least noise for a given time (docs/sampler.md,
+ * "Which default"), unless the render needs independent samples: a variance (--variance), more
+ * samples added later (--resume) or merged (--samples), or the adaptive allocation. */
+static sampler_kind render_default_sampler(const render_args *a)
+{
+    int needs_independent = a->variance || a->resume || a->samples_given || a->adaptive || a->target_given;
+    return needs_independent ? SAMPLER_INDEPENDENT : SAMPLER_SOBOL1;
+}
+
 /* What a Sobol sampler cannot do: 1 after saying why. */
 static int check_sampler_args(const render_args *a)
 {
@@ -91,6 +100,7 @@ static int check_render_args(render_args *a)
     }
     if (render_adaptive_check(a) || render_check_camera_flags(a)) return 1;
     if (a->ro.time_limit > 0 && !a->spp_given && !a->samples_given && !a->target_given) a->ro.spp = 1 << 30;   /* --time alone: no cap */
+    if (!a->sampler_given) a->ro.sampler = render_default_sampler(a);
     return check_sampler_args(a);
 }
 

@@ -22,6 +22,9 @@
 #     mean of 8 sobol1 renders (seeds 1..8, independent scramblings; 24x24, --pixel-center, 512 spp,
 #     L0..L4) with the variance of that mean from their spread (7 dof, zcheck --dof-a 7) agrees with
 #     ref/cornell_L0-4 (per pixel alpha 0.01, bar 99.75%; blocks and image alpha 1e-3).
+#  7. The default sampler: no --sampler is sobol1 (sidecar line, bytes of --sampler sobol1), and
+#     independent with --variance, --samples, --target-error (bytes of --sampler independent, no
+#     sampler line); --resume of a default render is refused naming sobol1; --sampler independent obeyed.
 # Broken on purpose (docs/sampler.md, "Tests under sobol"): the within-pixel variance fails 4 checks,
 # groups sharing one scrambling 28, the roulette reading the direction's dimension 3; a dimension left
 # unscrambled (the index shuffle kept) fails none: it stays unbiased.
@@ -118,7 +121,7 @@ cp "$TMP/s.pfm" "$TMP/s.bak"
 expect_status "render --resume refuses a sobol render (exit 2)" 2 $PATHLAB render scenes/cornell.obj $S --quiet --size 16x16 --spp 16 --resume -o "$TMP/s.pfm"
 expect_err "render --resume: names the file, says why and suggests --sampler independent" "s\.pfm was rendered with --sampler sobol.*not independent.*--sampler independent"
 cmp -s "$TMP/s.pfm" "$TMP/s.bak" && pass "render --resume left the sobol render as it was" || fail "render --resume changed the sobol render"
-$PATHLAB render scenes/cornell.obj --quiet --size 16x16 --spp 8 -o "$TMP/i.pfm"
+$PATHLAB render scenes/cornell.obj --sampler independent --quiet --size 16x16 --spp 8 -o "$TMP/i.pfm"
 expect_status "render --resume --sampler sobol of an independent render: refused (exit 2)" 2 $PATHLAB render scenes/cornell.obj $S --quiet --size 16x16 --spp 16 --resume -o "$TMP/i.pfm"
 expect_err "render --resume --sampler sobol: says why" "i\.pfm \(this render: --sampler sobol\): a Sobol render cannot be resumed"
 $PATHLAB render scenes/cornell.obj $S --quiet --size 16x16 --samples 8:16 -o "$TMP/s2.pfm"
@@ -146,4 +149,35 @@ out1=$("$ZCHECK" "$TMP/q.pfm" "$TMP/qv.pfm" "$REF/cornell_L0-4.pfm" "$REF/cornel
 out2=$("$ZCHECK" "$TMP/q.pfm" "$TMP/qv.pfm" "$REF/cornell_L0-4.pfm" "$REF/cornell_L0-4_var.pfm" --dof-a 7 --alpha 0.001 --block 8 --pixel-pass 0 2>&1); rc2=$?
 if [ $rc1 -eq 0 ] && [ $rc2 -eq 0 ]; then pass "sobol1, 8 seeds x 512 spp, against cornell_L0-4 (7 dof): $out1 | $out2"
 else fail "sobol1, 8 seeds x 512 spp, against cornell_L0-4 (7 dof): $out1 | $out2"; fi
+
+# ---- 7. the default sampler (render_default_sampler): sobol1 unless the render needs independent
+# samples (--variance, --resume, --samples, adaptive sampling); an explicit --sampler is obeyed.
+# Each check compares bytes with a render that names its sampler, so a wrong default fails it.
+D="$PATHLAB render scenes/cornell.obj --quiet --size 16x16 --spp 8 --seed 5"
+$D -o "$TMP/d.pfm"; $D --sampler sobol1 -o "$TMP/d1.pfm"; $D --sampler independent -o "$TMP/di.pfm"
+cmp -s "$TMP/d1.pfm" "$TMP/di.pfm" && fail "default: sobol1 and independent renders are the same bytes: the checks below cannot tell them apart" \
+    || pass "default: sobol1 and independent renders differ (the byte comparisons below can tell them apart)"
+grep -q '^sampler sobol1$' "$TMP/d.pfm.meta" && cmp -s "$TMP/d.pfm" "$TMP/d1.pfm" \
+    && pass "default: no --sampler is sobol1 (sidecar line, and the bytes of --sampler sobol1)" \
+    || fail "default: no --sampler is not sobol1: $(grep '^sampler' "$TMP/d.pfm.meta")"
+grep -q '^sampler' "$TMP/di.pfm.meta" && fail "default: --sampler independent wrote a sampler line: $(grep '^sampler' "$TMP/di.pfm.meta")" \
+    || pass "default: an explicit --sampler independent is obeyed (no sampler line)"
+$D -o "$TMP/dv.pfm" --variance "$TMP/dv_var.pfm"; $D --sampler independent -o "$TMP/dvi.pfm" --variance "$TMP/dvi_var.pfm"
+! grep -q '^sampler' "$TMP/dv.pfm.meta" && cmp -s "$TMP/dv.pfm" "$TMP/dvi.pfm" && cmp -s "$TMP/dv_var.pfm" "$TMP/dvi_var.pfm" && cmp -s "$TMP/dv.pfm" "$TMP/di.pfm" \
+    && pass "default: --variance without --sampler is independent (no sampler line; image and variance = --sampler independent)" \
+    || fail "default: --variance without --sampler is not independent: $(grep '^sampler' "$TMP/dv.pfm.meta")"
+D="$PATHLAB render scenes/cornell.obj --quiet --size 16x16 --seed 5"
+$D --samples 0:8 -o "$TMP/ds.pfm"; $D --samples 0:8 --sampler independent -o "$TMP/dsi.pfm"
+! grep -q '^sampler' "$TMP/ds.pfm.meta" && cmp -s "$TMP/ds.pfm" "$TMP/dsi.pfm" && cmp -s "$TMP/ds.pfm" "$TMP/di.pfm" \
+    && pass "default: --samples 0:8 without --sampler is independent (no sampler line; = --sampler independent)" \
+    || fail "default: --samples 0:8 without --sampler is not independent: $(grep '^sampler' "$TMP/ds.pfm.meta")"
+expect_status "default: --target-error without --sampler renders (exit 0)" 0 $D --spp 16 --target-error 0.5 -o "$TMP/da.pfm"
+[ -f "$TMP/da.pfm.meta" ] && ! grep -q '^sampler' "$TMP/da.pfm.meta" && pass "default: --target-error without --sampler is independent (no sampler line)" \
+    || fail "default: --target-error without --sampler is not independent: $(grep '^sampler' "$TMP/da.pfm.meta" 2>&1)"
+cp "$TMP/d.pfm" "$TMP/d.bak"
+expect_status "default: --resume of a default (sobol1) render is refused (exit 2)" 2 $D --spp 16 --resume -o "$TMP/d.pfm"
+expect_err "default: --resume of a sobol1 render names sobol1 and suggests --sampler independent" "d\.pfm was rendered with --sampler sobol1.*--sampler independent"
+cmp -s "$TMP/d.pfm" "$TMP/d.bak" && pass "default: the refused --resume left the sobol1 render as it was" || fail "default: the refused --resume changed the render"
+$D --sampler independent --spp 8 -o "$TMP/dr.pfm"
+expect_status "default: --resume of an independent render, no --sampler: resumed (exit 0)" 0 $D --spp 16 --resume -o "$TMP/dr.pfm"
 exit 0

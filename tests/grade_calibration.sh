@@ -85,7 +85,8 @@ honest() {
     if [ ! -s "$f" ]; then
         local t0; t0=$(date +%s.%N)
         # shellcheck disable=SC2068
-        if ! $PATHLAB render "scenes/$SCENE.obj" --quiet --size "${size}x${size}" --spp "$spp" --seed "$seed" $@ -o "$f" >&2; then
+        # --sampler independent: the calibration (and the cached images) are of independent samples
+        if ! $PATHLAB render "scenes/$SCENE.obj" --quiet --size "${size}x${size}" --spp "$spp" --seed "$seed" --sampler independent $@ -o "$f" >&2; then
             echo "grade_calibration.sh: render failed: $SCENE $size $spp $label $seed $*" >&2; exit 2
         fi
         awk -v t0="$t0" -v t1="$(date +%s.%N)" 'BEGIN { print t1 - t0 }' >> "$WORK/render_times"

@@ -16,7 +16,8 @@ if [ "${PATHLAB_FAST:-0}" != 0 ]; then
 else
     SIZE=64x64 REF_SPP=1024 SEEDS4="1 2 3 4 5" SEEDS64="1 2 3"
 fi
-SCENE="scenes/cornell.obj --quiet --size $SIZE --bounces 0:3"
+# --sampler independent: grade's false-alarm rate (alpha) and power are those of independent samples
+SCENE="scenes/cornell.obj --quiet --size $SIZE --bounces 0:3 --sampler independent"
 R="$PATHLAB render $SCENE"
 
 # grade_expect NAME WANT PATTERN IMAGE [FLAGS...]: grade IMAGE against the reference; wants exit

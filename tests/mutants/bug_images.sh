@@ -10,7 +10,7 @@ set -u
 OUT=${1:-$ROOT/docs/img}
 BUGS="no-cos-surface area-pdf emission-twice acne"
 SIZE=256x256 SPP=64 REF_SPP=1024
-FLAGS="--size $SIZE --seed 1 --quiet"
+FLAGS="--size $SIZE --seed 1 --quiet --sampler independent"   # graded: independent samples, as grade assumes
 W=$(mktemp -d); trap 'rm -rf "$W"' EXIT
 mkdir -p "$OUT"
 copy_tree "$W/base" && build_in "$W/base" pathlab || { echo "the unbroken copy does not build" >&2; exit 1; }
@@ -22,7 +22,7 @@ render() {
 }
 echo "reference: the correct program, $REF_SPP spp"
 # shellcheck disable=SC2086
-nice -n 10 "$W/base/pathlab" render "$ROOT/scenes/cornell.obj" --size $SIZE --seed 99 --quiet --spp $REF_SPP -o "$W/ref.pfm" || exit 1
+nice -n 10 "$W/base/pathlab" render "$ROOT/scenes/cornell.obj" --size $SIZE --seed 99 --quiet --sampler independent --spp $REF_SPP -o "$W/ref.pfm" || exit 1
 render "$W/base/pathlab" correct_cornell || exit 1
 for b in $BUGS; do
     i=$(mutant_index "$b") || { echo "no mutant $b" >&2; exit 1; }

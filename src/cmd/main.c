@@ -92,9 +92,10 @@ static const char USAGE_RENDER[] =
     "  --rr D|off           Russian roulette after D bounces (default 3)\n"
     "  --rr-below T         the roulette thins paths whose throughput is below T: p_survive = max(beta)/T\n"
     "                       (default 1 with --sampler independent, 1/3 with sobol and sobol1)\n"
-    "  --sampler S          independent (default: the slides' Monte Carlo), sobol (4 scrambled Sobol sets a pixel:\n"
-    "                       less noise, --variance with 3 dof) or sobol1 (1 set: the least noise, no --variance;\n"
-    "                       docs/sampler.md). Sobol renders cannot be resumed or merged\n"
+    "  --sampler S          independent (the slides' Monte Carlo), sobol (4 scrambled Sobol sets a pixel: less\n"
+    "                       noise, --variance with 3 dof) or sobol1 (1 set: the least noise, no --variance;\n"
+    "                       docs/sampler.md). Sobol renders cannot be resumed or merged. Default: sobol1, but\n"
+    "                       independent with --variance, --resume, --samples or adaptive sampling\n"
     "  --variance FILE.pfm  also write the variance of each pixel's mean (with --split, one per bounce too)\n";
 
 /* The third part: adaptive sampling (docs/adaptive.md). */

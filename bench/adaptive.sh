@@ -19,7 +19,8 @@ for s in ${SCENES:-cornell mis-plates}; do
                 f=$OUT/${s}_${t}_${mode}_$r.pfm
                 flags=$([ $mode = adaptive ] && echo "--adaptive --sample-count $OUT/${s}_${t}_${mode}_${r}_n.pfm" || true)
                 # shellcheck disable=SC2086
-                $P render "scenes/$s.obj" --quiet --size "$SIZE" --threads "$THREADS" --time "$t" --seed $((1000 * r + t)) $flags -o "$f"
+                # independent samples for both, as adaptive sampling uses: the allocation is what is compared
+                $P render "scenes/$s.obj" --sampler independent --quiet --size "$SIZE" --threads "$THREADS" --time "$t" --seed $((1000 * r + t)) $flags -o "$f"
                 spp=$(sed -n 's/^spp-mean //p; s/^spp \([0-9]*\)$/\1/p' "$f.meta")
                 echo "$s T=$t $mode rep $r: $(python3 bench/adaptive_error.py "$ref" "$OUT/ref_${s}_var.pfm" "$f" | cut -d' ' -f2-) spp $spp"
             done
@@ -32,7 +33,7 @@ for s in ${SCENES:-cornell mis-plates}; do
         $P render "scenes/$s.obj" --quiet --size "$SIZE" --threads "$THREADS" --target-error "$e" --seed 4242 -o "$f" --sample-count "${f%.pfm}_n.pfm"
         m=$(sed -n 's/^spp-mean //p' "$f.meta")
         n=$(awk -v m="$m" 'BEGIN { printf "%d", m + 16 + 0.5 }')
-        $P render "scenes/$s.obj" --quiet --size "$SIZE" --threads "$THREADS" --spp "$n" --seed 4242 -o "$OUT/${s}_e${e}_uniform.pfm"
+        $P render "scenes/$s.obj" --sampler independent --quiet --size "$SIZE" --threads "$THREADS" --spp "$n" --seed 4242 -o "$OUT/${s}_e${e}_uniform.pfm"
         echo "$s --target-error $e (mean $m spp + 16 pilot): $(python3 bench/adaptive_error.py "$ref" "$OUT/ref_${s}_var.pfm" "$f" | cut -d' ' -f2-)"
         echo "$s uniform --spp $n: $(python3 bench/adaptive_error.py "$ref" "$OUT/ref_${s}_var.pfm" "$OUT/${s}_e${e}_uniform.pfm" | cut -d' ' -f2-)"
     done

@@ -80,7 +80,8 @@ while [ "$spp" -le "$MAX_SPP" ]; do
         for c in "${CONFIGS[@]}"; do
             read -r direct light dir <<< "$c"
             lflag=$light; [ "$lflag" = - ] && lflag=area
-            if ! { time "$PATHLAB" render "scenes/$sc.obj" --bounce 1 --direct "$direct" --light "$lflag" --dir "$dir" \
+            # independent samples: the fitted slopes assume the error falls as 1/sqrt(N)
+            if ! { time "$PATHLAB" render "scenes/$sc.obj" --sampler independent --bounce 1 --direct "$direct" --light "$lflag" --dir "$dir" \
                        --size "$SIZE" --spp "$spp" --seed 1 --threads 1 -o "$IMG" 2> "$OUT/render.log"; } 2> "$OUT/cpu.log"; then
                 cat "$OUT/render.log" >&2; exit 1
             fi

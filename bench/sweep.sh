@@ -103,7 +103,8 @@ while [ ${#ACTIVE[@]} -gt 0 ]; do
             label=${e%%|*} flags=${e#*|}
             [ -n "${ACTIVE["$sc|$label"]:-}" ] || continue
             # shellcheck disable=SC2086
-            if ! { time "$PATHLAB" render "scenes/$sc.obj" $flags --size "$size" --spp "$spp" --seed "$SEED" \
+            # independent samples: the estimators' RMSE against time is the slides' Monte Carlo lesson
+            if ! { time "$PATHLAB" render "scenes/$sc.obj" --sampler independent $flags --size "$size" --spp "$spp" --seed "$SEED" \
                        --threads "$THREADS" -o "$IMG" 2> "$LOG"; } 2> "$CPULOG"; then
                 cat "$LOG" >&2; exit 1
             fi

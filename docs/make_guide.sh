@@ -23,7 +23,7 @@ W=$(mktemp -d); trap 'rm -rf "$W"' EXIT
 T0=$(date +%s.%N); LOAD0=$(cut -d" " -f1-3 /proc/loadavg)
 CB=scenes/cornell.obj
 MP=scenes/mis-plates.obj
-R=(--threads 2 --quiet)
+R=(--threads 2 --quiet --sampler independent)   # the guide shows the slides' Monte Carlo, and grades with it
 say() { echo "== $*" >&2; }
 # mean of an image (over pixels and RGB): pathlab diff against a black image prints it
 mean() { local w h; read -r w h < <(sed -n 2p "$1"); "$PFMTOOL" const "$w" "$h" 0 0 0 "$W/zero.pfm" >/dev/null

@@ -165,7 +165,8 @@ bench-portable:
 # diffuse Cornell boxes (scenes/cornell and ../shared's CornellBox-Original), 200x200, 2 threads, 64
 # and 256 spp; writes the table into docs/performance.md. Optional: installs Debian's blender and
 # python3-openimageio if missing (not needed by anything else). Runs the NATIVE=1 build like `make
-# bench`; PATHLAB=PROG and PATHLAB_FLAGS="; --sampler sobol" (';' between columns) choose the columns.
+# bench`; PATHLAB=PROG and PATHLAB_FLAGS="; --sampler independent" (';' between columns) choose the
+# columns (an empty set: the default flags, whose sampler is sobol1).
 # Each column costs as long as the Cycles renders (equal time): one column, one round took about 4
 # minutes on the loaded machine (load 6-9 on 2 cores), plus 15 the first time (the four references,
 # cached outside git in ~/.cache/pathlab-bench-cycles).

@@ -310,11 +310,13 @@ static float root_cost(const builder *B, int ni, int *leaf)
     aabb b = node_box(nd);
     int k;
     *leaf = 1;
+    assert(!nd->count || sub->count <= BVH_LEAF_MAX);   /* a binary leaf fits one block */
     if (nd->count) return as_leaf;
     as_node = BVH_COST_NODE * aabb_area(&b) + share_cost(&B->sub[nd->first], &B->sub[nd->first + 1], BVH_WIDTH, &k);
     *leaf = sub->count <= BVH_LEAF_MAX && as_leaf <= as_node;
     return *leaf ? as_leaf : as_node;
 }
+/* Fills B->sub[ni], its children's being filled (build_rec calls it on the way back up). */
 static void subtree_cost(builder *B, int ni, int first, int count)
 {
     subtree *sub = &B->sub[ni];

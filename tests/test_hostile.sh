@@ -90,11 +90,12 @@ expect_err "orbiter: NUL byte: file:line" "nul.orbiter:4: a NUL byte"
 
 # ---- termination whatever the materials ----
 # A closed box, Kd 1: with q = min(1, max beta) = 1 every path ran to the 10^6-bounce cap (0.8 s per
-# sample). Now q <= 0.95: about 20 bounces per path after --rr 3, so 20 to 40 continuation rays.
+# sample). Now q <= 0.95 from bounce 32 on (RR_CAP_FROM in integrator.c): 32 bounces, then about
+# 20 more, so 40 to 70 continuation rays per path.
 render_t "roulette: closed box with Kd 1 ends" 60 0 $D/kd1/furnace.obj --size 16x16 --spp 4 -o "$OUT"
 n=$(stat_field continuation); per=$(( ${n:-999999999} / 1024 ))
-if [ "$per" -ge 10 ] && [ "$per" -le 40 ]; then pass "roulette: Kd 1: $per continuation rays per path (expected 3 + 1/(1-0.95) = 23)"
-else fail "roulette: Kd 1: $per continuation rays per path, expected 10 to 40: $(tail -n 1 "$TMP/err")"; fi
+if [ "$per" -ge 40 ] && [ "$per" -le 70 ]; then pass "roulette: Kd 1: $per continuation rays per path (expected 32 + 1/(1-0.95) = 52)"
+else fail "roulette: Kd 1: $per continuation rays per path, expected 40 to 70: $(tail -n 1 "$TMP/err")"; fi
 grep -q ' 0 paths cut at 1000 bounces' "$TMP/err" \
     && pass "roulette: Kd 1: no path cut by the bounce cap" || fail "roulette: Kd 1: $(tail -n 1 "$TMP/err")"
 render_t "roulette off: Kd 1 ends at the hard bounce cap" 60 0 $D/kd1/furnace.obj --size 4x4 --spp 1 --rr off -o "$OUT"

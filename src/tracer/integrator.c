@@ -206,20 +206,25 @@ static ray continuation_ray(const vertex *p, vec3 wi_local)
  * = 1 (pbrt's rule) a path that has lost half of its throughput has one chance in two to go on;
  * below = 1/3 keeps it for sure until its throughput falls under 0.95 / 3: more bounces, less
  * noise from the roulette itself, which is what costs most once the samples are stratified. The cap
- * at RR_SURVIVE_MAX (Mitsuba 3 caps it at 0.95 too) ends every path after 1 / (1 - 0.95) = 20 more
- * bounces on average whatever the materials: with Kd >= 1 the throughput never falls, and a
- * survival probability of 1 ran every path to the bounce cap (0.8 s per sample in a closed box).
+ * at RR_SURVIVE_MAX (Mitsuba 3 caps it at 0.95 too), from bounce RR_CAP_FROM on, ends every path
+ * after 1 / (1 - 0.95) = 20 more bounces on average whatever the materials: with Kd >= 1 the
+ * throughput never falls, and a survival probability of 1 ran every path to the bounce cap (0.8 s
+ * per sample in a closed box). Before RR_CAP_FROM a path whose throughput is at least `below` goes
+ * on for sure, as in Cycles: in an open box with Kd = 1 walls (McGuire's CornellBox-Empty-White)
+ * the cap's 5 % coin at every bounce was most of the noise (docs/performance.md, Cycles section).
  * Returns 0 when the path stops. */
 #define RR_SURVIVE_MAX 0.95f
+#define RR_CAP_FROM 32
 static int survives_roulette(vec3 *beta, sampler *smp, int k, float below)
 {
     vec3 before = *beta;
-    float p_survive = fminf(RR_SURVIVE_MAX, fmaxf(0.05f, v3_max_comp(before) / below));
+    float cap = k < RR_CAP_FROM ? 1.0f : RR_SURVIVE_MAX;
+    float p_survive = fminf(cap, fmaxf(0.05f, v3_max_comp(before) / below));
     if (sampler_1d(smp, sampler_dim(k, SAMPLER_DIM_ROULETTE)) >= p_survive) return 0;
     *beta = v3_scale(before, 1.0f / p_survive);
     /* below the cap, p_survive is >= every channel of beta / below, which thus ends <= below (at
      * the cap, materials with Kd + Ks > 1 may make beta grow without bound: their image has no limit) */
-    assert(p_survive == RR_SURVIVE_MAX || p_survive == 0.05f || v3_max_comp(*beta) <= below * 1.000001f);
+    assert(p_survive == cap || p_survive == 0.05f || v3_max_comp(*beta) <= below * 1.000001f);
     return 1;
 }
 

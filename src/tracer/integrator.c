@@ -267,8 +267,8 @@ vec3 integrate(const scene *sc, const integrator_opts *opt, const ray *camera, s
     ray ray_pq = *camera;     /* from p (first the eye) toward the next vertex q */
     hit q;
     vec3 beta = v3(1, 1, 1);  /* the path throughput: the product of f G / pdf2(q) over the vertices before p */
-    /* the hard bounce cap: with the roulette on (p_survive <= 0.95) a path reaches it with
-     * probability below 0.95^(BOUNCES_CAP - rr_depth), never in practice; with --rr off and Kd >= 1
+    /* the hard bounce cap: with the roulette on (p_survive <= 0.95 from bounce 32) a path reaches it with
+     * probability below 0.95^(BOUNCES_CAP - RR_CAP_FROM), never in practice; with --rr off and Kd >= 1
      * it is what ends the path. The paths it cuts are counted: the stats line shows them. */
     int k, has_lights = sc->lights.n > 0, kmax = opt->bmax < BOUNCES_CAP ? opt->bmax : BOUNCES_CAP;
     float rr_below = rr_below_for(opt, smp->kind);

@@ -204,7 +204,7 @@ static ray continuation_ray(const vertex *p, vec3 wi_local)
  * divided by p_survive, so that E[beta] is unchanged and no L_k is biased; a survivor's throughput
  * is then `below` at most, and the clamp at 0.05 bounds the weight 1 / p_survive by 20. With below
  * = 1 (pbrt's rule) a path that has lost half of its throughput has one chance in two to go on;
- * below = 1/3 keeps it for sure until its throughput falls under 0.95 / 3: more bounces, less
+ * below = 1/3 keeps it for sure until its throughput falls under 1/3: more bounces, less
  * noise from the roulette itself, which is what costs most once the samples are stratified. The cap
  * at RR_SURVIVE_MAX (Mitsuba 3 caps it at 0.95 too), from bounce RR_CAP_FROM on, ends every path
  * after 1 / (1 - 0.95) = 20 more bounces on average whatever the materials: with Kd >= 1 the
@@ -223,7 +223,8 @@ static int survives_roulette(vec3 *beta, sampler *smp, int k, float below)
     if (sampler_1d(smp, sampler_dim(k, SAMPLER_DIM_ROULETTE)) >= p_survive) return 0;
     *beta = v3_scale(before, 1.0f / p_survive);
     /* below the cap, p_survive is >= every channel of beta / below, which thus ends <= below (at
-     * the cap, materials with Kd + Ks > 1 may make beta grow without bound: their image has no limit) */
+     * the cap, 1 before bounce RR_CAP_FROM and 0.95 after, materials with Kd + Ks > 1 may make beta
+     * grow without bound: their image has no limit) */
     assert(p_survive == cap || p_survive == 0.05f || v3_max_comp(*beta) <= below * 1.000001f);
     return 1;
 }

@@ -261,13 +261,12 @@ static aabb node_box(const node2 *nd)
     return b;
 }
 
-/* Decides how to split node ni (refs [first, first+count)); 0 makes it a leaf. */
-static int choose_split(builder *B, int ni, int first, int count, const aabb *cb, int depth,
+/* Decides how to split refs [first, first+count); 0 makes their node a leaf. */
+static int choose_split(builder *B, int first, int count, const aabb *cb, int depth,
                         split *s, aabb *lcb, aabb *rcb)
 {
     primref *r = B->refs + first;
     float scale[3];
-    (void)ni;
     if (count <= BVH_BINARY_LEAF) return 0;
     if (depth < BVH_SAH_DEPTH && find_split(r, count, cb, s, scale)) {
         partition(r, count, s, cb, scale[s->axis], lcb, rcb);
@@ -397,7 +396,7 @@ static int build_rec(builder *B, int ni, int first, int count, aabb cb, int dept
     node2 *nd = &B->nodes[ni];
     int left = *next, leaves;
     assert(ni >= 0 && ni < B->nslots && count > 0);
-    if (!choose_split(B, ni, first, count, &cb, depth, &s, &lcb, &rcb)) {
+    if (!choose_split(B, first, count, &cb, depth, &s, &lcb, &rcb)) {
         nd->first = first; nd->count = count;
         subtree_cost(B, ni, first, count);
         return 1;

@@ -32,19 +32,19 @@ typedef struct {
     const material *mat;
 } vertex;
 
-/* The vertex at hit h of a ray of direction dir. */
-static vertex make_vertex(const scene *sc, const hit *h, vec3 dir)
+/* *v = the vertex at hit h of a ray of direction dir. Written in place: a returned struct was
+ * copied through the stack with wide loads that waited on the narrow stores before them (7% of
+ * integrate's samples under perf record). */
+static void make_vertex(vertex *v, const scene *sc, const hit *h, vec3 dir)
 {
-    vertex v;
     vec3 wo = v3_scale(dir, -1.0f / v3_length(dir));
-    v.pos = scene_hit_point(sc, h);
-    v.scale = scene_triangle_scale(sc, h->tri);
-    v.n = sc->Ng[h->tri];
-    if (v3_dot(v.n, wo) < 0.0f) v.n = v3_scale(v.n, -1.0f);   /* the BRDF is two-sided */
-    v.frame = frame_from_normal(v.n);
-    v.wo_local = frame_to_local(&v.frame, wo);
-    v.mat = &sc->m.mats[sc->m.tri_mat[h->tri]];
-    return v;
+    v->pos = scene_hit_point(sc, h);
+    v->scale = scene_triangle_scale(sc, h->tri);
+    v->n = sc->Ng[h->tri];
+    if (v3_dot(v->n, wo) < 0.0f) v->n = v3_scale(v->n, -1.0f);   /* the BRDF is two-sided */
+    v->frame = frame_from_normal(v->n);
+    v->wo_local = frame_to_local(&v->frame, wo);
+    v->mat = &sc->m.mats[sc->m.tri_mat[h->tri]];
 }
 
 /* Le seen along dir at the hit: emission is one-sided, on the front face only. */
@@ -189,14 +189,14 @@ static vec3 direct_from_dir(const scene *sc, const integrator_opts *opt, const v
     return v3_scale(Le, w_mis);
 }
 
-/* The ray from just off p in the direction wi_local, toward the next vertex q. */
-static ray continuation_ray(const vertex *p, vec3 wi_local)
+/* *r = the ray from just off p in the direction wi_local, toward the next vertex q. Written field by
+ * field: a returned struct was stored with a 16-byte write across o and d.x, and the traversal's
+ * 8-byte read of d.x, d.y straddled two stores, which the CPU cannot forward (a stall per ray). */
+static void continuation_ray(ray *r, const vertex *p, vec3 wi_local)
 {
-    ray r;
-    r.o = offset_ray_origin(p->pos, p->n, p->scale);
-    r.d = frame_to_world(&p->frame, wi_local);
-    r.tmax = INFINITY;
-    return r;
+    r->o = offset_ray_origin(p->pos, p->n, p->scale);
+    r->d = frame_to_world(&p->frame, wi_local);
+    r->tmax = INFINITY;
 }
 
 /* "et on arrête quand ?": Russian roulette. The path goes on with probability p_survive, which
@@ -220,6 +220,10 @@ static int survives_roulette(vec3 *beta, sampler *smp, int k, float below)
     vec3 before = *beta;
     float cap = k < RR_CAP_FROM ? 1.0f : RR_SURVIVE_MAX;
     float p_survive = fminf(cap, fmaxf(0.05f, v3_max_comp(before) / below));
+    /* a sure survivor needs no number: a Sobol number costs a chain of hashes (sampler.c), and skipping
+     * it shifts no other use's dimension; the independent sampler still reads it, to keep its
+     * stream's order (and its images) */
+    if (p_survive >= 1.0f && smp->kind != SAMPLER_INDEPENDENT) return 1;
     if (sampler_1d(smp, sampler_dim(k, SAMPLER_DIM_ROULETTE)) >= p_survive) return 0;
     *beta = v3_scale(before, 1.0f / p_survive);
     /* below the cap, p_survive is >= every channel of beta / below, which thus ends <= below (at
@@ -279,13 +283,14 @@ vec3 integrate(const scene *sc, const integrator_opts *opt, const ray *camera, s
     if (opt->bmin == 0) add_Lk(&sum, 0, emitted(sc, &q, ray_pq.d));                    /* L0 */
 
     for (k = 1; k <= kmax; k++) {
-        vertex p = make_vertex(sc, &q, ray_pq.d);     /* the last q is the new p */
+        vertex p;
         vec3 wi_local, f;
         float pdf2_sa, cos_p;
         int adds_Lk = k >= opt->bmin && has_lights, samples_light = adds_Lk && uses_light_sampling(opt->direct);
         /* the last bounce needs a continuation ray only to find emitters by direction sampling */
         int continues = k < kmax || uses_dir_sampling(opt->direct);
         vertex_numbers u;
+        make_vertex(&p, sc, &q, ray_pq.d);              /* the last q is the new p */
         draw_numbers(opt, &p, smp, k, samples_light, continues, &u);
 
         /* L_k by light sampling: a point s on a light, with pdf1(s) */
@@ -299,7 +304,7 @@ vec3 integrate(const scene *sc, const integrator_opts *opt, const ray *camera, s
         cos_p = wi_local.z;
         beta = v3_mul(beta, v3_scale(f, cos_p / pdf2_sa));
         if (v3_is_zero(beta)) break;                                    /* no light can follow */
-        ray_pq = continuation_ray(&p, wi_local);
+        continuation_ray(&ray_pq, &p, wi_local);
         st->continuation_rays++;
         if (!bvh_intersect(sc->accel, &ray_pq, &q)) break;
 

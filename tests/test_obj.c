@@ -239,6 +239,21 @@ static void test_polygons(void)
     remove(path);
 }
 
+/* Convex polygons, warped or not, give gKit's fan (read_mesh: 0 1 2, 0 2 3, ...): a student's render
+ * of a warped quad and pathlab's must be of the same surface. */
+static void test_fan_order(void)
+{
+    mesh m;
+    int r = load("tests/obj/fan.obj", &m, 1);
+    check(r == 0 && m.ntris == 5, "obj_fan_load", "rc %d, %d triangles %s", r, m.ntris, shown());
+    if (r == 0 && m.ntris == 5)
+        check(tri_is(&m, 0, 0, 1, 2) && tri_is(&m, 1, 0, 2, 3) && tri_is(&m, 2, 4, 5, 6) && tri_is(&m, 3, 4, 6, 7) &&
+                  tri_is(&m, 4, 4, 7, 8),
+              "obj_fan_order", "warped quad and convex pentagon as gKit's fan; got (%d %d %d) (%d %d %d) (%d %d %d)",
+              m.tri[0], m.tri[1], m.tri[2], m.tri[3], m.tri[4], m.tri[5], m.tri[6], m.tri[7], m.tri[8]);
+    mesh_free(&m);
+}
+
 /* ---- features ---- */
 
 static void test_index_forms(void)
@@ -551,6 +566,7 @@ int main(void)
 {
     test_index_forms();
     test_polygons();
+    test_fan_order();
     test_text();
     test_long_lines();
     test_degenerate();

@@ -19,9 +19,7 @@ vec3 brdf_eval(const material *m, vec3 wo, vec3 wi)
 
 float brdf_glossy_prob(const material *m)
 {
-    float d, s;
-    if (v3_is_zero(m->Ks)) return 0.0f;   /* diffuse only: no division (called 4 times a vertex) */
-    d = v3_mean(m->Kd), s = v3_mean(m->Ks);
+    float d = v3_mean(m->Kd), s = v3_mean(m->Ks);
     return d + s > 0.0f ? s / (d + s) : 0.0f;
 }
 

@@ -6,8 +6,8 @@
 #include <math.h>
 #include <stdlib.h>
 #include "check.h"
-#include "cmd/grade.h"
-#include "cmd/grade_print.h"
+#include "grade/grade.h"
+#include "grade/grade_print.h"
 #include <string.h>
 #include "stats/significance.h"
 #include "math/rng.h"

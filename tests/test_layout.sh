@@ -9,7 +9,7 @@
 #  - no atoi/atof (they cannot report a bad number) and no exit() outside cmd/main.c;
 #  - the default build is portable (no -march=native), and the docs name every folder.
 . "$(dirname "$0")/lib.sh"
-LAYERS="sys math geometry scene tracer image stats check util cmd"
+LAYERS="sys math geometry scene image sampler tracer render stats util files grade compare check cmd"
 # allowed LAYER: the layers its files may include (besides its own)
 allowed() {
     case $1 in
@@ -18,10 +18,15 @@ allowed() {
         geometry) echo "sys math" ;;
         scene) echo "sys math geometry" ;;
         image) echo "sys math" ;;
-        tracer) echo "sys math geometry scene image" ;;
+        sampler) echo "sys math" ;;
+        tracer) echo "sys math geometry scene image sampler" ;;
+        render) echo "sys math geometry scene image sampler tracer" ;;
         stats) echo "sys math image" ;;
         util) echo "sys math" ;;
-        check) echo "sys math geometry scene tracer stats" ;;
+        files) echo "sys math geometry scene image sampler tracer render util" ;;
+        grade) echo "sys math image stats util files" ;;
+        compare) echo "sys math geometry scene image sampler tracer render stats util files grade" ;;
+        check) echo "sys math geometry scene sampler tracer stats" ;;
         cmd) echo "$LAYERS" ;;
     esac
 }
@@ -100,7 +105,7 @@ if [ -z "${LAYOUT_SRC:-}" ]; then
         rm -rf "$TMP/src" && cp -r "$SRC" "$TMP/src"
         case $plant in
             arrow) sed -i '0,/#include "/s//#include "cmd\/diff.h"\n#include "/' "$TMP/src/tracer/integrator.c" ;;
-            circle) sed -i '0,/#include "/s//#include "tracer\/render.h"\n#include "/' "$TMP/src/tracer/scene.c" ;;
+            circle) sed -i '0,/#include "/s//#include "tracer\/integrator.h"\n#include "/' "$TMP/src/tracer/scene.c" ;;
             long) { echo "int planted_long(void)"; echo "{"; for i in $(seq 60); do echo "    (void)$i;"; done; echo "    return 0;"; echo "}"; } >> "$TMP/src/math/dvec.c" ;;
             exit) echo "void planted_exit(void) { exit(1); }" >> "$TMP/src/tracer/scene.c" ;;
             dialect) echo "void planted_for(void) { for (int i = 0; i < 2; i++) ; }" >> "$TMP/src/math/dvec.c" ;;

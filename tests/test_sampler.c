@@ -9,7 +9,7 @@
  *      give different points;
  *   4. averages over pixels of a few coordinates are 1/2 within 5 standard errors (a gross bias). */
 #include "check.h"
-#include "tracer/sampler.h"
+#include "sampler/sampler.h"
 #include <math.h>
 #include <string.h>
 

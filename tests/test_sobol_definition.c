@@ -8,7 +8,7 @@
  * change to its shortcuts that changes a number, and thus every Sobol image, fails here. Exact
  * comparisons, no statistics: sobol and sobol1, 2000 (seed, pixel, index, dimension) each, 4 calls. */
 #include "check.h"
-#include "tracer/sampler.h"
+#include "sampler/sampler.h"
 
 /* Van der Corput: index bit k is the fraction's 2^-(k+1) place. */
 static uint32_t dim0_by_definition(uint32_t index)

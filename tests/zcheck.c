@@ -14,7 +14,7 @@
 #include <string.h>
 #include <math.h>
 #include "stats/imgstat.h"
-#include "cmd/sidecar.h"
+#include "files/sidecar.h"
 
 /* The variance-dof of the sidecar of path (0: many, or no sidecar); -1 if the sidecar is malformed. */
 static double sidecar_dof(const char *path)

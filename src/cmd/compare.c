@@ -27,14 +27,14 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include "cmd/compare_page.h"
-#include "cmd/compare_report.h"
+#include "compare/compare_page.h"
+#include "compare/compare_report.h"
 #include "cmd/diff.h"
 #include "cmd/estimators.h"
 #include "cmd/help.h"
 #include "cmd/render_args.h"
 #include "image/mosaic.h"
-#include "tracer/render.h"
+#include "render/render.h"
 #include "util/cli.h"
 #include "sys/output_path.h"
 

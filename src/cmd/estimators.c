@@ -5,7 +5,7 @@
 #include <string.h>
 #include "tracer/integrator.h"
 #include "tracer/light.h"
-#include "tracer/sampler.h"
+#include "sampler/sampler.h"
 
 #define MAX_FLAGS 64   /* of one estimator, its names expanded */
 

@@ -1,706 +1,459 @@
-/* grade.c — is the difference between a student's image and a reference noise or bias?
- *
- * Both images are Monte Carlo estimates: per pixel-channel, d = image - ref has expectation 0 when
- * the student's estimator is unbiased (same expectation as the reference's), whatever its variance.
- * The student's image comes without a variance, and the student's estimator may be noisier or less
- * noisy than the reference's, so the noise must be measured on d itself. Pixels are independent
- * (each has its own random stream, in both renders), so it can be: over a group of m pixels, the
- * scatter of d estimates the noise of the group's mean d. Subtracting the reference removes the
- * picture (edges, shading), so what scatters is the noise of both renders. Averaging m pixels
- * divides the noise by sqrt(m) but leaves a bias as it is: that is what tells them apart.
- *
- * Exact pixels. Where the reference has no noise at all (the interior of the background, of an
- * emitter without reflectance: the pixel and its 8 neighbours equal bit for bit and, with
- * REF_var.pfm, of variance 0), every unbiased renderer gives the same value: those pixels are
- * compared as numbers, |d| <= 1e-4 |ref| + 1e-6 x the reference's mean, and left out of the groups
- * below. (A noisy pixel is never equal to its 8 neighbours, but a pixel where the reference drew
- * only zeros can be: a reference needs enough samples that its dark pixels are lit.)
- *
- * The noisy pixels form two families of groups, each tested per channel (R, G, B) with Student's
- * t = mean d / sqrt(s'^2 / m), m - 1 degrees of freedom:
- *   blocks: B x B pixels (B = max(8, min(w, h) / 16) unless --block; the last row and column of
- *     blocks take the leftover pixels). Finds a bias confined to a region and says where. s'^2 is
- *     the larger of the block's own s^2 and s^2 pooled over the 3 x 3 blocks around it (sum (m-1) s^2
- *     / sum (m-1)); see "heavy tails".
- *   levels: the pixels whose reference luminance (the mean of their 8 neighbours', see
- *     neighbours_luminance) lies in one octave [2^k, 2^(k+1)), wherever they are. A bias that follows the picture (the lamp seen directly missing, highlights clamped)
- *     is the same for every pixel of a level, so the level's scatter stays the noise's; in a block
- *     that mixes the lamp and the ceiling it would be counted as noise, and a lamp of 20 pixels in
- *     a 64x64 image would go unseen. Only the pixels brighter than the image's mean are put in
- *     levels: bias in a few pixels is bias in bright ones (emitters, highlights, values clamped),
- *     and dark pixels are where rare-event noise (light found by chance) hides unseen in a whole
- *     level: on mis-plates at 1-16 spp with --light area against a --light solid-angle reference,
- *     4 of 16 honest images failed on a dark level. Blocks and the whole image judge dark pixels.
- *   whole image: d = eps * ref fitted to the block means by weighted least squares,
- *     eps = sum w mean_d / sum w mean_ref,  w = mean_ref / (noise of the block mean),
- *     var(eps) = sum w^2 noise / (sum w mean_ref)^2,  z = eps / sd(eps), normal (many blocks).
- *     eps is the image's relative bias ("2% too bright"), each block weighted by how precisely it
- *     measures it; a plain mean of d would weigh noisy pixels as much as clean ones, and finds a 2%
- *     bias at 64 spp on 64 x 64 pixels with z ~ 3 instead of ~ 9. The weight's noise comes from
- *     the neighbours only (s^2 pooled over the 3 x 3 blocks without the block itself), so that
- *     weight and mean d of a block are independent and E[z] = 0 without bias.
- * The blocks are tested at several scales: B, 2B, 4B... as long as the image holds 2 x 2 of them (a
- * bias over a quarter of the image is too thin for 8x8 blocks, too local for the whole image).
- *   whole image, unweighted: the plain mean of d over the noisy pixels, Student's t on their own
- *     scatter (test_plain): what a black image at low spp cannot hide from.
- * alpha (default 0.01) is split in three: alpha/3 for the 6 whole-image tests, alpha/3 for the
- * blocks (shared equally by the scales, 3 x nblocks tests each), alpha/3 for the 3 x nlevels
- * level tests, each family with Sidak's correction (per-test level 1 - (1 - alpha/3)^(1/k)): an unbiased image fails with probability at
- * most alpha (the exact pixels, compared as numbers, never fail it). Float rounding (a few ulps of
- * the values) is added to every standard error.
- *
- * Heavy tails. At 4 spp a few pixels hold rare large samples (paths that found the light after a
- * long walk): d is skewed. A block that drew none of them has a mean d below 0 and, with its own
- * s alone, looks precise: on 64 x 64 Cornell boxes at 4 spp, 3 of 20 unbiased renders failed that
- * way (a block "darker" with |t| up to 5.8). With s' >= s pooled over the neighbourhood, which
- * did draw large samples, the largest block |t| of 20 renders was 2.97 (limit 4.54). A block
- * that drew one keeps its own, larger, s: t stays small (self-normalised). Levels hold hundreds
- * of pixels, which draw their share. Measured false alarms and power: docs/grading.md.
- *
- * With --var REF_VAR.pfm (the reference's variance of the pixel mean, `render --variance`),
- * --spp N and --ref-spp M, a per-pixel Z-test is also run, z = d / sqrt(var_ref (1 + M/N)),
- * which assumes the student used the reference's estimator (variance of the mean var_ref M/N).
- * That is not the student's assumption to make, and one pixel at 4 spp is far from normal, so
- * this test is printed for information and is not part of the verdict. */
-#include "cmd/grade.h"
+/* grade.c — the `pathlab grade` command: one image or a whole class against one reference.
+ * Reads the reference and what lies beside it (REF_var.pfm, the layers REF_split_L0.pfm ..., or what
+ * its sidecar REF.pfm.meta names: render --variance and --split outputs), grades
+ * each image (grade.c), names the likely mistake of those that fail (grade_diagnose.c), prints
+ * the verdicts (grade_print.c) and writes the class report (grade_class.c). */
+#include <ctype.h>
+#include <dirent.h>
+#include <errno.h>
+#include <unistd.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "math/vec.h"
-#include "stats/imgstat.h"
-#include "stats/significance.h"
-#include "stats/tdist.h"
+#include <sys/stat.h>
+#include "util/cli.h"
+#include "cmd/grade.h"
+#include "grade/grade.h"
+#include "grade/grade_class.h"
+#include "grade/grade_diagnose.h"
+#include "grade/grade_page.h"
+#include "grade/grade_print.h"
+#include "files/render_files.h"
+#include "sys/output_path.h"
 
-/* Rounding allowed per value, relative (see imgstat.c): added linearly over a mean. */
-#define GRADE_ROUNDING 4e-7
-#define GRADE_MIN_BLOCK 8
-#define GRADE_POOL 1           /* the noise of a block is pooled over (2 GRADE_POOL + 1)^2 blocks */
-#define GRADE_LEVELS 48        /* level 0: luminance <= 0; level k: [2^(k-25), 2^(k-24)), ends open */
-#define GRADE_EXACT_REL 1e-4   /* an exact pixel may differ by this much, relative... */
-#define GRADE_EXACT_ABS 1e-6   /* ... plus this much of the reference's mean */
+#define GRADE_USAGE \
+    "usage: pathlab grade IMAGE.pfm... | FOLDER --ref REF.pfm [--alpha A] [--report FILE.md|.csv|.html] [--pages DIR]\n" \
+    "                     [--heatmap OUT.png|FOLDER] [--block B] [--var REF_VAR.pfm] [--layers PREFIX] [--details]\n" \
+    "                     [--spp N --ref-spp M]\n"
+#define GRADE_MAX_HYP 6
 
-static int imin(int a, int b) { return a < b ? a : b; }
-static int imax(int a, int b) { return a > b ? a : b; }
+typedef struct {
+    const char *ref, *var, *layers, *heatmap, *report, *pages;
+    int details;
+    char pages_dir[4096];  /* where the pages go: --pages, else REPORT-pages beside the report; "" none */
+    char back[4300];       /* the pages' link to the report, or "" */
+    int same_name;         /* 1: another image of the run has this one's file name (its page is named by its path) */
+    grade_opts o;
+    const char **images;   /* the images, folders expanded */
+    int nimages;
+    char **owned;          /* the paths made for a folder's images, freed at the end */
+    int nowned;
+} grade_args;
 
-static int cmp_double(const void *a, const void *b)
+typedef struct {
+    image ref, var, layer[GRADE_MAX_LAYERS];
+    grade_refs refs;
+    const char *var_path;
+    char layer_prefix[4096];
+    sidecar meta;          /* REF.pfm.meta, when pathlab render wrote the reference */
+    int has_meta;
+} reference;
+
+/* --alpha A: a float strictly between 0 and 0.5 */
+static int parse_alpha(void *ctx, const char *flag, const char *v)
 {
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
+    float *alpha = ctx;
+    const cli_flag f = {flag, CLI_FLOAT, alpha, 0, 0, NULL, NULL, NULL};
+    if (cli_parse_value("grade", &f, v, NULL)) return 1;
+    if (*alpha > 0.0f && *alpha < 0.5f) return 0;
+    return cli_fail("grade", flag, "a level in (0, 0.5)", v);
 }
 
-/* The median of q[0..n), n >= 1 (q is reordered). */
-static double median(double *q, size_t n)
+static int is_dir(const char *path)
 {
-    qsort(q, n, sizeof *q, cmp_double);
-    return n % 2 ? q[n / 2] : 0.5 * (q[n / 2 - 1] + q[n / 2]);
+    struct stat st;
+    return stat(path, &st) == 0 && S_ISDIR(st.st_mode);
 }
 
-/* mean / standard error, with rounding added to the error; 0/0 is 0 (identical values) */
-static double t_stat(double mean, double se2)
+static void free_args(grade_args *a)
 {
-    if (se2 > 0.0) return mean / sqrt(se2);
-    return mean == 0.0 ? 0.0 : copysign(HUGE_VAL, mean);
+    int k;
+    for (k = 0; k < a->nowned; k++) free(a->owned[k]);
+    free(a->owned);
+    free((void *)a->images);
 }
 
-static double ref_luminance(const image *ref, size_t p)
+/* 1 if path is a file we can open */
+static int access_ok(const char *path)
 {
-    return luminance(v3(ref->px[3 * p], ref->px[3 * p + 1], ref->px[3 * p + 2]));
+    FILE *f = fopen(path, "rb");
+    if (f) fclose(f);
+    return f != NULL && !is_dir(path);
 }
 
-static int zero_variance(const image *var, size_t p)
+
+/* 1 if name ends with suffix */
+static int ends_with(const char *name, const char *suffix)
 {
-    return var->px[3 * p] == 0.0f && var->px[3 * p + 1] == 0.0f && var->px[3 * p + 2] == 0.0f;
+    size_t n = strlen(name), k = strlen(suffix);
+    return n >= k && !strcmp(name + n - k, suffix);
 }
 
-/* Exact pixels: inside a flat region of the reference, the pixel and its 8 neighbours equal bit for
- * bit and (with the variance) each of variance 0. A variance of 0 alone is not enough: where light
- * is rare, a reference can draw only zeros in a pixel (at 16 spp, thousands of them) and an honest
- * image that found the light there would fail. In the interior of the background or of an emitter
- * without reflectance, every unbiased renderer gives the same value. */
-static int mark_exact(grade_report *r, const image *ref, const image *var)
+static int by_name(const void *a, const void *b) { return strcmp(*(const char *const *)a, *(const char *const *)b); }
+
+/* 1 if the two paths name the same file or folder */
+static int same_file(const char *a, const char *b)
 {
-    int x, y, u, v;
-    r->exact = calloc((size_t)r->w * r->h, 1);
-    if (!r->exact) return 1;
-    r->exact_from_var = var != NULL;
-    for (y = 0; y < r->h; y++)
-        for (x = 0; x < r->w; x++) {
-            size_t p = (size_t)y * r->w + x;
-            int flat = !var || zero_variance(var, p);
-            for (v = y - 1; v <= y + 1 && flat; v++)
-                for (u = x - 1; u <= x + 1 && flat; u++) {
-                    size_t q = (size_t)v * r->w + u;
-                    if (u < 0 || v < 0 || u >= r->w || v >= r->h) continue;
-                    flat = !memcmp(&ref->px[3 * p], &ref->px[3 * q], 3 * sizeof(float)) && (!var || zero_variance(var, q));
-                }
-            r->exact[p] = (unsigned char)flat;
-        }
+    struct stat sa, sb;
+    return stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+/* 1 if dir/name is the reference or a file made beside it (REF-64x64.pfm, REF_split.pfm, ...). */
+static int is_reference(const char *dir, const char *name, const char *ref)
+{
+    const char *slash = strrchr(ref, '/'), *base = slash ? slash + 1 : ref;
+    char path[4200], ref_dir[4200];
+    size_t stem = ends_with(base, ".pfm") ? strlen(base) - 4 : strlen(base);
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    snprintf(ref_dir, sizeof ref_dir, "%.*s", slash ? (int)(slash - ref) : 1, slash ? ref : ".");
+    if (same_file(path, ref)) return 1;
+    return same_file(dir, ref_dir) && !strncmp(name, base, stem) && (name[stem] == '_' || name[stem] == '-');
+}
+
+/* Appends the .pfm files of a folder (not variances, not layers, not the reference), sorted by
+ * name; 0 or 1 (error said). */
+static int add_folder(grade_args *a, const char *dir, int cap)
+{
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    int first = a->nimages;
+    if (!d) { fprintf(stderr, "pathlab grade: cannot open the folder %s\n", dir); return 1; }
+    while ((e = readdir(d)) != NULL) {
+        char *path;
+        if (!ends_with(e->d_name, ".pfm") || ends_with(e->d_name, "_var.pfm") || strstr(e->d_name, "_split_L") ||
+            is_reference(dir, e->d_name, a->ref)) continue;
+        if (a->nimages >= cap) { fprintf(stderr, "pathlab grade: more than %d images\n", cap); closedir(d); return 1; }
+        path = malloc(strlen(dir) + strlen(e->d_name) + 2);
+        if (!path) { closedir(d); return 1; }
+        sprintf(path, "%s/%s", dir, e->d_name);
+        a->images[a->nimages++] = a->owned[a->nowned++] = path;
+    }
+    closedir(d);
+    qsort(a->images + first, (size_t)(a->nimages - first), sizeof *a->images, by_name);
+    if (a->nimages == first) fprintf(stderr, "pathlab grade: warning: no .pfm image to grade in the folder %s\n", dir);
     return 0;
 }
 
-/* Compares the exact pixels as numbers; keeps the worst miss (largest |d| relative to the limit). */
-static void test_exact(grade_report *r, const image *img, const image *ref)
+static int check_outputs(const grade_args *a)
 {
-    size_t p, n = (size_t)r->w * r->h;
-    double mean = 0.0, worst = 1.0;
-    int ch;
-    for (p = 0; p < 3 * n; p++) mean += fabs(ref->px[p]) / (3.0 * n);
-    for (p = 0; p < n; p++) {
-        double excess = 0.0, e;
-        int side = 0, x = (int)(p % (size_t)r->w), y = (int)(p / (size_t)r->w), *box;
-        if (!r->exact[p]) continue;
-        r->nexact++;
-        for (ch = 0; ch < 3; ch++) {
-            double a = img->px[3 * p + ch], b = ref->px[3 * p + ch];
-            e = fabs(a - b) / (GRADE_EXACT_REL * fabs(b) + GRADE_EXACT_ABS * mean + 1e-30);
-            if (e > excess) { excess = e; side = a > b; }
-        }
-        if (excess <= 1.0) continue;
-        r->exact_fail++;
-        box = r->exact_box[side];   /* where the brighter (1) and darker (0) misses are */
-        if (r->exact_side[side]++ == 0) { box[0] = box[2] = x; box[1] = box[3] = y; }
-        box[0] = imin(box[0], x); box[1] = imin(box[1], y); box[2] = imax(box[2], x + 1); box[3] = imax(box[3], y + 1);
-        if (excess <= worst) continue;
-        worst = excess;
-        r->exact_x = (int)(p % (size_t)r->w);
-        r->exact_y = (int)(p / (size_t)r->w);
-        for (ch = 0; ch < 3; ch++) { r->exact_img[ch] = img->px[3 * p + ch]; r->exact_ref[ch] = ref->px[3 * p + ch]; }
-    }
-}
-
-/* The noise floor's scale: the student's noise is taken to be at least k[ch] times the reference's
- * variance at each pixel, k = median of d^2 / var_ref over the noisy pixels / 0.455 (the median of
- * chi-square with 1 degree of freedom). The shape of the reference's variance says where noise is
- * rare-event noise (the edge of the lamp in a pixel, light found by chance): a group there whose
- * pixels all missed the rare event has a small scatter that would otherwise pass for precision.
- * The median makes k small rather than large with heavy tails: the floor is a safeguard, not the
- * estimate. */
-static int floor_scale(grade_report *r, const image *img, const image *ref, const image *var)
-{
-    size_t p, n = (size_t)r->w * r->h, m;
-    int ch;
-    double *q = malloc(n * sizeof *q);
-    if (!q) return 1;
-    for (ch = 0; ch < 3; ch++) {
-        for (p = 0, m = 0; p < n; p++) {
-            double d = (double)img->px[3 * p + ch] - ref->px[3 * p + ch], v = var->px[3 * p + ch];
-            if (!r->exact[p] && v > 0.0) q[m++] = d * d / v;
-        }
-        r->floor_k[ch] = m > 0 ? median(q, m) / 0.455 : 0.0;
-    }
-    free(q);
-    return 0;
-}
-
-/* Mean d, mean ref, the sample variance of d (two passes, for accuracy), the rounding bound of the
- * mean and the noise floor (see floor_scale), for the groups g[0..ng) of the noisy pixels; id[p] is
- * pixel p's group (-1: none). zero[k] counts the pixels where the image is 0 and the reference not. */
-static void group_stats(const grade_report *r, grade_block *g, int ng, const int *id, const image *img, const image *ref,
-                        const image *var)
-{
-    size_t p, n = (size_t)img->w * img->h;
-    int k, ch;
-    for (p = 0; p < n; p++) {
-        if (id[p] < 0) continue;
-        g[id[p]].n++;
-        g[id[p]].nzero += img->px[3 * p] == 0.0f && img->px[3 * p + 1] == 0.0f && img->px[3 * p + 2] == 0.0f &&
-                          ref_luminance(ref, p) > 0.0;
-        for (ch = 0; ch < 3; ch++) {
-            double a = img->px[3 * p + ch], b = ref->px[3 * p + ch];
-            g[id[p]].diff[ch] += a - b;
-            g[id[p]].ref[ch] += b;
-            g[id[p]].round[ch] += GRADE_ROUNDING * (fabs(a) + fabs(b));
-            if (var) g[id[p]].floor[ch] += r->floor_k[ch] * var->px[3 * p + ch];
-        }
-    }
-    for (k = 0; k < ng; k++)
-        for (ch = 0; ch < 3 && g[k].n > 0; ch++) {
-            g[k].diff[ch] /= g[k].n;
-            g[k].ref[ch] /= g[k].n;
-            g[k].round[ch] /= g[k].n;
-            g[k].floor[ch] /= (double)g[k].n * g[k].n;
-        }
-    for (p = 0; p < n; p++)
-        for (ch = 0; ch < 3 && id[p] >= 0; ch++) {
-            double e = img->px[3 * p + ch] - ref->px[3 * p + ch] - g[id[p]].diff[ch];
-            g[id[p]].var[ch] += e * e;
-            g[id[p]].skew[ch] += e * e * e;
-        }
-    for (k = 0; k < ng; k++) {
-        for (ch = 0; ch < 3; ch++) {
-            double m2 = g[k].n > 0 ? g[k].var[ch] / g[k].n : 0.0;
-            g[k].skew[ch] = m2 > 0.0 ? g[k].skew[ch] / g[k].n / (m2 * sqrt(m2)) : 0.0;
-            g[k].var[ch] = g[k].n > 1 ? g[k].var[ch] / (g[k].n - 1.0) : 0.0;
-        }
-        g[k].df = g[k].n > 0 ? (int)g[k].n - 1 : 0;
-    }
-}
-
-/* Critical |t| at a level for df degrees of freedom, remembered for the last few df (a family
- * has one level and few distinct df: full blocks, edge blocks). */
-typedef struct { int df[8]; double level, t[8]; int next; } tcrit_memo;
-
-static double tcrit_at(tcrit_memo *m, double level, int df)
-{
-    int k;
-    if (m->level != level) { memset(m, 0, sizeof *m); m->level = level; }
-    for (k = 0; k < 8; k++) if (m->df[k] == df) return m->t[k];
-    k = m->next;
-    m->next = (k + 1) % 8;
-    m->df[k] = df;
-    m->t[k] = t_critical(level, df);
-    return m->t[k];
-}
-
-/* The critical |t| on the side where the noise's skewness makes t's tail longer. Rare large samples
- * (a path that finds a small light, a highlight) make d skewed to the right; a group that drew few
- * of them has a mean and a scatter both too small, so t's left tail is longer than Student's. The
- * one-term Edgeworth expansion of the studentised mean (Hall 1987), P(T <= x) ~ Phi(x) +
- * gamma / (6 sqrt(n)) (2x^2 + 1) phi(x), moves the lower quantile out by gamma (2x^2 + 1) /
- * (6 sqrt(n)): gamma is the sample's skewness on that side (gamma > 0 widens the darker side),
- * none on the other side (its tail is shorter: the limit stays, conservative). Measured on
- * mis-plates at 1-64 spp (glossy plates, small lights): without it, 5 to 8 of 16 honest images
- * failed on a darker level. */
-static double skewed_limit(double crit, double gamma, long n)
-{
-    return gamma > 0.0 && n > 0 ? crit + gamma * (2.0 * crit * crit + 1.0) / (6.0 * sqrt((double)n)) : crit;
-}
-
-/* The t of each channel of a group, its sign if one is beyond level (the largest |t| wins), and
- * the largest |t| / critical |t| of the family so far in *excess. */
-static void judge_group(grade_block *g, double level, tcrit_memo *memo, double *tmax, double *excess)
-{
-    double tbest = 0.0, crit;
-    int ch;
-    g->sign = 0;
-    g->rare = 2 * g->nzero > g->n;   /* mostly black where the reference is not: rare-event noise */
-    if (g->df < 1 || g->rare) { g->t[0] = g->t[1] = g->t[2] = 0.0; return; }
-    for (ch = 0; ch < 3; ch++) {
-        g->t[ch] = t_stat(g->diff[ch], g->noise[ch]);
-        crit = skewed_limit(tcrit_at(memo, level, g->df), g->t[ch] < 0.0 ? g->skew[ch] : -g->skew[ch], g->n);
-        if (fabs(g->t[ch]) > *tmax) *tmax = fabs(g->t[ch]);
-        if (fabs(g->t[ch]) / crit > *excess) *excess = fabs(g->t[ch]) / crit;
-        if (fabs(g->t[ch]) > crit && fabs(g->t[ch]) > tbest) {
-            tbest = fabs(g->t[ch]);
-            g->sign = g->t[ch] > 0 ? 1 : -1;
-            g->channel = ch;
-        }
-    }
-}
-
-/* The within-block variance of d pooled over the blocks around (bx, by) of a grid of nbx x nby
- * blocks: sum of (m - 1) s^2 over sum of (m - 1), with or without the block itself. */
-static double pooled_in(const grade_block *g, int nbx, int nby, int bx, int by, int ch, int self)
-{
-    double ss = 0.0, df = 0.0;
-    int x, y;
-    for (y = by - GRADE_POOL; y <= by + GRADE_POOL; y++)
-        for (x = bx - GRADE_POOL; x <= bx + GRADE_POOL; x++)
-            if (x >= 0 && y >= 0 && x < nbx && y < nby && (self || x != bx || y != by)) {
-                const grade_block *b = &g[y * nbx + x];
-                ss += b->df * b->var[ch];
-                df += b->df;
-            }
-    return df > 0.0 ? ss / df : 0.0;
-}
-
-static double pooled_var(const grade_report *r, int bx, int by, int ch, int self)
-{
-    return pooled_in(r->blocks, r->nbx, r->nby, bx, by, ch, self);
-}
-
-/* The variance of a block's mean d: the larger of its own and its neighbourhood's pixel variance,
- * over m, plus rounding. */
-static double block_noise(const grade_report *r, int bx, int by, int ch)
-{
-    const grade_block *b = &r->blocks[by * r->nbx + bx];
-    double var = fmax(b->var[ch], pooled_var(r, bx, by, ch, 1));
-    return b->n > 0 ? fmax(var / b->n, b->floor[ch]) + b->round[ch] * b->round[ch] : 0.0;
-}
-
-static void test_blocks(grade_report *r, const image *img, const image *ref, const image *var, int *id)
-{
-    int bx, by, ch, x, y, full = 0;
-    tcrit_memo memo = {{0}, 0.0, {0}, 0};
-    for (by = 0; by < r->nby; by++)
-        for (bx = 0; bx < r->nbx; bx++) {
-            grade_block *b = &r->blocks[by * r->nbx + bx];
-            b->x0 = bx * r->block;
-            b->y0 = by * r->block;
-            b->x1 = bx == r->nbx - 1 ? r->w : b->x0 + r->block;
-            b->y1 = by == r->nby - 1 ? r->h : b->y0 + r->block;
-            for (y = b->y0; y < b->y1; y++)
-                for (x = b->x0; x < b->x1; x++) {
-                    size_t p = (size_t)y * r->w + x;
-                    id[p] = r->exact[p] ? -1 : by * r->nbx + bx;
-                }
-        }
-    group_stats(r, r->blocks, r->nblocks, id, img, ref, var);
-    r->block_level = sidak_level(r->alpha / 3.0 / (1 + r->ncoarse), 3L * r->nblocks);
-    for (by = 0; by < r->nby; by++)
-        for (bx = 0; bx < r->nbx; bx++) {
-            grade_block *b = &r->blocks[by * r->nbx + bx];
-            for (ch = 0; ch < 3; ch++) b->noise[ch] = block_noise(r, bx, by, ch);
-            judge_group(b, r->block_level, &memo, &r->block_tmax, &r->block_excess);
-            r->nbrighter += b->sign > 0;
-            r->ndarker += b->sign < 0;
-            if (b->df > full) full = b->df;
-        }
-    r->block_tcrit = full >= 1 ? t_critical(r->block_level, full) : 0.0;
-}
-
-/* The mean luminance of the reference over the 8 pixels around p, p left out. A pixel is put in a
- * level by its neighbours, not by itself: grouped by its own reference value, a pixel whose
- * reference drew high lands in the level above, where d = image - ref is then low on average (a
- * regression to the mean that, over thousands of pixels, fails honest images: measured on the
- * furnace, +0.4% and -0.3% on either side of an octave). The neighbours' noise is independent of
- * the pixel's. */
-static double neighbours_luminance(const grade_report *r, const image *ref, size_t p)
-{
-    int x = (int)(p % (size_t)r->w), y = (int)(p / (size_t)r->w), u, v, n = 0;
-    double sum = 0.0;
-    for (v = y - 1; v <= y + 1; v++)
-        for (u = x - 1; u <= x + 1; u++)
-            if (u >= 0 && v >= 0 && u < r->w && v < r->h && (u != x || v != y)) {
-                sum += ref_luminance(ref, (size_t)v * r->w + u);
-                n++;
-            }
-    return n ? sum / n : ref_luminance(ref, p);
-}
-
-/* The blocks of the coarser scales, each scale its own family of alpha/3 / (1 + ncoarse): a bias
- * over a quarter of the image is too thin in any 8x8 block and too local for the whole-image fit.
- * Their noise is as the finest blocks': the larger of their own scatter and their neighbours'. */
-static void test_coarse(grade_report *r, const image *img, const image *ref, const image *var, int *id)
-{
-    size_t p, n = (size_t)r->w * r->h;
-    int k, b, ch;
-    tcrit_memo memo = {{0}, 0.0, {0}, 0};
-    for (k = 0; k < r->ncoarse; k++) {
-        grade_scale *s = &r->coarse[k];
-        for (b = 0; b < s->nblocks; b++) {
-            grade_block *g = &s->blocks[b];
-            g->x0 = b % s->nbx * s->side;
-            g->y0 = b / s->nbx * s->side;
-            g->x1 = b % s->nbx == s->nbx - 1 ? r->w : g->x0 + s->side;
-            g->y1 = b / s->nbx == s->nby - 1 ? r->h : g->y0 + s->side;
-        }
-        for (p = 0; p < n; p++) {
-            int bx = imin((int)(p % (size_t)r->w) / s->side, s->nbx - 1), by = imin((int)(p / (size_t)r->w) / s->side, s->nby - 1);
-            id[p] = r->exact[p] ? -1 : by * s->nbx + bx;
-        }
-        group_stats(r, s->blocks, s->nblocks, id, img, ref, var);
-        s->level = sidak_level(r->alpha / 3.0 / (1 + r->ncoarse), 3L * s->nblocks);
-        for (b = 0; b < s->nblocks; b++) {
-            grade_block *g = &s->blocks[b];
-            for (ch = 0; ch < 3; ch++) {
-                double v = fmax(g->var[ch], pooled_in(s->blocks, s->nbx, s->nby, b % s->nbx, b / s->nbx, ch, 1));
-                g->noise[ch] = g->n > 0 ? fmax(v / g->n, g->floor[ch]) + g->round[ch] * g->round[ch] : 0.0;
-            }
-            judge_group(g, s->level, &memo, &(double){0.0}, &s->excess);
-            s->brighter += g->sign > 0;
-            s->darker += g->sign < 0;
-        }
-    }
-}
-
-/* The level of a reference luminance: one octave each (see GRADE_LEVELS). */
-static int level_of(double lum)
-{
-    int k;
-    if (!(lum > 0.0)) return 0;
-    k = (int)floor(log2(fmin(fmax(lum, 1e-12), 1e12))) + 25;
-    return k < 1 ? 1 : k >= GRADE_LEVELS ? GRADE_LEVELS - 1 : k;
-}
-
-static void test_levels(grade_report *r, const image *img, const image *ref, const image *var, int *id)
-{
-    size_t p, n = (size_t)r->w * r->h, noisy = 0;
-    int k, ch;
-    tcrit_memo memo = {{0}, 0.0, {0}, 0};
-    for (p = 0; p < n; p++)
-        if (!r->exact[p]) { r->level_min_lum += ref_luminance(ref, p); noisy++; }
-    r->level_min_lum = noisy ? r->level_min_lum / noisy : 0.0;
-    for (k = 0; k < GRADE_LEVELS; k++) {
-        grade_block *g = &r->levels[k];
-        g->lum_lo = k == 0 ? 0.0 : ldexp(1.0, k - 25);
-        g->lum_hi = k == 0 ? 0.0 : ldexp(1.0, k - 24);
-        g->x0 = r->w; g->y0 = r->h;
-    }
-    for (p = 0; p < n; p++) {
-        grade_block *g;
-        double lum = neighbours_luminance(r, ref, p);
-        id[p] = r->exact[p] || lum < r->level_min_lum ? -1 : level_of(lum);
-        if (id[p] < 0) continue;
-        g = &r->levels[id[p]];
-        g->x0 = imin(g->x0, (int)(p % (size_t)r->w));
-        g->y0 = imin(g->y0, (int)(p / (size_t)r->w));
-        g->x1 = imax(g->x1, (int)(p % (size_t)r->w) + 1);
-        g->y1 = imax(g->y1, (int)(p / (size_t)r->w) + 1);
-    }
-    group_stats(r, r->levels, GRADE_LEVELS, id, img, ref, var);
-    for (k = 0; k < GRADE_LEVELS; k++) r->nlevels_tested += r->levels[k].df >= 1;
-    r->nlevels = GRADE_LEVELS;
-    r->level_level = sidak_level(r->alpha / 3.0, 3L * (r->nlevels_tested > 0 ? r->nlevels_tested : 1));
-    for (k = 0; k < GRADE_LEVELS; k++) {
-        grade_block *g = &r->levels[k];
-        for (ch = 0; ch < 3; ch++)
-            g->noise[ch] = g->n > 0 ? fmax(g->var[ch] / g->n, g->floor[ch]) + g->round[ch] * g->round[ch] : 0.0;
-        judge_group(g, r->level_level, &memo, &r->level_tmax, &r->level_excess);
-        r->level_brighter += g->sign > 0;
-        r->level_darker += g->sign < 0;
-    }
-}
-
-/* 1 if most pixels of the blocks around (bx, by), the block itself left out, are black in the image
- * where the reference is not: their scatter says nothing of the noise (rare-event noise unseen). */
-static int dark_neighbours(const grade_report *r, int bx, int by)
-{
-    long zero = 0, n = 0;
-    int x, y;
-    for (y = by - GRADE_POOL; y <= by + GRADE_POOL; y++)
-        for (x = bx - GRADE_POOL; x <= bx + GRADE_POOL; x++)
-            if (x >= 0 && y >= 0 && x < r->nbx && y < r->nby && (x != bx || y != by)) {
-                zero += r->blocks[y * r->nbx + x].nzero;
-                n += r->blocks[y * r->nbx + x].n;
-            }
-    return 2 * zero > n;
-}
-
-/* The weight of a block in the relative-bias fit, ref / (noise of its mean), the noise taken from
- * its neighbours only so that the weight does not depend on the block's own d. 0 for a block whose
- * neighbours are exact (noise within rounding) or mostly black in the image (at 1 spp with light
- * found by BSDF sampling only, such blocks took nearly all the weight and an honest image fitted
- * -82% +- 14%), or that has no noisy pixel. Both are told by the neighbours, not by the block: a
- * block left out for its own d would bias the fit. */
-static double fit_weight(const grade_report *r, int bx, int by, int ch)
-{
-    const grade_block *b = &r->blocks[by * r->nbx + bx];
-    double v;
-    if (b->n < 1 || (r->nblocks > 1 && dark_neighbours(r, bx, by))) return 0.0;
-    v = (r->nblocks > 1 ? pooled_var(r, bx, by, ch, 0) : b->var[ch]) / b->n;
-    return v > b->round[ch] * b->round[ch] ? b->ref[ch] / v : 0.0;
-}
-
-/* One channel of the whole-image fit: eps = sum w d / sum w ref over the blocks, and the variance of
- * sum w d: the larger of the model's sum w^2 noise and the sandwich sum w^2 (d - eps ref)^2. The
- * model trusts each block's noise estimate; with heavy tails (1 spp, light found by BSDF sampling
- * only) the blocks that drew no rare sample look precise and weigh much, and the model's variance
- * is far too small (an honest 128x128 image at 1 spp failed at z -5.8). The sandwich measures the
- * scatter the blocks actually show, rare samples included. Returns the blocks with a weight. */
-static int fit_channel(grade_report *r, int ch, double *wd, double *wref, double *wvar, double *skew)
-{
-    int b, nw = 0;
-    double model = 0.0, sandwich = 0.0, m3 = 0.0, eps;
-    *wd = *wref = 0.0;
-    for (b = 0; b < r->nblocks; b++) {
-        double w = fit_weight(r, b % r->nbx, b / r->nbx, ch);
-        nw += w > 0.0;
-        *wd += w * r->blocks[b].diff[ch];
-        *wref += w * r->blocks[b].ref[ch];
-        model += w * w * r->blocks[b].noise[ch];
-    }
-    eps = *wref > 0.0 ? *wd / *wref : 0.0;
-    for (b = 0; b < r->nblocks; b++) {
-        double w = fit_weight(r, b % r->nbx, b / r->nbx, ch), e = r->blocks[b].diff[ch] - eps * r->blocks[b].ref[ch];
-        sandwich += w * w * e * e;
-        m3 += w * w * w * e * e * e;
-    }
-    *wvar = fmax(model, sandwich);
-    /* the skewness of the contributions w (d - eps ref), for skewed_limit: n of them, so sum of
-     * cubes / n over (sum of squares / n)^1.5 */
-    *skew = nw > 0 && sandwich > 0.0 ? (m3 / nw) / pow(sandwich / nw, 1.5) : 0.0;
-    return nw;
-}
-
-/* Whole image, per channel: the relative bias eps of d = eps * ref, fitted to the block means by
- * weighted least squares (fit_channel), z = sum w d / sd, against Student's t with (blocks with a
- * weight - 1) degrees of freedom: the sandwich variance is estimated from that many blocks.
- * The plain means of d and ref are over every pixel (exact ones too). */
-static void test_image(grade_report *r, const image *img, const image *ref)
-{
-    int ch, nw[3], df;
-    double wd[3], wref[3], wvar[3], skew[3];
-    size_t p, n = (size_t)r->w * r->h;
-    for (p = 0; p < 3 * n; p++) {
-        r->image_diff[p % 3] += ((double)img->px[p] - ref->px[p]) / n;
-        r->image_ref[p % 3] += (double)ref->px[p] / n;
-    }
-    for (ch = 0; ch < 3; ch++) {
-        nw[ch] = fit_channel(r, ch, &wd[ch], &wref[ch], &wvar[ch], &skew[ch]);
-        r->image_nfit += nw[ch];
-    }
-    df = imin(nw[0], imin(nw[1], nw[2])) - 1;
-    r->image_level = sidak_level(r->alpha / 3.0, 6);
-    r->image_zcrit = df >= 1 ? t_critical(r->image_level, df) : HUGE_VAL;
-    for (ch = 0; ch < 3; ch++) {
-        r->image_eps[ch] = wref[ch] > 0.0 ? wd[ch] / wref[ch] : 0.0;
-        r->image_eps_se[ch] = wref[ch] > 0.0 ? sqrt(wvar[ch]) / wref[ch] : 0.0;
-        r->image_z[ch] = wref[ch] > 0.0 ? t_stat(wd[ch], wvar[ch]) : 0.0;
-        r->image_zlimit[ch] = skewed_limit(r->image_zcrit, r->image_z[ch] < 0.0 ? skew[ch] : -skew[ch], nw[ch]);
-        if (fabs(r->image_z[ch]) > r->image_zlimit[ch]) r->image_fail = 1;
-    }
-}
-
-/* Whole image, unweighted: the mean of d over the noisy pixels, per channel, with their own scatter,
- * Student's t, the limit widened by the skewness. Weaker than the fit when the noise is tame, but it
- * weighs every pixel alike: an image black where light is rare is judged here, rare samples and all
- * (a black image passes no other test when its every block is black). */
-static void test_plain(grade_report *r, const image *img, const image *ref)
-{
-    size_t p, n = (size_t)r->w * r->h;
-    long m = 0;
-    int ch;
-    double sum[3] = {0, 0, 0}, m2[3] = {0, 0, 0}, m3[3] = {0, 0, 0}, crit;
-    for (p = 0; p < n; p++)
-        for (ch = 0; ch < 3 && !r->exact[p]; ch++) sum[ch] += (double)img->px[3 * p + ch] - ref->px[3 * p + ch];
-    for (p = 0; p < n; p++) m += !r->exact[p];
-    for (p = 0; p < n; p++)
-        for (ch = 0; ch < 3 && !r->exact[p] && m > 0; ch++) {
-            double e = (double)img->px[3 * p + ch] - ref->px[3 * p + ch] - sum[ch] / m;
-            m2[ch] += e * e;
-            m3[ch] += e * e * e;
-        }
-    crit = m > 1 ? t_critical(r->image_level, (int)fmin(m - 1, 1e9)) : 0.0;   /* one df for the 3 channels */
-    for (ch = 0; ch < 3 && m > 1; ch++) {
-        double skew = m2[ch] > 0.0 ? (m3[ch] / m) / pow(m2[ch] / m, 1.5) : 0.0;
-        r->plain_t[ch] = t_stat(sum[ch] / m, m2[ch] / (m - 1.0) / m);
-        r->plain_limit[ch] = skewed_limit(crit, r->plain_t[ch] < 0.0 ? skew : -skew, m);
-        if (fabs(r->plain_t[ch]) > r->plain_limit[ch]) r->image_fail = 1;
-    }
-}
-
-/* Information only: z per pixel-channel with the student's variance taken as var_ref M / N. A
- * reference variance with few degrees of freedom (a sobol reference: 3) makes that z a Student t:
- * it fails when its t tail (Welch-Satterthwaite with the exact rounding term) is below the Sidak
- * level, i.e. when the z with the same tail passes the critical z. */
-static void test_pixels(grade_report *r, const image *img, const image *ref, const image *var, const grade_opts *o)
-{
-    size_t i, n = 3 * (size_t)img->w * img->h;
-    double k = 1.0 + (double)o->ref_spp / o->spp, level = sidak_level(r->alpha, (long)n);
-    r->pixel_test = 1;
-    r->pixel_n = (long)n;
-    r->pixel_zcrit = sidak_zcrit(r->alpha, (long)n);
-    for (i = 0; i < n; i++) {
-        double d = (double)img->px[i] - ref->px[i], rounding = GRADE_ROUNDING * (fabs(ref->px[i]) + fabs(img->px[i]));
-        double t = t_stat(d, var->px[i] * k + rounding * rounding);
-        if (o->ref_var_dof > 0 && isfinite(t))   /* |z| > zcrit, i.e. the tail below the level, on t's tail */
-            r->pixel_fail += t_two_sided_tail(t, welch_dof(var->px[i] * k, o->ref_var_dof, rounding * rounding, 0)) < level;
-        else if (fabs(t) > r->pixel_zcrit) r->pixel_fail++;
-    }
-}
-
-static void choose_blocks(grade_report *r, const grade_opts *o)
-{
-    int side;
-    r->block = o->block > 0 ? o->block : (r->w < r->h ? r->w : r->h) / 16;
-    if (r->block < GRADE_MIN_BLOCK && o->block <= 0) r->block = GRADE_MIN_BLOCK;
-    r->nbx = r->w / r->block > 0 ? r->w / r->block : 1;
-    r->nby = r->h / r->block > 0 ? r->h / r->block : 1;
-    r->nblocks = r->nbx * r->nby;
-    for (side = 2 * r->block; r->ncoarse < GRADE_MAX_COARSE && r->w / side >= 2 && r->h / side >= 2; side *= 2) {
-        grade_scale *s = &r->coarse[r->ncoarse++];
-        s->side = side;
-        s->nbx = r->w / side;
-        s->nby = r->h / side;
-        s->nblocks = s->nbx * s->nby;
-    }
-}
-
-int grade_compute(grade_report *r, const image *img, const image *ref, const image *ref_var, const grade_opts *o)
-{
-    int *id, k, oom = 0;
-    memset(r, 0, sizeof *r);
-    if (img->w != ref->w || img->h != ref->h) return 1;
-    if (ref_var && (ref_var->w != ref->w || ref_var->h != ref->h)) return 1;
-    r->alpha = o->alpha;
-    r->w = img->w;
-    r->h = img->h;
-    choose_blocks(r, o);
-    r->blocks = calloc((size_t)r->nblocks, sizeof *r->blocks);
-    r->levels = calloc(GRADE_LEVELS, sizeof *r->levels);
-    id = malloc((size_t)r->w * r->h * sizeof *id);
-    for (k = 0; k < r->ncoarse; k++) {
-        r->coarse[k].blocks = calloc((size_t)r->coarse[k].nblocks, sizeof *r->coarse[k].blocks);
-        oom |= !r->coarse[k].blocks;
-    }
-    if (oom || !r->blocks || !r->levels || !id || mark_exact(r, ref, ref_var)) {
-        free(id);
-        grade_free(r);
+    static const char *const images[] = {".pfm", ".ppm", ".png", NULL}, *const reports[] = {".md", ".csv", ".html", NULL};
+    if (a->heatmap && !(a->nimages > 1 ? is_dir(a->heatmap) : img_format_of(a->heatmap) != IMG_UNKNOWN)) {
+        fprintf(stderr, a->nimages > 1 ? "pathlab grade: --heatmap %s: with several images, give a folder that exists\n"
+                                       : "pathlab grade: --heatmap %s: unknown image format (use .pfm, .ppm or .png)\n", a->heatmap);
         return 1;
     }
-    test_exact(r, img, ref);
-    if (ref_var && floor_scale(r, img, ref, ref_var)) { free(id); grade_free(r); return 1; }
-    test_blocks(r, img, ref, ref_var, id);
-    test_coarse(r, img, ref, ref_var, id);
-    test_levels(r, img, ref, ref_var, id);
-    test_image(r, img, ref);
-    test_plain(r, img, ref);
-    free(id);
-    if (ref_var && o->spp > 0 && o->ref_spp > 0) test_pixels(r, img, ref, ref_var, o);
+    if (a->report && !ends_with(a->report, ".md") && !ends_with(a->report, ".csv") && !ends_with(a->report, ".html")) {
+        fprintf(stderr, "pathlab grade: --report %s: use a name ending in .md (Markdown), .csv or .html\n", a->report);
+        return 1;
+    }
+    /* then where they go: the folder exists and can be written */
+    if (a->heatmap && (a->nimages > 1 ? output_dir_check("grade", "--heatmap", a->heatmap)
+                                      : output_path_check("grade", "--heatmap", a->heatmap, images))) return 1;
+    if (a->pages && output_dir_check("grade", "--pages", a->pages)) return 1;
+    return a->report && output_path_check("grade", "--report", a->report, reports);
+}
+
+/* dir/file (file NULL: dir alone) as an absolute path: the working folder before it when relative. */
+static void absolute(char *out, size_t cap, const char *dir, const char *file)
+{
+    char cwd[4096];
+    int n;
+    if (dir[0] != '/' && getcwd(cwd, sizeof cwd)) n = snprintf(out, cap, "%s/%s%s%s", cwd, dir, file ? "/" : "", file ? file : "");
+    else n = snprintf(out, cap, "%s%s%s", dir, file ? "/" : "", file ? file : "");
+    if (n < 0 || (size_t)n >= cap) out[0] = '\0';   /* too long: no link rather than a wrong one */
+}
+
+/* The pages' folder: --pages DIR, else with --report R.EXT the folder R-pages beside the report (the
+ * report's links are then relative and survive moving both), else none. Made if missing, once the
+ * reference has been read (bad input writes nothing); the pages' link back to the report is set
+ * when it has a report. 0, or 1 (said). */
+static int setup_pages(grade_args *a)
+{
+    const char *base = a->report ? (strrchr(a->report, '/') ? strrchr(a->report, '/') + 1 : a->report) : "";
+    size_t stem = strrchr(base, '.') ? (size_t)(strrchr(base, '.') - base) : strlen(base);
+    char dir[4096];
+    if (a->pages) snprintf(a->pages_dir, sizeof a->pages_dir, "%s", a->pages);
+    else if (a->report) snprintf(a->pages_dir, sizeof a->pages_dir, "%.*s-pages", (int)(base - a->report + stem), a->report);
+    else return 0;
+    if (mkdir(a->pages_dir, 0777) && errno != EEXIST) {
+        fprintf(stderr, "pathlab grade: cannot create the folder %s for the pages: %s\n", a->pages_dir, strerror(errno));
+        return 1;
+    }
+    if (!is_dir(a->pages_dir)) { fprintf(stderr, "pathlab grade: --pages %s is not a folder\n", a->pages_dir); return 1; }
+    snprintf(dir, sizeof dir, "%.*s", base > a->report ? (int)(base - a->report) : 1, base > a->report ? a->report : ".");
+    if (!a->report) a->back[0] = '\0';
+    else if (!a->pages) snprintf(a->back, sizeof a->back, "../%s", base);
+    else absolute(a->back, sizeof a->back, dir, base);
     return 0;
 }
 
-void grade_free(grade_report *r)
+/* The link from the report to a page DIR/FILE: relative when DIR lies under the report's folder,
+ * else absolute. */
+static void page_link(char *out, size_t cap, const grade_args *a, const char *page)
+{
+    const char *slash = a->report ? strrchr(a->report, '/') : NULL;
+    size_t n = slash ? (size_t)(slash - a->report) + 1 : 0;
+    if (n && !strncmp(page, a->report, n)) snprintf(out, cap, "%s", page + n);
+    else if (page[0] == '/' || !a->report || (n == 0 && strncmp(page, "../", 3))) snprintf(out, cap, "%s", page);
+    else absolute(out, cap, page, NULL);
+}
+
+static int parse_args(grade_args *a, int argc, char **argv)
+{
+    float alpha = 0.01f;
+    const cli_flag flags[] = {
+        {"--ref", CLI_STRING, &a->ref, 0, 0, NULL, NULL, NULL},
+        {"--var", CLI_STRING, &a->var, 0, 0, NULL, NULL, NULL},
+        {"--layers", CLI_STRING, &a->layers, 0, 0, NULL, NULL, NULL},
+        {"--heatmap", CLI_STRING, &a->heatmap, 0, 0, NULL, NULL, NULL},
+        {"--report", CLI_STRING, &a->report, 0, 0, NULL, NULL, NULL},
+        {"--pages", CLI_STRING, &a->pages, 0, 0, NULL, NULL, NULL},
+        {"--details", CLI_SWITCH, &a->details, 0, 0, NULL, NULL, NULL},
+        {"--spp", CLI_INT, &a->o.spp, 1, 1 << 30, NULL, NULL, NULL},
+        {"--ref-spp", CLI_INT, &a->o.ref_spp, 1, 1 << 30, NULL, NULL, NULL},
+        {"--block", CLI_INT, &a->o.block, 2, 1 << 20, NULL, NULL, NULL},
+        {"--alpha", CLI_CUSTOM, NULL, 0, 0, NULL, parse_alpha, NULL},
+        {NULL, CLI_SWITCH, NULL, 0, 0, NULL, NULL, NULL}};
+    const cli_flag *tables[] = {flags, NULL};
+    const char **words = calloc((size_t)argc + 1, sizeof *words);
+    int n, k, cap = 100000;
+    a->images = calloc((size_t)cap, sizeof *a->images);
+    a->owned = calloc((size_t)cap, sizeof *a->owned);
+    if (!words || !a->images || !a->owned || cli_parse("grade", argc, argv, tables, &alpha, words, argc, &n)) { free(words); return 1; }
+    a->o.alpha = alpha;
+    for (k = 0; k < n; k++) {
+        if (is_dir(words[k])) { if (add_folder(a, words[k], cap)) { free(words); return 1; } }
+        else if (a->nimages < cap) a->images[a->nimages++] = words[k];
+    }
+    free(words);
+    if (!n || !a->ref) { fprintf(stderr, "pathlab grade: needs an image (or a folder of them) and --ref REF.pfm\n" GRADE_USAGE); return 1; }
+    if (!a->nimages) { fprintf(stderr, "pathlab grade: no image to grade (the folder holds no .pfm besides the reference's files)\n"); return 1; }
+    return check_outputs(a);
+}
+
+/* Reads the reference, its variance (--var, else REF_var.pfm if it exists) and its layers (--layers
+ * PREFIX, else REF_split: PREFIX_L0.pfm, PREFIX_L1.pfm ... as far as they exist). 0, or 2 (said). */
+static int read_reference(reference *R, const grade_args *a)
+{
+    static char var_path[4096];
+    size_t stem = ends_with(a->ref, ".pfm") ? strlen(a->ref) - 4 : strlen(a->ref);
+    int k;
+    img_pfm_info info;
+    memset(R, 0, sizeof *R);
+    if (img_read_pfm_info(&R->ref, a->ref, &info)) return 2;
+    R->refs.ref = &R->ref;
+    R->refs.channels = info.channels;
+    snprintf(var_path, sizeof var_path, "%.*s_var.pfm", (int)stem, a->ref);
+    R->has_meta = sidecar_read(&R->meta, a->ref) == 0;
+    if (!a->var && !access_ok(var_path) && R->has_meta && R->meta.variance[0])   /* the variance its sidecar names */
+        render_files_variance_path(var_path, sizeof var_path, a->ref, R->meta.variance);
+    R->var_path = a->var ? a->var : (access_ok(var_path) ? var_path : NULL);
+    if (R->var_path) {
+        if (img_read_pfm(&R->var, R->var_path)) return 2;
+        if (R->var.w != R->ref.w || R->var.h != R->ref.h) {
+            fprintf(stderr, "pathlab grade: %s is %dx%d, the reference %s %dx%d\n", R->var_path, R->var.w, R->var.h, a->ref, R->ref.w, R->ref.h);
+            return 2;
+        }
+        R->refs.var = &R->var;
+    }
+    if (a->layers) snprintf(R->layer_prefix, sizeof R->layer_prefix, "%s", a->layers);
+    else snprintf(R->layer_prefix, sizeof R->layer_prefix, "%.*s_split", (int)stem, a->ref);
+    if (!a->layers && R->has_meta && !strncmp(R->meta.layers, "0:", 2)) {   /* render --split's own REF_L0.pfm ... */
+        char first[4200];
+        snprintf(first, sizeof first, "%s_L0.pfm", R->layer_prefix);
+        if (!access_ok(first)) snprintf(R->layer_prefix, sizeof R->layer_prefix, "%.*s", (int)stem, a->ref);
+    }
+    for (k = 0; k < GRADE_MAX_LAYERS; k++) {
+        char path[4200];
+        snprintf(path, sizeof path, "%s_L%d.pfm", R->layer_prefix, k);
+        if (!access_ok(path)) break;
+        if (img_read_pfm(&R->layer[k], path)) return 2;
+        if (R->layer[k].w != R->ref.w || R->layer[k].h != R->ref.h) {
+            fprintf(stderr, "pathlab grade: the layer %s is %dx%d, the reference %dx%d\n", path, R->layer[k].w, R->layer[k].h, R->ref.w, R->ref.h);
+            return 2;
+        }
+        R->refs.layer[k] = &R->layer[k];
+        R->refs.nlayers = k + 1;
+    }
+    return grade_check_reference(&R->refs, a->ref, R->var_path);
+}
+
+static void free_reference(reference *R)
 {
     int k;
-    for (k = 0; k < r->ncoarse; k++) {
-        free(r->coarse[k].blocks);
-        r->coarse[k].blocks = NULL;
-    }
-    free(r->blocks);
-    free(r->levels);
-    free(r->exact);
-    r->blocks = r->levels = NULL;
-    r->exact = NULL;
+    img_free(&R->ref);
+    img_free(&R->var);
+    for (k = 0; k < GRADE_MAX_LAYERS; k++) img_free(&R->layer[k]);
 }
 
-int grade_failed(const grade_report *r)
+/* The heatmap's path for an image: the --heatmap file itself, or FOLDER/NAME.png with several. */
+static void heatmap_path(char *out, size_t cap, const grade_args *a, const char *image)
 {
-    int k;
-    for (k = 0; k < r->ncoarse; k++) if (r->coarse[k].brighter || r->coarse[k].darker) return 1;
-    return r->image_fail || r->nbrighter > 0 || r->ndarker > 0 || r->level_brighter > 0 || r->level_darker > 0 ||
-           r->exact_fail > 0;
+    const char *base = strrchr(image, '/') ? strrchr(image, '/') + 1 : image;
+    size_t stem = ends_with(base, ".pfm") ? strlen(base) - 4 : strlen(base);
+    if (a->nimages == 1) snprintf(out, cap, "%s", a->heatmap);
+    else snprintf(out, cap, "%s/%.*s.png", a->heatmap, (int)stem, base);
 }
 
-double grade_excess(const grade_report *r)
+/* The likely mistakes of a failing image: printed in full (one image, or --details) and joined into
+ * the row. */
+static int diagnose(grade_row *row, const image *img, const reference *R, const grade_args *a, double excess, int loud,
+                    grade_hypothesis *h, int *nh)
 {
-    double e = fmax(r->block_excess, r->level_excess);
-    int ch, k;
-    if (r->exact_fail) return 1e9;
-    for (k = 0; k < r->ncoarse; k++) e = fmax(e, r->coarse[k].excess);
-    for (ch = 0; ch < 3; ch++) e = fmax(e, fabs(r->image_z[ch]) / r->image_zlimit[ch]);
-    for (ch = 0; ch < 3; ch++) if (r->plain_limit[ch] > 0.0) e = fmax(e, fabs(r->plain_t[ch]) / r->plain_limit[ch]);
-    return e;
-}
-
-/* Paints the significant blocks of one scale: red brighter, blue darker, over what is there, with
- * weight `strength` (the coarse scales lighter, so that the finest show their detail on them). */
-static void paint_blocks(image *out, const grade_block *g, int ng, int w, float strength)
-{
-    static const float red[3] = {0.9f, 0.03f, 0.03f}, blue[3] = {0.03f, 0.1f, 0.9f};
-    int b, x, y, ch;
-    for (b = 0; b < ng; b++) {
-        if (!g[b].sign) continue;
-        for (y = g[b].y0; y < g[b].y1; y++)
-            for (x = g[b].x0; x < g[b].x1; x++)
-                for (ch = 0; ch < 3; ch++) {
-                    float *v = &out->px[3 * ((size_t)y * w + x) + ch];
-                    *v = strength * (g[b].sign > 0 ? red : blue)[ch] + (1.0f - strength) * *v;
-                }
-    }
-}
-
-int grade_heatmap(image *out, const grade_report *r, const image *ref)
-{
-    size_t p;
-    int k, ch;
-    if (img_alloc(out, r->w, r->h)) return 1;
-    for (p = 0; p < (size_t)r->w * r->h; p++) {
-        float Y = (float)ref_luminance(ref, p);
-        for (ch = 0; ch < 3; ch++) out->px[3 * p + ch] = 0.5f * fminf(fmaxf(Y, 0.0f), 1.0f);   /* dimmed: colours stand out */
-    }
-    for (k = r->ncoarse - 1; k >= 0; k--) paint_blocks(out, r->coarse[k].blocks, r->coarse[k].nblocks, r->w, 0.3f);
-    paint_blocks(out, r->blocks, r->nblocks, r->w, 0.8f);
+    int n = *nh = grade_diagnose(img, &R->refs, &a->o, excess, h, GRADE_MAX_HYP), k;
+    size_t used = 0;
+    if (n < 0) { fprintf(stderr, "pathlab grade: out of memory\n"); *nh = 0; return 2; }
+    if (loud) grade_print_hypotheses(h, n);
+    if (n == 0) snprintf(row->mistake, sizeof row->mistake, "none of the catalogue%s", R->refs.nlayers ? "" :
+                         " (no layers REF_split_L0.pfm ... beside the reference: the bounce mistakes were not tried)");
+    if (loud && n == 0 && !R->refs.nlayers)
+        printf("    (no layers %s_L0.pfm ... beside the reference: the bounce mistakes were not tried; docs/grading.md)\n", R->layer_prefix);
+    for (k = 0; k < n && k < 3 && used < sizeof row->mistake; k++)
+        used += (size_t)snprintf(row->mistake + used, sizeof row->mistake - used, "%s%s", k ? "; " : "", h[k].what);
     return 0;
+}
+
+/* The heatmap of one graded image, if asked: 0, or 2 (said). */
+static int write_heatmap(const grade_report *r, const reference *R, const grade_args *a, const char *image_path, int loud)
+{
+    char path[4200];
+    image heat;
+    int err;
+    if (!a->heatmap) return 0;
+    heatmap_path(path, sizeof path, a, image_path);
+    err = grade_heatmap(&heat, r, &R->ref) || img_write(&heat, path, 0.0f);
+    if (!err && loud) printf("heatmap: %s (red: significantly brighter blocks, blue: darker, grey: the reference)\n", path);
+    img_free(&heat);
+    return err ? 2 : 0;
+}
+
+static const char *file_name(const char *path) { return strrchr(path, '/') ? strrchr(path, '/') + 1 : path; }
+
+/* The page of one graded image, PAGES/STEM.html, if there is a pages folder; the row's link to it.
+ * 0, or 2 (said). */
+static int write_page(grade_row *row, const grade_report *r, const image *img, const reference *R, const grade_args *a,
+                      const grade_hypothesis *h, int nh, int loud)
+{
+    const char *base = file_name(row->path);
+    size_t stem, k, n;
+    char path[8400];
+    grade_page p;
+    if (!a->pages_dir[0]) return 0;
+    if (a->same_name && base > row->path) base--;   /* with its folder: ana/render.pfm */
+    while (a->same_name && base > row->path && base[-1] != '/') base--;
+    stem = ends_with(base, ".pfm") ? strlen(base) - 4 : strlen(base);
+    n = (size_t)snprintf(path, sizeof path, "%s/", a->pages_dir);
+    for (k = 0; k < stem && n + 6 < sizeof path; k++)   /* ana/render.pfm, when render.pfm is not alone: ana_render.html */
+        path[n++] = (char)(isalnum((unsigned char)base[k]) || strchr("-.", base[k]) ? base[k] : '_');
+    snprintf(path + n, sizeof path - n, ".html");
+    p.path = path, p.ref_path = a->ref, p.var_path = R->var_path, p.img = img, p.refs = &R->refs, p.r = r, p.row = row;
+    p.h = h, p.nh = nh, p.back = a->back[0] ? a->back : NULL;
+    if (grade_write_page(&p)) return 2;
+    page_link(row->page, sizeof row->page, a, path);
+    if (loud) printf("page: %s\n", path);
+    return 0;
+}
+
+static int by_file_name(const void *a, const void *b)
+{
+    return strcmp(file_name(**(const char *const *const *)a), file_name(**(const char *const *const *)b));
+}
+
+/* same[k] = 1 when another image has images[k]'s file name (students/NAME/render.pfm): their pages
+ * are then named by their paths. 0, or 1 when out of memory. */
+static int mark_same_names(const char **images, int n, unsigned char *same)
+{
+    const char ***order = malloc((size_t)n * sizeof *order);
+    int k;
+    if (!order) return 1;
+    for (k = 0; k < n; k++) order[k] = &images[k];
+    qsort(order, (size_t)n, sizeof *order, by_file_name);
+    for (k = 0; k + 1 < n; k++)
+        if (!strcmp(file_name(*order[k]), file_name(*order[k + 1]))) same[order[k] - images] = same[order[k + 1] - images] = 1;
+    free(order);
+    return 0;
+}
+
+/* Grades one image into its row: 0 pass, 1 fail, 2 could not be read or graded. keep (or NULL)
+ * receives the graded image, for the class's page. */
+static int grade_one(grade_row *row, const reference *R, const grade_args *a, int loud, image *keep)
+{
+    grade_hypothesis h[GRADE_MAX_HYP];
+    image img;
+    grade_report r;
+    int rc, nh = 0;
+    memset(row, 0, sizeof *row);
+    row->path = a->images[0];
+    rc = grade_read_image(&img, row, &R->refs, a->ref);
+    if (rc && loud && a->nimages == 1) grade_print_row(row);
+    if (rc) return row->status = rc;
+    if (grade_compute(&r, &img, &R->ref, R->refs.var, &a->o)) {
+        fprintf(stderr, "pathlab grade: out of memory\n");
+        img_free(&img);
+        return row->status = 2;
+    }
+    if (loud) grade_print_report(&r, row->path, a->ref, &a->o);
+    grade_fill_row(row, &r);
+    row->status = grade_failed(&r);
+    if (row->status == 1 && diagnose(row, &img, R, a, grade_excess(&r), loud, h, &nh)) row->status = 2;
+    if (write_heatmap(&r, R, a, row->path, loud) || write_page(row, &r, &img, R, a, h, nh, loud)) row->status = 2;
+    grade_free(&r);
+    if (keep && row->status < 2) { *keep = img; img.px = NULL; }
+    img_free(&img);
+    return row->status;
+}
+
+/* What made the reference, from its sidecar: a teacher checks the spp, seed and camera at a glance. */
+static void print_provenance(const sidecar *m, const char *ref)
+{
+    char ranges[256], spp[96];
+    sidecar_ranges_text(m, ranges, sizeof ranges);
+    if (m->adaptive[0]) snprintf(spp, sizeof spp, "adaptive, a mean of %.1f spp per pixel", m->spp_mean);   /* not the range's width */
+    else snprintf(spp, sizeof spp, "%lld spp", (long long)sidecar_spp(m));
+    printf("reference %s: %s (samples %s), seed %llu, %s %s, camera %s, pathlab %s%s%s\n", ref,
+           spp, ranges, (unsigned long long)m->seed, m->scene, m->flags, m->camera, m->revision,
+           m->stopped[0] ? ", stopped by " : "", m->stopped);
+}
+
+int grade_main(int argc, char **argv)
+{
+    grade_args a;
+    reference R;
+    grade_row *rows;
+    image *kept = NULL;    /* the graded images, kept for the class's page (--report X.html) */
+    unsigned char *same = NULL;
+    int k, rc = 0, loud;
+    memset(&a, 0, sizeof a);
+    memset(&R, 0, sizeof R);
+    if (parse_args(&a, argc, argv)) { free_args(&a); return 2; }
+    rows = calloc((size_t)a.nimages + 1, sizeof *rows);
+    if (a.report && ends_with(a.report, ".html") && !(kept = calloc((size_t)a.nimages, sizeof *kept))) rc = 2;
+    if (!(same = calloc((size_t)a.nimages, 1)) || mark_same_names(a.images, a.nimages, same)) rc = 2;
+    if (rc || !rows || read_reference(&R, &a) || setup_pages(&a)) {
+        free_reference(&R); free_args(&a); free(rows); free(kept); free(same);
+        return 2;
+    }
+    loud = a.nimages == 1 || a.details;
+    if (R.has_meta) print_provenance(&R.meta, a.ref);
+    if (R.has_meta) a.o.ref_var_dof = R.meta.variance_dof;   /* a sobol reference's variance: 3 dof */
+    if (!loud) grade_print_class_header(&a.o, a.ref, a.nimages, &R.refs, R.var_path, R.layer_prefix);
+    for (k = 0; k < a.nimages; k++) {
+        grade_args one = a;
+        one.images = a.images + k, one.same_name = same[k];
+        if (loud && k) printf("\n");
+        grade_one(&rows[k], &R, &one, loud, kept ? &kept[k] : NULL);
+        rows[k].path = a.images[k];
+        if (!loud || a.nimages > 1) grade_print_row(&rows[k]);
+        if (rows[k].status > rc) rc = rows[k].status;
+    }
+    if (a.nimages > 1) grade_print_summary(rows, a.nimages, &a.o);
+    if (a.report && grade_write_report(a.report, rows, a.nimages, &a.o, a.ref, &R.refs, kept)) rc = 2;
+    for (k = 0; kept && k < a.nimages; k++) img_free(&kept[k]);
+    free(kept);
+    free(same);
+    free_reference(&R);
+    free_args(&a);
+    free(rows);
+    return rc;
 }

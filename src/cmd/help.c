@@ -3,7 +3,7 @@
 #include <string.h>
 #include "tracer/integrator.h"
 #include "tracer/light.h"
-#include "tracer/sampler.h"
+#include "sampler/sampler.h"
 
 typedef struct { const char *key; const char *const *names; } name_table;
 

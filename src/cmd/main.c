@@ -1,5 +1,5 @@
 /* main.c — pathlab's command line: the commands, each with its help, handed to its own file
- * (render_cmd.c, convert.c, diff.c, grade_cli.c, compare.c, merge.c, bench_rays.c,
+ * (render_cmd.c, convert.c, diff.c, cmd/grade.c, compare.c, merge.c, bench_rays.c,
  * check_sampling.c, check_sampler.c).
  * A new command is one entry of COMMANDS: its name, its main, the lines of the overview
  * (`pathlab help`) and the parts of its own help (`pathlab NAME --help`, `pathlab help NAME`). */

@@ -5,9 +5,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "cmd/render_files.h"
+#include "files/render_files.h"
 #include "stats/combine.h"
-#include "tracer/sampler.h"
+#include "sampler/sampler.h"
 #include "util/cli.h"
 #include "sys/output_path.h"
 

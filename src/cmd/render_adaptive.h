@@ -4,7 +4,7 @@
 #ifndef PATHLAB_RENDER_ADAPTIVE_H
 #define PATHLAB_RENDER_ADAPTIVE_H
 #include "cmd/render_args.h"
-#include "cmd/sidecar.h"
+#include "files/sidecar.h"
 
 #define RENDER_ADAPTIVE_NFLAGS 6   /* the flags and the closing NULL entry */
 

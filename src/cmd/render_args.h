@@ -3,8 +3,8 @@
 #ifndef PATHLAB_RENDER_ARGS_H
 #define PATHLAB_RENDER_ARGS_H
 #include "util/cli.h"
-#include "tracer/adaptive.h"
-#include "tracer/render.h"
+#include "render/adaptive.h"
+#include "render/render.h"
 
 typedef struct {
     const char *cmd;                 /* the command, in messages: "render" (set by render_args_init) */

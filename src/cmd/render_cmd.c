@@ -7,7 +7,7 @@
 #include <unistd.h>
 #include "cmd/render_args.h"
 #include "cmd/render_adaptive.h"
-#include "cmd/render_files.h"
+#include "files/render_files.h"
 #include "cmd/version.h"
 #include "stats/combine.h"
 #include "sys/interrupt.h"

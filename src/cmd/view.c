@@ -5,8 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-#include "cmd/render_files.h"
-#include "cmd/sidecar.h"
+#include "files/render_files.h"
+#include "files/sidecar.h"
 #include "image/html_page.h"
 #include "sys/output_path.h"
 #include "util/cli.h"

@@ -8,7 +8,7 @@
 #define PATHLAB_INTEGRATOR_H
 #include <stdint.h>
 #include "geometry/ray.h"
-#include "tracer/sampler.h"
+#include "sampler/sampler.h"
 #include "tracer/scene.h"
 
 typedef enum { DIR_UNIFORM, DIR_COSINE, DIR_BRDF } dir_strategy;                /* --dir */

@@ -15,7 +15,7 @@
 #include <string.h>
 #include "fuzz_common.h"
 #include "scene/camera.h"
-#include "tracer/render.h"
+#include "render/render.h"
 #include "tracer/scene.h"
 
 static const uint8_t *find(const uint8_t *p, const uint8_t *end, const char *marker)

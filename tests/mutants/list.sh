@@ -82,10 +82,10 @@ mutant merge-var-within-only src/stats/combine.c \
     's/c->m2\[i\] += m2b + delta \* delta \* (c->n \* n \/ total);/c->m2[i] += m2b;/' \
     test_passes - 'merged variance adds the spread inside each piece but forgets the spread between their means'
 # ---- adaptive sampling (docs/adaptive.md) ----
-mutant adaptive-pilot-kept src/tracer/adaptive.c \
+mutant adaptive-pilot-kept src/render/adaptive.c \
     's/return splitmix64_mix(seed ^ 0x70696c6f74ULL) + SPLITMIX64_GAMMA;/return seed;/' \
     test_adaptive - 'the pilot that chose n(x) is the first samples kept in the image: counts depend on the kept samples (biased)'
-mutant adaptive-count-as-done src/tracer/render.c \
+mutant adaptive-count-as-done src/render/render.c \
     's/int n = pixel_spp \&\& pixel_spp\[p\] < done ? pixel_spp\[p\] : done;/int n = done;/' \
     test_adaptive - 'each pixel sum divided by the passes done instead of its own sample count'
 # ---- Sobol samplers (docs/sampler.md) ----

@@ -3,7 +3,7 @@
  * Written by render and merge, read back by merge and render --resume. */
 #ifndef PATHLAB_RENDER_FILES_H
 #define PATHLAB_RENDER_FILES_H
-#include "cmd/sidecar.h"
+#include "files/sidecar.h"
 #include "image/image.h"
 
 typedef struct {

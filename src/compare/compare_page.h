@@ -4,7 +4,7 @@
  * to the other files of DIR. */
 #ifndef PATHLAB_COMPARE_PAGE_H
 #define PATHLAB_COMPARE_PAGE_H
-#include "cmd/compare_report.h"
+#include "compare/compare_report.h"
 #include "image/image.h"
 
 typedef struct {

@@ -3,8 +3,8 @@
 #ifndef PATHLAB_GRADE_PRINT_H
 #define PATHLAB_GRADE_PRINT_H
 #include <stddef.h>
-#include "cmd/grade.h"
-#include "cmd/grade_diagnose.h"
+#include "grade/grade.h"
+#include "grade/grade_diagnose.h"
 
 /* One graded image, as a row of the class report. */
 typedef struct {

@@ -1,7 +1,7 @@
 /* render.c — passes of samples over tiles handed to threads by parallel_for, one random stream per
  * sample, per-pixel sums kept across passes, progress, and the stop between passes. */
-#include "tracer/render.h"
-#include "tracer/pixel_sums.h"
+#include "render/render.h"
+#include "render/pixel_sums.h"
 #include "sys/clock.h"
 #include "sys/interrupt.h"
 #include "sys/parallel.h"

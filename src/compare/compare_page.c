@@ -1,7 +1,7 @@
 /* compare_page.c — pathlab compare's DIR/index.html (see compare_page.h). The HTML around the viewer
  * is built in memory streams (open_memstream) and handed to html_page_write as before_html and
  * after_html; every text from the command line (labels, flags, paths) is escaped. */
-#include "cmd/compare_page.h"
+#include "compare/compare_page.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

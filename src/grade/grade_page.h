@@ -5,8 +5,8 @@
  * and each image linked to its image's page. */
 #ifndef PATHLAB_GRADE_PAGE_H
 #define PATHLAB_GRADE_PAGE_H
-#include "cmd/grade_diagnose.h"
-#include "cmd/grade_print.h"
+#include "grade/grade_diagnose.h"
+#include "grade/grade_print.h"
 #include "image/html_page.h"
 
 #define GRADE_MAX_MARKS 256

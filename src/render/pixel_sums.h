@@ -11,7 +11,7 @@
 #define PATHLAB_PIXEL_SUMS_H
 #include <stdint.h>
 #include "math/vec.h"
-#include "tracer/sampler.h"
+#include "sampler/sampler.h"
 
 /* The doubles kept per pixel and layer. */
 int pixel_sums_size(sampler_kind kind);

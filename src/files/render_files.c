@@ -1,5 +1,5 @@
 /* render_files.c — a render's files and their sidecars, written and read back. */
-#include "cmd/render_files.h"
+#include "files/render_files.h"
 #include "sys/interrupt.h"
 #include <errno.h>
 #include <stdio.h>

@@ -6,7 +6,7 @@
  * unbiased whatever n(x) is. docs/adaptive.md has the why and the figures. */
 #ifndef PATHLAB_ADAPTIVE_H
 #define PATHLAB_ADAPTIVE_H
-#include "tracer/render.h"
+#include "render/render.h"
 
 typedef struct {
     double target_error;   /* relative standard error wanted of each pixel's mean (0: the time decides) */

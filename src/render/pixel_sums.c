@@ -1,5 +1,5 @@
 /* pixel_sums.c — per-pixel sums and the variance of the mean, for independent and grouped samples. */
-#include "tracer/pixel_sums.h"
+#include "render/pixel_sums.h"
 
 #define NSUM_INDEPENDENT 6   /* sums of the samples and of their squares, RGB */
 

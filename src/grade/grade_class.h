@@ -4,8 +4,8 @@
  * or CSV: image, verdict, bias +- error, where, likely mistake, its page; or an HTML page). */
 #ifndef PATHLAB_GRADE_CLASS_H
 #define PATHLAB_GRADE_CLASS_H
-#include "cmd/grade_diagnose.h"
-#include "cmd/grade_print.h"
+#include "grade/grade_diagnose.h"
+#include "grade/grade_print.h"
 
 /* The reference, its variance and layers must be finite (variance >= 0): 0, or 2 after saying where. */
 int grade_check_reference(const grade_refs *refs, const char *ref_path, const char *var_path);

@@ -1,5 +1,5 @@
 /* adaptive.c — the pilot, the per-pixel counts it decides, and the render of the kept samples. */
-#include "tracer/adaptive.h"
+#include "render/adaptive.h"
 #include "math/rng.h"
 #include <math.h>
 #include <stdio.h>

@@ -1,6 +1,6 @@
 /* grade_page.c — grade's pages (see grade_page.h). The HTML around the viewer is built in memory
  * streams (open_memstream); paths, mistakes and evidence are escaped. */
-#include "cmd/grade_page.h"
+#include "grade/grade_page.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -9,7 +9,7 @@
  * symmetric scene explains nothing. Bounce hypotheses need the per-bounce layers of the reference
  * (REF_split_L0.pfm, ... from `render --split`); their noise adds to the reference's, which the
  * grading takes as part of the difference's scatter. */
-#include "cmd/grade_diagnose.h"
+#include "grade/grade_diagnose.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,6 +1,6 @@
 /* grade_print.c — the verdict in words (see grade_print.h). Positions are in pixels with y = 0 the
  * top row, as an image viewer shows them. */
-#include "cmd/grade_print.h"
+#include "grade/grade_print.h"
 #include <math.h>
 #include <stdio.h>
 #include <string.h>

@@ -10,7 +10,7 @@
  * dimensions, a (0, 2)-sequence in base 2: the first 2^m samples of a pixel put one point in every
  * elementary interval of area 2^-m, whatever m; the shuffle decorrelates the sets from one another
  * (padding), so only the first two Sobol dimensions are needed, never a table of direction numbers. */
-#include "tracer/sampler.h"
+#include "sampler/sampler.h"
 #include <stddef.h>
 
 const char *const SAMPLER_NAMES[] = {"independent", "sobol", "sobol1", 0};

@@ -1,5 +1,5 @@
 /* sidecar.c — reading, writing and comparing the FILE.meta that says what made FILE. */
-#include "cmd/sidecar.h"
+#include "files/sidecar.h"
 #include "util/textfile.h"
 #include <errno.h>
 #include <inttypes.h>

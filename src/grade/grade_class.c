@@ -1,7 +1,7 @@
 /* grade_class.c — a class's images read and checked, its lines and its report (see grade_class.h). */
-#include "cmd/grade_class.h"
-#include "cmd/grade_page.h"
-#include "cmd/sidecar.h"
+#include "grade/grade_class.h"
+#include "grade/grade_page.h"
+#include "files/sidecar.h"
 #include <math.h>
 #include <stdio.h>
 #include <string.h>

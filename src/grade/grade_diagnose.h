@@ -5,7 +5,7 @@
  * of 1/255, R = G = B everywhere): those are evidence without a grading. */
 #ifndef PATHLAB_GRADE_DIAGNOSE_H
 #define PATHLAB_GRADE_DIAGNOSE_H
-#include "cmd/grade.h"
+#include "grade/grade.h"
 
 #define GRADE_MAX_LAYERS 8
 

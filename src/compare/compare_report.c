@@ -1,5 +1,5 @@
 /* compare_report.c — the table of pathlab compare in three forms (see compare_report.h). */
-#include "cmd/compare_report.h"
+#include "compare/compare_report.h"
 #include <errno.h>
 #include <string.h>
 #include "util/textfile.h"

@@ -292,7 +292,6 @@ static int choose_spp(comparison *c, const scene *s)
 }
 
 /* DIR/PRE SLUG EXT, e.g. DIR/heat-light.png, into path[PATH_CAP]. */
-#define PATH_CAP 4200
 static int out_path(char *path, const comparison *c, const char *pre, const char *slug, const char *ext)
 {
     if (snprintf(path, PATH_CAP, "%s/%s%s%s", c->dir, pre, slug, ext) >= PATH_CAP) {

@@ -6,7 +6,6 @@
 #include "util/cli.h"
 #include "sys/output_path.h"
 
-static const char *const IMAGE_EXTS[] = {".pfm", ".ppm", ".png", NULL};
 #define CONVERT_USAGE "usage: pathlab convert IN.pfm OUT.png|OUT.ppm|OUT.pfm [--exposure STOPS]\n"
 
 /* --exposure STOPS: a number strictly between -100 and 100 */
@@ -52,7 +51,7 @@ int convert_main(int argc, char **argv)
         fprintf(stderr, "pathlab convert: %s: unknown image format (use .pfm, .ppm or .png)\n", path[1]);
         return 2;
     }
-    if (output_path_check("convert", "output", path[1], IMAGE_EXTS)) return 2;
+    if (output_path_check("convert", "output", path[1], IMG_EXTENSIONS)) return 2;
     if (img_read_pfm(&im, path[0])) return 2;
     print_figures(&im, path[0]);
     err = img_write(&im, path[1], exposure);

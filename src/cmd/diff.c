@@ -59,7 +59,6 @@ int diff_heatmap(image *out, const image *a, const image *ref, double scale)
     return 0;
 }
 
-static const char *const IMAGE_EXTS[] = {".pfm", ".ppm", ".png", NULL};
 
 #define DIFF_USAGE "usage: pathlab diff A.pfm REF.pfm [--heatmap OUT.ppm|OUT.png] [--scale S]\n" \
                    "       pathlab diff A.pfm [B.pfm ...] --ref REF.pfm   (the arguments as grade takes them)\n"
@@ -145,7 +144,7 @@ int diff_main(int argc, char **argv)
         free(words);
         return 2;
     }
-    if (heat && n == 1 && output_path_check("diff", "--heatmap", heat, IMAGE_EXTS)) { free(words); return 2; }
+    if (heat && n == 1 && output_path_check("diff", "--heatmap", heat, IMG_EXTENSIONS)) { free(words); return 2; }
     for (k = 0; k < n; k++) {
         int one;
         if (n > 1) printf("%s%s:\n", k ? "\n" : "", words[k]);

@@ -137,7 +137,7 @@ static int add_folder(grade_args *a, const char *dir, int cap)
 
 static int check_outputs(const grade_args *a)
 {
-    static const char *const images[] = {".pfm", ".ppm", ".png", NULL}, *const reports[] = {".md", ".csv", ".html", NULL};
+    static const char *const reports[] = {".md", ".csv", ".html", NULL};
     if (a->heatmap && !(a->nimages > 1 ? is_dir(a->heatmap) : img_format_of(a->heatmap) != IMG_UNKNOWN)) {
         fprintf(stderr, a->nimages > 1 ? "pathlab grade: --heatmap %s: with several images, give a folder that exists\n"
                                        : "pathlab grade: --heatmap %s: unknown image format (use .pfm, .ppm or .png)\n", a->heatmap);
@@ -149,7 +149,7 @@ static int check_outputs(const grade_args *a)
     }
     /* then where they go: the folder exists and can be written */
     if (a->heatmap && (a->nimages > 1 ? output_dir_check("grade", "--heatmap", a->heatmap)
-                                      : output_path_check("grade", "--heatmap", a->heatmap, images))) return 1;
+                                      : output_path_check("grade", "--heatmap", a->heatmap, IMG_EXTENSIONS))) return 1;
     if (a->pages && output_dir_check("grade", "--pages", a->pages)) return 1;
     return a->report && output_path_check("grade", "--report", a->report, reports);
 }

@@ -119,7 +119,6 @@ static int merge(const char *out, const char *var_out, input *in, int n)
     return err;
 }
 
-static const char *const PFM_EXT[] = {".pfm", NULL};
 
 int merge_main(int argc, char **argv)
 {
@@ -138,7 +137,7 @@ int merge_main(int argc, char **argv)
         fprintf(stderr, "pathlab merge: %s: the merged image and its variance are written as .pfm\n", var_out && img_format_of(words[0]) == IMG_PFM ? var_out : words[0]);
         rc = 2;
     }
-    if (!rc && (output_path_check("merge", "output", words[0], PFM_EXT) || (var_out && output_path_check("merge", "--variance", var_out, PFM_EXT))))
+    if (!rc && (output_path_check("merge", "output", words[0], IMG_PFM_EXTENSION) || (var_out && output_path_check("merge", "--variance", var_out, IMG_PFM_EXTENSION))))
         rc = 2;
     for (i = 1; !rc && i < n; i++) in[i - 1].path = words[i];
     if (!rc) rc = merge(words[0], var_out, in, n - 1);

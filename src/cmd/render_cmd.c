@@ -42,8 +42,6 @@ static int check_sampler_args(const render_args *a)
     return 0;
 }
 
-static const char *const IMAGE_EXTS[] = {".pfm", ".ppm", ".png", NULL};
-static const char *const PFM_EXT[] = {".pfm", NULL};
 
 /* Every file the render will write, checked before the scene is read: the folder exists and can be
  * written, the extension is known (the --split layers and their variances go beside -o and
@@ -52,19 +50,19 @@ static int check_outputs(const render_args *a)
 {
     char layer[4200];
     int k;
-    if (output_path_check("render", "-o", a->out, IMAGE_EXTS)) return 1;
+    if (output_path_check("render", "-o", a->out, IMG_EXTENSIONS)) return 1;
     for (k = a->ro.io.bmin; a->ro.split && a->ro.io.bmax != BOUNCES_INF && k <= a->ro.io.bmax; k++) {
         render_files_layer_path(layer, sizeof layer, a->out, k);
-        if (output_path_check("render", "--split", layer, IMAGE_EXTS)) return 1;
+        if (output_path_check("render", "--split", layer, IMG_EXTENSIONS)) return 1;
         if (!a->variance) continue;
         render_files_layer_path(layer, sizeof layer, a->variance, k);
-        if (output_path_check("render", "--split --variance", layer, PFM_EXT)) return 1;
+        if (output_path_check("render", "--split --variance", layer, IMG_PFM_EXTENSION)) return 1;
     }
     if (a->variance && img_format_of(a->variance) != IMG_PFM) {
         fprintf(stderr, "pathlab render: --variance %s: the variance is written as .pfm\n", a->variance);
         return 1;
     }
-    if (a->variance && output_path_check("render", "--variance", a->variance, PFM_EXT)) return 1;
+    if (a->variance && output_path_check("render", "--variance", a->variance, IMG_PFM_EXTENSION)) return 1;
     if (a->sample_count && output_path_check("render", "--sample-count", a->sample_count, NULL)) return 1;   /* .pfm: render_adaptive_check */
     if (a->write_view && output_path_check("render", "--write-view", a->write_view, NULL)) return 1;
     if ((a->variance && !strcmp(a->variance, a->out)) || (a->sample_count && !strcmp(a->sample_count, a->out))

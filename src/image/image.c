@@ -522,6 +522,9 @@ static int same_ignoring_case(const char *a, const char *b)
     return *a == *b;
 }
 
+const char *const IMG_EXTENSIONS[] = {".pfm", ".ppm", ".png", NULL};
+const char *const IMG_PFM_EXTENSION[] = {".pfm", NULL};
+
 img_format img_format_of(const char *path)
 {
     const char *e = img_extension(path);

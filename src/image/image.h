@@ -15,6 +15,10 @@ void img_free(image *im);
  * extension or none. img_extension: ".pfm" of "dir/x.pfm" (dot included), "" without one. */
 typedef enum { IMG_UNKNOWN, IMG_PFM, IMG_PPM, IMG_PNG } img_format;
 img_format img_format_of(const char *path);
+/* The extensions of those formats, NULL-terminated, for output_path_check: every image format, or
+ * PFM alone (the files that carry values: variances, layers, sample counts). */
+extern const char *const IMG_EXTENSIONS[];
+extern const char *const IMG_PFM_EXTENSION[];
 const char *img_extension(const char *path);
 /* Writes by extension (img_format_of); prints "path: reason" on stderr and returns nonzero on error. */
 int img_write(const image *im, const char *path, float exposure);

@@ -4,6 +4,10 @@
 #ifndef PATHLAB_OUTPUT_PATH_H
 #define PATHLAB_OUTPUT_PATH_H
 
+/* The size of every path buffer: PATH_MAX (4096) and room for the suffixes pathlab adds to a name
+ * (FILE_L12.pfm.meta, NAME.tmp.XXXXXX); a longer path is refused where it is built (snprintf). */
+#define PATH_CAP 4352
+
 /* path, given as `flag` to `cmd` ("render", "-o"): 0 if it can be written, else 1 after printing
  * "pathlab CMD: FLAG PATH: why". exts: the extensions allowed, lower case with their dot, ending with
  * NULL (compared without case: .PFM is .pfm); NULL for any. */

@@ -10,6 +10,7 @@ void mesh_free(mesh *m)
     free(m->tri);
     free(m->tri_mat);
     free(m->mats);
+    free(m->mat_slots);
     memset(m, 0, sizeof *m); /* a second mesh_free, or a look at the counts, stays harmless */
 }
 

@@ -22,6 +22,10 @@ typedef struct {
     int ntris;
     material *mats;     /* mats[0] is the default diffuse material for faces without usemtl */
     int nmats;
+    int mats_cap;       /* the room of mats (0: exactly nmats, as a mesh made by hand) */
+    int *mat_slots;     /* the materials by name (mtl.c): a hash table of indices into mats, -1 empty */
+    int nslots;         /* its size, a power of two (0: none yet) */
+    int mats_indexed;   /* mats[0 .. mats_indexed - 1] are in it */
     int ndegenerate;    /* triangles of zero area dropped at load time */
     int nnormals, ntexcoords; /* vn / vt lines read (validated, not used for shading) */
 } mesh;

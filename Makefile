@@ -45,7 +45,19 @@ SRC = $(wildcard src/*/*.c)
 # them into char arrays in $(BUILD)/gen/web_assets.c, linked like any other object.
 WEB = web/viewer.js web/viewer.css
 GEN_OBJ = $(BUILD)/gen/web_assets.o
-OBJ = $(SRC:src/%.c=$(BUILD)/%.o) $(GEN_OBJ)
+# Run-time ISA dispatch (x86-64, every build but NATIVE=1): the BVH traversal, most of a render's
+# time, is compiled three times, for SSE2 (any x86-64), AVX2 + FMA and AVX-512, and each tree uses
+# the best copy the CPU runs (geometry/bvh.h, bvh_isa; --isa forces one). The copies compute the
+# same floats (ISO C: no contraction into FMA), so every copy gives the same image.
+ifneq ($(NATIVE),1)
+ifneq ($(filter x86_64%,$(shell $(CC) -dumpmachine)),)
+DEFS += -DBVH_DISPATCH
+ISA_OBJ = $(BUILD)/geometry/bvh_traverse_avx2.o $(BUILD)/geometry/bvh_traverse_avx512.o
+endif
+endif
+ISA_FLAGS_avx2 = -mavx2 -mfma
+ISA_FLAGS_avx512 = -mavx2 -mfma -mavx512f -mavx512vl -mavx512bw -mavx512dq
+OBJ = $(SRC:src/%.c=$(BUILD)/%.o) $(ISA_OBJ) $(GEN_OBJ)
 LIB_OBJ = $(filter-out $(BUILD)/cmd/main.o,$(OBJ))
 TEST_SRC = $(wildcard tests/test_*.c)
 TEST_BIN = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
@@ -58,6 +70,10 @@ $(PROG): $(OBJ)
 $(BUILD)/%.o: src/%.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(DEPFLAGS) -c -o $@ $<
+
+$(ISA_OBJ): $(BUILD)/geometry/bvh_traverse_%.o: src/geometry/bvh_traverse.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) $(ISA_FLAGS_$*) -DBVH_ISA=$* -DBVH_ISA_COPY $(DEPFLAGS) -c -o $@ $<
 
 $(BUILD)/embed: tools/embed.c
 	@mkdir -p $(dir $@)

@@ -499,6 +499,47 @@ static void test_big_array(void)
     check(big_array((size_t)-1 / 16 + 1, 16, 64) == NULL, "big_array_overflow", "n * size past SIZE_MAX gives NULL");
 }
 
+/* ---- Instruction sets ------------------------------------------------------------------------
+ * The traversal is compiled for SSE2, AVX2 + FMA and AVX-512 (x86-64; bvh_isa): every copy this CPU
+ * runs must give the very same hits as the base copy, bit for bit (t, u, v, triangle, occlusion),
+ * or images would depend on the machine. */
+static void test_isa(void)
+{
+    static const char *const names[] = {"avx512", "avx2", "sse2", "portable"};
+    const char *base = bvh_isa_force("sse2") == 0 ? "sse2" : "portable";
+    char all[128];
+    int k, kind;
+    bvh_isa_force(NULL);
+    bvh_isa_names(all, sizeof all);
+    check(bvh_isa_force("no-such-isa") == -1, "isa_unknown_refused", "compiled in: %s; in use: %s", all, bvh_isa());
+    for (k = 0; k < 4; k++) {
+        int bad = 0, rays = 0, hits = 0;
+        char name[64];
+        if (!strcmp(names[k], base) || bvh_isa_force(names[k]) != 0) continue;
+        for (kind = 0; kind < NKINDS; kind++) {
+            soup s = {0};
+            bvh *bx, *b0;
+            int i;
+            make_soup(&s, kind, 1000);
+            bvh_isa_force(names[k]); bx = bvh_build(s.P, s.tri, s.ntris, 2);
+            bvh_isa_force(base); b0 = bvh_build(s.P, s.tri, s.ntris, 2);
+            for (i = 0; bx && b0 && i < (quick ? 300 : 2000); i++) {
+                ray r = i % 2 ? random_ray(1.5f) : ray_in_box_plane(&s);
+                hit hx, h0;
+                int ix = bvh_intersect(bx, &r, &hx), i0 = bvh_intersect(b0, &r, &h0);
+                rays++, hits += i0;
+                bad += ix != i0 || hx.tri != h0.tri || (i0 && memcmp(&hx, &h0, sizeof hx) != 0) ||
+                       bvh_occluded(bx, &r) != bvh_occluded(b0, &r);
+            }
+            if (!bx || !b0) bad++;
+            bvh_free(bx), bvh_free(b0), soup_free(&s);
+        }
+        snprintf(name, sizeof name, "isa_%s_same_hits_as_%s", names[k], base);
+        check(bad == 0, name, "%d of %d rays differ (%d hits), %d kinds of soup", bad, rays, hits, NKINDS);
+    }
+    bvh_isa_force(NULL);
+}
+
 int main(void)
 {
     static const int sizes[] = {1, 2, 5, 17, 100, 1000, 20000};
@@ -517,5 +558,6 @@ int main(void)
     test_offset();
     test_offset_formula();
     test_big_array();
+    test_isa();
     return check_summary();
 }

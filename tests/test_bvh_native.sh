@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The BVH as `make bench` builds it: tests/test_bvh compiled with -march=native (asserts on). On a CPU
 # with AVX-512 that build tests nodes and triangle blocks with intrinsics (node_hits_v, block_hits_v
-# in src/geometry/bvh.c), a code path the portable build of `make test` never compiles; the same
+# in src/geometry/bvh_traverse.c), a code path the portable build of `make test` never compiles; the same
 # hits are expected of it. Without -march=native support the file says SKIP.
 . "$(dirname "$0")/lib.sh"
 CC=${CC:-cc}
@@ -10,7 +10,7 @@ if ! echo 'int main(void) { return 0; }' | "$CC" -march=native -x c -o "$TMP/pro
 fi
 if "$CC" -march=native -dM -E -x c /dev/null | grep -q '__AVX512VL__'; then path="AVX-512 intrinsics"; else path="portable loops (no AVX-512 here)"; fi
 if ! "$CC" -std=c99 -Wall -Wextra -pedantic -Werror -D_POSIX_C_SOURCE=200809L -O2 -march=native -Isrc -Itests \
-        -o "$TMP/test_bvh" tests/test_bvh.c src/geometry/bvh.c src/geometry/ray.c src/sys/big_array.c src/sys/parallel.c \
+        -o "$TMP/test_bvh" tests/test_bvh.c src/geometry/bvh.c src/geometry/bvh_traverse.c src/geometry/ray.c src/sys/big_array.c src/sys/parallel.c \
         -lm -lpthread 2> "$TMP/cc"; then
     fail "test_bvh with -march=native: does not compile without warnings: $(head -c 400 "$TMP/cc")"; exit 0
 fi

@@ -22,8 +22,12 @@
  *     instructions of one loop the compiler vectorizes, and a block its 8 triangles likewise: that
  *     is what makes single rays fast without intrinsics, and the wide nodes make the tree shallow,
  *     which matters most for incoherent rays in big meshes.
- *     With AVX-512 (a -march=native build) the same tests are written with intrinsics, whose masks
- *     and compress instructions the compiler does not find (node_hits_v, block_hits_v).
+ *     With AVX-512 the same tests are written with intrinsics, whose masks and compress
+ *     instructions the compiler does not find (node_hits_v, block_hits_v in bvh_traverse.c).
+ *
+ * The traversal lives in bvh_traverse.c, compiled once per instruction set on x86-64 (SSE2, AVX2 +
+ * FMA, AVX-512): each tree gets the best copy the CPU runs (bvh_isa), and every copy finds the
+ * same hits, so the one binary of `make` is fast on any x86-64 and its images never depend on it.
  *
  * How it is traversed: one loop with an explicit stack. At a node, the children the ray enters are
  * sorted by entry distance: the nearest is visited next, the others pushed farthest first. Popped
@@ -33,6 +37,7 @@
  * conservative (pbrt's 1 + 2 gamma(3) on exit distances, folded into the 1/d they use), so no ray slips between two triangles
  * sharing an edge or a vertex, and a box never hides a triangle the triangle test would report. */
 #include "geometry/bvh.h"
+#include "geometry/bvh_layout.h"
 #include "sys/big_array.h"
 #include "sys/parallel.h"
 #include <assert.h>
@@ -40,63 +45,9 @@
 #include <limits.h>
 #include <stddef.h>
 #include <pthread.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-/* A -march=native build on a CPU with AVX-512 tests nodes with intrinsics (see node_hits_v);
- * -DBVH_NO_AVX512 keeps the portable loops there too, to compare them. */
-#if defined(__AVX512F__) && defined(__AVX512VL__) && !defined(BVH_NO_AVX512)
-#define BVH_AVX512 1
-#include <immintrin.h>
-#endif
-
-/* Every product and sum must be rounded on its own: an edge function computed as a fused multiply-
- * add would differ between the two triangles sharing that edge, and rays could slip through.
- * GCC in ISO C mode (-std=c99) contracts nothing; clang needs telling (GCC warns on the pragma). */
-#if defined(__clang__)
-#pragma STDC FP_CONTRACT OFF
-#endif
-
-/* Tuning constants. */
-#define BVH_BINS 16            /* SAH bins per axis (fewer for nodes of fewer triangles) */
-#define BVH_WIDTH 8            /* children per node: one 256-bit vector of floats per slab row */
-#define BVH_LEAF_MAX 8         /* triangles per leaf: one block, a 256-bit vector per row (4 works too) */
-#define BVH_BINARY_LEAF 8      /* the binary tree splits nodes of more triangles than this */
-#define BVH_COST_NODE 1.0f     /* SAH cost of visiting a node ... */
-#define BVH_COST_BLOCK 1.0f    /* ... and of testing one block (as measured: alike) */
-#define BVH_SAH_DEPTH 48       /* deeper than this, split in halves: bounds the depth for the stack */
-#define BVH_PARALLEL_MIN 4096  /* a node this big may have its two subtrees built on two threads */
-#define BVH_MAX_DEPTH 80       /* binary depth <= 48 + 30 (indices < 2^30), wide depth no more */
-#define BVH_STACK (BVH_WIDTH * BVH_MAX_DEPTH) /* traversal stack: < W entries per level */
-
-/* gamma(3) = 3 eps / (1 - 3 eps) with eps = 2^-24: the relative error of (plane - o) * (1/d)
- * (pbrt 3rd ed. 3.9). Exit distances are widened by 1 + 2 gamma(3): computed as (plane - o) *
- * ((1/d) * widen), with as many roundings as pbrt's ((plane - o) * (1/d)) * widen, a multiply less
- * per node. A far plane behind the origin only gets farther behind: its box stays unentered. */
-#define BVH_BOX_WIDEN (1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f))
-/* The t of a triangle is a weighted mean of its corners' depths computed with ~10 roundings, so a
- * box entered a few ulps beyond the current closest t may still hold a triangle whose computed t is
- * smaller: boxes are culled against t widened by this much (2^-16, far more than needed). */
-#define BVH_T_WIDEN (1.0f + 0x1p-16f)
-
-/* ---- Layout ------------------------------------------------------------------------------------
- * Node, 256 bytes (four cache lines), 64-byte aligned:
- *   bytes   0..191  float box[6][8]: rows lo.x lo.y lo.z hi.x hi.y hi.z, one column per child, so the
- *                   8 children's slabs on one axis are one 32-byte vector. An empty child slot has
- *                   lo = +inf, hi = -inf, which no ray enters.
- *   bytes 192..223  int child[8]: >= 0 index of a node; < 0 a leaf, ~child = its block index.
- *   bytes 224..255  padding to the cache line.
- * Triangle block, 320 bytes, 32-byte aligned: float v[3][3][8] = corner, axis, lane (288 bytes),
- *   then int id[8], the caller's triangle indices. A leaf of fewer than 8 triangles repeats its last
- *   triangle: the copy hits at the same t and loses the tie, so it costs nothing but a lane. */
-typedef struct { float box[6][BVH_WIDTH]; int child[BVH_WIDTH]; int pad[BVH_WIDTH]; } wnode;
-typedef struct { float v[3][3][BVH_LEAF_MAX]; int id[BVH_LEAF_MAX]; } tri_block;
-
-struct bvh {
-    wnode *nodes;      /* nodes[0] is the root */
-    tri_block *blocks;
-    int root;          /* 0, or ~0 when the whole tree is one leaf (or empty: no blocks at all) */
-    int nnodes, nblocks, depth;
-};
 
 /* ---- Build, step 1: the binary tree ------------------------------------------------------------
  * Boxes have 4 lanes, the 4th unused, so that growing one is a vector min and a vector max. */
@@ -584,13 +535,78 @@ static int build_wide(bvh *b, const builder *B, const vec3 *P, const int *tri, i
     return 1;
 }
 
+/* ---- Which copy of the traversal --------------------------------------------------------------
+ * bvh_traverse.c is compiled for SSE2 (the base, any x86-64), AVX2 + FMA and AVX-512 when the
+ * Makefile defines BVH_DISPATCH (x86-64); the best one the CPU runs is chosen, or the one forced
+ * by bvh_isa_force (--isa). All give the same hits (bvh_traverse.c). */
+static const bvh_traversal *forced;   /* set before any tree is built (single-threaded start) */
+
+static const bvh_traversal *const *traversals(void)
+{
+    static const bvh_traversal *const all[] = {
+#ifdef BVH_DISPATCH
+        &bvh_traversal_avx512, &bvh_traversal_avx2,
+#endif
+        &bvh_traversal_base, NULL};
+    return all;
+}
+
+static int cpu_runs(const bvh_traversal *t)
+{
+#ifdef BVH_DISPATCH
+    if (t == &bvh_traversal_avx512)
+        return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+               __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512dq");
+    if (t == &bvh_traversal_avx2) return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+#endif
+    (void)t;
+    return 1;
+}
+
+const bvh_traversal *bvh_isa_traversal(void)
+{
+    const bvh_traversal *const *t = traversals();
+    if (forced) return forced;
+    while (!cpu_runs(*t)) t++;   /* the base runs everywhere: the list ends with it */
+    return *t;
+}
+
+const char *bvh_isa(void) { return bvh_isa_traversal()->name; }
+
+void bvh_isa_names(char *dst, size_t cap)
+{
+    const bvh_traversal *const *t;
+    size_t n = 0;
+    if (cap) dst[0] = '\0';
+    for (t = traversals(); *t && n < cap; t++)
+        n += (size_t)snprintf(dst + n, cap - n, "%s%s%s", n ? ", " : "", (*t)->name, cpu_runs(*t) ? "" : " (not on this CPU)");
+}
+
+int bvh_isa_force(const char *name)
+{
+    const bvh_traversal *const *t;
+    if (!name) { forced = NULL; return 0; }
+    for (t = traversals(); *t; t++)
+        if (!strcmp((*t)->name, name)) {
+            if (!cpu_runs(*t)) return -2;
+            forced = *t;
+            return 0;
+        }
+    return -1;
+}
+
+int bvh_intersect(const bvh *b, const ray *r, hit *h) { return b->trav->intersect(b, r, h); }
+int bvh_occluded(const bvh *b, const ray *r) { return b->trav->occluded(b, r); }
+
 bvh *bvh_build(const vec3 *P, const int *tri, int ntris, int threads)
 {
     builder B;
     bvh *b = calloc(1, sizeof *b);
     int ok, leaves;
     B.refs = NULL; B.nodes = NULL; B.sub = NULL;   /* build_binary sets up the rest */
-    if (!b || ntris == 0) return b;             /* an empty bvh: every ray misses */
+    if (!b) return NULL;
+    b->trav = bvh_isa_traversal();
+    if (ntris == 0) return b;                   /* an empty bvh: every ray misses */
     if (ntris < 0 || ntris > INT_MAX / 2) { free(b); return NULL; }
     /* a small mesh builds faster than a thread starts (a loaded machine took 5-33 ms to start the
      * two parallel passes' threads for the Cornell box's 38 triangles, against 0 ms on one thread) */
@@ -617,452 +633,4 @@ void bvh_stats(const bvh *b, int *nodes, int *leaves, int *depth)
     if (nodes) *nodes = b->nnodes;
     if (leaves) *leaves = b->nblocks;
     if (depth) *depth = b->depth;
-}
-
-/* GCC fully unrolls a short loop nested in the traversal loop before its vectorizer sees it, and
- * then fails to vectorize the straight-line code: keep the lane loops rolled. */
-#if defined(__GNUC__) && !defined(__clang__)
-#define LANE_LOOP _Pragma("GCC unroll 1")
-#else
-#define LANE_LOOP
-#endif
-
-/* ---- Traversal ---------------------------------------------------------------------------------
- * The loops over the lanes of a node or a block are written for the vectorizer: restrict pointers,
- * per-ray values in locals, no branch inside, one mask bit per lane at the end. The per-ray values
- * live in a ray_pre whose address never leaves the traversal, so that they stay in registers. */
-#ifdef BVH_AVX512   /* a block's lanes are one vector: L_(op) names the intrinsic of its width */
-#if BVH_LEAF_MAX == 8
-typedef __m256 lanes;
-#define L_(op) _mm256_##op
-#else
-typedef __m128 lanes;
-#define L_(op) _mm_##op
-#endif
-#endif
-typedef struct {
-    float o[3], inv[3];
-    float inv_far[3];      /* inv widened by BVH_BOX_WIDEN, for the exit distances */
-    ptrdiff_t near[3], far[3]; /* byte offsets in a wnode of the rows with each axis' entry and exit
-                                  planes (pointer-sized: no sign extension per node) */
-    int kx, ky, kz;        /* watertight test: kz the dominant axis of d, kx ky the others */
-    float Sx, Sy, Sz;      /* shear that maps d to (0, 0, 1) */
-#ifdef BVH_AVX512
-    lanes bo[3], bS[3];        /* o[kx], o[ky], o[kz] and Sx, Sy, Sz broadcast once per ray for block_hits_v */
-#endif
-} ray_pre;
-
-/* The watertight test's axes without a branch (a diffuse ray's direction is random, so branches
- * on it mispredict): kz the axis of the largest |d|, as "ax > ay ? (ax > az ? 0 : 2) : (ay > az ?
- * 1 : 2)", indexed by those three comparisons; kx follows kz, or precedes it when d[kz] < 0 (the
- * swap that keeps the winding), and ky is the third axis. */
-static const unsigned char KZ_OF[8] = {2, 2, 2, 0, 1, 2, 1, 0}, KX_OF[6] = {1, 2, 0, 2, 0, 1};
-
-static inline void ray_prepare(const ray *r, ray_pre *restrict p)
-{
-    float o[3] = {r->o.x, r->o.y, r->o.z}, d[3] = {r->d.x, r->d.y, r->d.z};
-    float ax = fabsf(d[0]), ay = fabsf(d[1]), az = fabsf(d[2]);
-    int a, kx, ky, kz;
-    for (a = 0; a < 3; a++) {
-        int lo_row = a, hi_row = 3 + a;
-        p->o[a] = o[a];
-        p->inv[a] = 1.0f / d[a];               /* +-inf for a zero component: the slab is NaN-safe */
-        p->inv_far[a] = p->inv[a] * BVH_BOX_WIDEN;
-        p->near[a] = (ptrdiff_t)(sizeof(float) * BVH_WIDTH) * (signbit(d[a]) ? hi_row : lo_row);
-        p->far[a] = (ptrdiff_t)(sizeof(float) * BVH_WIDTH) * (signbit(d[a]) ? lo_row : hi_row);
-    }
-    kz = KZ_OF[(ax > ay) | (ax > az) << 1 | (ay > az) << 2];
-    kx = KX_OF[kz + 3 * (d[kz] < 0)];
-    ky = 3 - kx - kz;
-    p->kx = kx; p->ky = ky; p->kz = kz;
-    p->Sx = d[kx] / d[kz];
-    p->Sy = d[ky] / d[kz];
-    p->Sz = p->inv[kz];                        /* 1 / d[kz], computed once */
-#ifdef BVH_AVX512
-    p->bo[0] = L_(set1_ps)(o[kx]); p->bo[1] = L_(set1_ps)(o[ky]); p->bo[2] = L_(set1_ps)(o[kz]);
-    p->bS[0] = L_(set1_ps)(p->Sx); p->bS[1] = L_(set1_ps)(p->Sy); p->bS[2] = L_(set1_ps)(p->Sz);
-#endif
-}
-
-static inline const float *row(const wnode *n, ptrdiff_t offset) { return (const float *)((const char *)n + offset); }
-
-#ifndef BVH_AVX512   /* the portable tests; with AVX-512, node_hits_v and block_hits_v */
-/* Slab test of the children: dist[i] = entry distance, returns a bit per child entered before
- * tmax. A NaN from 0 * inf (origin on a slab plane, direction parallel to it) fails the comparisons
- * "t > tnear" and "t < tfar" and so leaves the interval as it was: the ray counts as inside. */
-static inline unsigned node_hits(const wnode *restrict n, const ray_pre *restrict p, float tmax, float *restrict dist)
-{
-    const float *nx = row(n, p->near[0]), *ny = row(n, p->near[1]), *nz = row(n, p->near[2]);
-    const float *fx = row(n, p->far[0]), *fy = row(n, p->far[1]), *fz = row(n, p->far[2]);
-    const float ox = p->o[0], oy = p->o[1], oz = p->o[2], ix = p->inv[0], iy = p->inv[1], iz = p->inv[2];
-    const float jx = p->inv_far[0], jy = p->inv_far[1], jz = p->inv_far[2];
-    unsigned mask = 0;
-    int i;
-    LANE_LOOP
-    for (i = 0; i < BVH_WIDTH; i++) {
-        float tnx = (nx[i] - ox) * ix, tny = (ny[i] - oy) * iy, tnz = (nz[i] - oz) * iz;
-        float tfx = (fx[i] - ox) * jx, tfy = (fy[i] - oy) * jy, tfz = (fz[i] - oz) * jz;
-        float t0 = 0.0f, t1 = INFINITY;
-        t0 = tnx > t0 ? tnx : t0; t0 = tny > t0 ? tny : t0; t0 = tnz > t0 ? tnz : t0;
-        t1 = tfx < t1 ? tfx : t1; t1 = tfy < t1 ? tfy : t1; t1 = tfz < t1 ? tfz : t1;
-        t1 = tmax < t1 ? tmax : t1;
-        dist[i] = t0;
-        mask |= (unsigned)(t0 <= t1) << i;
-    }
-    return mask;
-}
-#endif
-
-/* The watertight test (Woop, Benthin, Wald 2013) on the lanes of a block:
- *  1. shear the corners so that the ray is the +z axis and take the 2D edge functions U, V, W
- *     (twice the signed areas of the ray's foot with each edge): the ray is inside when they have
- *     one sign (either winding);
- *  2. t = T / det, a weighted mean of the corners' sheared depths, must lie in (0, tmax);
- *  3. an edge function exactly 0 in float may be a tiny value of either sign, rounded: such lanes
- *     are decided again with the products in double, where they are exact (redo_edge_lanes).
- * A nonzero float edge function already has the right sign (rounding is monotonic), so step 3 is
- * needed only for lanes that step 1 finds inside. */
-typedef struct { float t[BVH_LEAF_MAX], u[BVH_LEAF_MAX], v[BVH_LEAF_MAX]; } lane_hits;
-
-#ifndef BVH_AVX512
-static inline unsigned block_hits_float(const tri_block *restrict blk, const ray_pre *restrict p, float tmax,
-                                        lane_hits *restrict h, unsigned *restrict edge)
-{
-    const float *a_x = blk->v[0][p->kx], *a_y = blk->v[0][p->ky], *a_z = blk->v[0][p->kz];
-    const float *b_x = blk->v[1][p->kx], *b_y = blk->v[1][p->ky], *b_z = blk->v[1][p->kz];
-    const float *c_x = blk->v[2][p->kx], *c_y = blk->v[2][p->ky], *c_z = blk->v[2][p->kz];
-    const float ox = p->o[p->kx], oy = p->o[p->ky], oz = p->o[p->kz], Sx = p->Sx, Sy = p->Sy, Sz = p->Sz;
-    float U[BVH_LEAF_MAX], V[BVH_LEAF_MAX], W[BVH_LEAF_MAX], az[BVH_LEAF_MAX], bz[BVH_LEAF_MAX], cz[BVH_LEAF_MAX];
-    unsigned inside = 0, mask = 0, zero = 0;
-    int i;
-    LANE_LOOP
-    for (i = 0; i < BVH_LEAF_MAX; i++) {   /* steps 1 and 3: which lanes the ray passes inside */
-        float ax, ay, bx, by, cx, cy;
-        int neg, pos, in;
-        az[i] = a_z[i] - oz; bz[i] = b_z[i] - oz; cz[i] = c_z[i] - oz;
-        ax = (a_x[i] - ox) - Sx * az[i]; ay = (a_y[i] - oy) - Sy * az[i];
-        bx = (b_x[i] - ox) - Sx * bz[i]; by = (b_y[i] - oy) - Sy * bz[i];
-        cx = (c_x[i] - ox) - Sx * cz[i]; cy = (c_y[i] - oy) - Sy * cz[i];
-        U[i] = cx * by - cy * bx; V[i] = ax * cy - ay * cx; W[i] = bx * ay - by * ax;
-        neg = (U[i] < 0.0f) | (V[i] < 0.0f) | (W[i] < 0.0f); pos = (U[i] > 0.0f) | (V[i] > 0.0f) | (W[i] > 0.0f);
-        in = !(neg & pos);
-        inside |= (unsigned)in << i;
-        zero |= (unsigned)(in & ((U[i] == 0.0f) | (V[i] == 0.0f) | (W[i] == 0.0f))) << i;
-    }
-    *edge = zero;
-    if (!inside) return 0;            /* the usual case: no division */
-    LANE_LOOP
-    for (i = 0; i < BVH_LEAF_MAX; i++) {   /* step 2 */
-        float det = U[i] + V[i] + W[i], T = U[i] * (Sz * az[i]) + V[i] * (Sz * bz[i]) + W[i] * (Sz * cz[i]);
-        float rcp = 1.0f / det;       /* det == 0 gives inf or NaN: t fails the tests below */
-        h->t[i] = T * rcp; h->u[i] = V[i] * rcp; h->v[i] = W[i] * rcp;
-        mask |= (unsigned)((det != 0.0f) & (h->t[i] > 0.0f) & (h->t[i] < tmax)) << i;
-    }
-    return mask & inside;
-}
-#endif
-
-#ifdef BVH_AVX512
-/* block_hits_float with intrinsics: the same operations in the same order (see node_hits_v), on
- * one vector of BVH_LEAF_MAX lanes (lanes, L_). */
-static inline lanes lane_row(const tri_block *blk, int corner, int axis) { return L_(load_ps)(blk->v[corner][axis]); }
-
-static inline unsigned block_hits_v(const tri_block *restrict blk, const ray_pre *restrict p, float tmax,
-                                    lane_hits *restrict h, unsigned *restrict edge)
-{
-    const lanes ox = p->bo[0], oy = p->bo[1], oz = p->bo[2];
-    const lanes Sx = p->bS[0], Sy = p->bS[1], Sz = p->bS[2], zero = L_(setzero_ps)();
-    lanes az = L_(sub_ps)(lane_row(blk, 0, p->kz), oz), bz = L_(sub_ps)(lane_row(blk, 1, p->kz), oz);
-    lanes cz = L_(sub_ps)(lane_row(blk, 2, p->kz), oz);
-    lanes ax = L_(sub_ps)(L_(sub_ps)(lane_row(blk, 0, p->kx), ox), L_(mul_ps)(Sx, az));
-    lanes ay = L_(sub_ps)(L_(sub_ps)(lane_row(blk, 0, p->ky), oy), L_(mul_ps)(Sy, az));
-    lanes bx = L_(sub_ps)(L_(sub_ps)(lane_row(blk, 1, p->kx), ox), L_(mul_ps)(Sx, bz));
-    lanes by = L_(sub_ps)(L_(sub_ps)(lane_row(blk, 1, p->ky), oy), L_(mul_ps)(Sy, bz));
-    lanes cx = L_(sub_ps)(L_(sub_ps)(lane_row(blk, 2, p->kx), ox), L_(mul_ps)(Sx, cz));
-    lanes cy = L_(sub_ps)(L_(sub_ps)(lane_row(blk, 2, p->ky), oy), L_(mul_ps)(Sy, cz));
-    lanes U = L_(sub_ps)(L_(mul_ps)(cx, by), L_(mul_ps)(cy, bx));
-    lanes V = L_(sub_ps)(L_(mul_ps)(ax, cy), L_(mul_ps)(ay, cx));
-    lanes W = L_(sub_ps)(L_(mul_ps)(bx, ay), L_(mul_ps)(by, ax));
-    lanes det, T, rcp, t;
-    unsigned neg = L_(cmp_ps_mask)(U, zero, _CMP_LT_OQ) | L_(cmp_ps_mask)(V, zero, _CMP_LT_OQ) | L_(cmp_ps_mask)(W, zero, _CMP_LT_OQ);
-    unsigned pos = L_(cmp_ps_mask)(U, zero, _CMP_GT_OQ) | L_(cmp_ps_mask)(V, zero, _CMP_GT_OQ) | L_(cmp_ps_mask)(W, zero, _CMP_GT_OQ);
-    unsigned inside = ~(neg & pos) & ((1u << BVH_LEAF_MAX) - 1), mask;
-    *edge = inside & (L_(cmp_ps_mask)(U, zero, _CMP_EQ_OQ) | L_(cmp_ps_mask)(V, zero, _CMP_EQ_OQ) |
-                      L_(cmp_ps_mask)(W, zero, _CMP_EQ_OQ));
-    if (!inside) return 0;
-    det = L_(add_ps)(L_(add_ps)(U, V), W);
-    T = L_(add_ps)(L_(add_ps)(L_(mul_ps)(U, L_(mul_ps)(Sz, az)), L_(mul_ps)(V, L_(mul_ps)(Sz, bz))),
-                   L_(mul_ps)(W, L_(mul_ps)(Sz, cz)));
-    rcp = L_(div_ps)(L_(set1_ps)(1.0f), det);
-    t = L_(mul_ps)(T, rcp);
-    L_(storeu_ps)(h->t, t); L_(storeu_ps)(h->u, L_(mul_ps)(V, rcp)); L_(storeu_ps)(h->v, L_(mul_ps)(W, rcp));
-    mask = L_(cmp_ps_mask)(det, zero, _CMP_NEQ_UQ) & L_(cmp_ps_mask)(t, zero, _CMP_GT_OQ) &
-           L_(cmp_ps_mask)(t, L_(set1_ps)(tmax), _CMP_LT_OQ);
-    return mask & inside;
-}
-#define block_hits_float block_hits_v
-#endif
-
-/* Step 3 for one lane, in scalar code: the same float shear, then U, V, W from exact products. */
-static int lane_hit_exact(const tri_block *blk, ray_pre p, int i, float tmax, float *t, float *u, float *v)
-{
-    float az = blk->v[0][p.kz][i] - p.o[p.kz], bz = blk->v[1][p.kz][i] - p.o[p.kz], cz = blk->v[2][p.kz][i] - p.o[p.kz];
-    double ax = (blk->v[0][p.kx][i] - p.o[p.kx]) - p.Sx * az, ay = (blk->v[0][p.ky][i] - p.o[p.ky]) - p.Sy * az;
-    double bx = (blk->v[1][p.kx][i] - p.o[p.kx]) - p.Sx * bz, by = (blk->v[1][p.ky][i] - p.o[p.ky]) - p.Sy * bz;
-    double cx = (blk->v[2][p.kx][i] - p.o[p.kx]) - p.Sx * cz, cy = (blk->v[2][p.ky][i] - p.o[p.ky]) - p.Sy * cz;
-    float U = (float)(cx * by - cy * bx), V = (float)(ax * cy - ay * cx), W = (float)(bx * ay - by * ax);
-    float det, T, rcp;
-    if ((U < 0.0f || V < 0.0f || W < 0.0f) && (U > 0.0f || V > 0.0f || W > 0.0f)) return 0;
-    det = U + V + W; T = U * (p.Sz * az) + V * (p.Sz * bz) + W * (p.Sz * cz);
-    if (det == 0.0f) return 0;
-    rcp = 1.0f / det;
-    *t = T * rcp; *u = V * rcp; *v = W * rcp;
-    return *t > 0.0f && *t < tmax;
-}
-
-static unsigned redo_edge_lanes(const tri_block *blk, ray_pre p, float tmax, unsigned mask, unsigned edge, lane_hits *h)
-{
-    int i;
-    for (i = 0; i < BVH_LEAF_MAX; i++)
-        if (edge >> i & 1) {
-            mask &= ~(1u << i);
-            mask |= (unsigned)lane_hit_exact(blk, p, i, tmax, &h->t[i], &h->u[i], &h->v[i]) << i;
-        }
-    return mask;
-}
-
-/* Returns a bit per lane of blk hit with t in (0, tmax), their t and barycentrics in h. */
-static inline unsigned block_hits(const tri_block *blk, const ray_pre *p, float tmax, lane_hits *h)
-{
-    unsigned edge, mask = block_hits_float(blk, p, tmax, h, &edge);
-    return edge ? redo_edge_lanes(blk, *p, tmax, mask, edge, h) : mask;
-}
-
-/* Index of the lowest set bit of m != 0 (a de Bruijn sequence; compilers turn it into one instruction). */
-static inline int lowest_bit(unsigned m)
-{
-    static const unsigned char index[32] = {0, 1, 28, 2, 29, 14, 24, 3, 30, 22, 20, 15, 25, 17, 4, 8,
-                                            31, 27, 13, 23, 21, 19, 16, 7, 26, 12, 18, 6, 11, 5, 10, 9};
-    return index[((m & (0u - m)) * 0x077CB531u) >> 27];
-}
-
-/* Of the children in mask (not empty), returns the nearest and pushes the others farthest first, so
- * that they come off the stack nearest first. Usually one or two children are hit.
- * Measured: a test per lane (predictable branches, and the next node stays in a register) runs
- * faster than looping over the set bits, although it executes more instructions. */
-typedef struct { int ref; float t; } entry;
-
-#ifndef BVH_AVX512
-static inline int push_near_first(const wnode *n, unsigned mask, const float dist[BVH_WIDTH], entry *stack, int *sp)
-{
-    entry e[BVH_WIDTH], x;
-    int k = 0, i, j;
-    for (i = 0; i < BVH_WIDTH; i++)
-        if (mask >> i & 1) { e[k].ref = n->child[i]; e[k].t = dist[i]; k++; }
-    if (k == 1) return e[0].ref;
-    assert(*sp + k - 1 <= BVH_STACK);   /* the tree's depth bounds it (wide_tree_valid) */
-    if (k == 2) {
-        int near = e[1].t < e[0].t;
-        stack[(*sp)++] = e[1 - near];
-        return e[near].ref;
-    }
-    for (i = 1; i < k; i++) {         /* insertion sort, farthest first */
-        x = e[i];
-        for (j = i; j > 0 && e[j - 1].t < x.t; j--) e[j] = e[j - 1];
-        e[j] = x;
-    }
-    for (j = 0; j < k - 1; j++) stack[(*sp)++] = e[j];
-    return e[k - 1].ref;
-}
-#endif
-
-#ifdef BVH_AVX512
-/* With AVX-512, nodes (and blocks, block_hits_v) are tested with intrinsics: the same operations
- * in the same order as node_hits (so the same children are entered at the same distances and every
- * hit is the same), but the hit mask comes out of one compare into a mask register instead of eight
- * bits ORed together, and closest-hit rays pack the children hit with one compress instead of a
- * branch per lane, which mispredicts on incoherent rays. Measured (docs/performance.md, issue 12
- * item 4): dragon diffuse rays 1.2x faster, shadow 1.1x. Shadow rays keep the branch per lane:
- * with the compress they were 0.91x. */
-typedef struct { __m256 o[3], inv[3], inv_far[3]; } ray_vec;
-
-static inline ray_vec ray_vectors(const ray_pre *p)
-{
-    ray_vec v;
-    int a;
-    for (a = 0; a < 3; a++) {
-        v.o[a] = _mm256_set1_ps(p->o[a]); v.inv[a] = _mm256_set1_ps(p->inv[a]); v.inv_far[a] = _mm256_set1_ps(p->inv_far[a]);
-    }
-    return v;
-}
-
-static inline __m256 slab(const wnode *n, ptrdiff_t offset, __m256 o, __m256 inv)
-{
-    return _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(row(n, offset)), o), inv);
-}
-
-/* node_hits, vectorized by hand: *dist gets the entry distances. */
-static inline unsigned node_hits_v(const wnode *n, const ray_pre *p, const ray_vec *v, float tmax, __m256 *dist)
-{
-    __m256 t0 = _mm256_setzero_ps(), t1 = _mm256_set1_ps(INFINITY);
-    /* the child indices sit in the node's 4th cache line, read only once the mask is known: ask for
-     * that line now, alongside the box rows (dragon diffuse +1-4 % in 4 A/B runs, bunny equal) */
-    _mm_prefetch((const char *)n->child, _MM_HINT_T0);
-    t0 = _mm256_max_ps(slab(n, p->near[0], v->o[0], v->inv[0]), t0);   /* max(a, b) = a > b ? a : b */
-    t0 = _mm256_max_ps(slab(n, p->near[1], v->o[1], v->inv[1]), t0);
-    t0 = _mm256_max_ps(slab(n, p->near[2], v->o[2], v->inv[2]), t0);
-    t1 = _mm256_min_ps(slab(n, p->far[0], v->o[0], v->inv_far[0]), t1);    /* min(a, b) = a < b ? a : b */
-    t1 = _mm256_min_ps(slab(n, p->far[1], v->o[1], v->inv_far[1]), t1);
-    t1 = _mm256_min_ps(slab(n, p->far[2], v->o[2], v->inv_far[2]), t1);
-    t1 = _mm256_min_ps(_mm256_set1_ps(tmax), t1);
-    *dist = t0;
-    return _mm256_cmp_ps_mask(t0, t1, _CMP_LE_OQ);
-}
-
-/* push_near_first on packed lanes: the same order (lane order kept, the same insertion sort). */
-static inline int push_near_first_v(const wnode *n, unsigned mask, __m256 dist, entry *stack, int *sp)
-{
-    float t[BVH_WIDTH];
-    int r[BVH_WIDTH], k, i, j;
-    unsigned rest = mask & (mask - 1);
-    if (!rest) return n->child[__builtin_ctz(mask)];
-    if (!(rest & (rest - 1))) {       /* two children: no compress */
-        int a = __builtin_ctz(mask), c = __builtin_ctz(rest), near;
-        _mm256_storeu_ps(t, dist);
-        near = t[c] < t[a];
-        assert(*sp + 1 <= BVH_STACK);
-        stack[*sp].ref = n->child[near ? a : c]; stack[*sp].t = t[near ? a : c]; (*sp)++;
-        return n->child[near ? c : a];
-    }
-    _mm256_storeu_ps(t, _mm256_maskz_compress_ps((__mmask8)mask, dist));
-    _mm256_storeu_si256((__m256i *)r, _mm256_maskz_compress_epi32((__mmask8)mask,
-                                                                  _mm256_load_si256((const __m256i *)n->child)));
-    k = __builtin_popcount(mask);
-    assert(*sp + k - 1 <= BVH_STACK);
-    if (k == 2) {
-        int near = t[1] < t[0];
-        stack[*sp].ref = r[1 - near]; stack[*sp].t = t[1 - near]; (*sp)++;
-        return r[near];
-    }
-    for (i = 1; i < k; i++) {
-        float xt = t[i];
-        int xr = r[i];
-        for (j = i; j > 0 && t[j - 1] < xt; j--) { t[j] = t[j - 1]; r[j] = r[j - 1]; }
-        t[j] = xt; r[j] = xr;
-    }
-    for (j = 0; j < k - 1; j++) { stack[*sp].ref = r[j]; stack[*sp].t = t[j]; (*sp)++; }
-    return r[k - 1];
-}
-#endif
-
-static int ray_is_valid(const ray *r)
-{
-    float s = r->o.x + r->o.y + r->o.z + r->d.x + r->d.y + r->d.z;
-    return s - s == 0.0f && !v3_is_zero(r->d) && r->tmax > 0.0f;   /* no inf, no NaN */
-}
-
-int bvh_intersect(const bvh *b, const ray *r, hit *h)
-{
-    entry stack[BVH_STACK];
-    int sp = 0, ref = b->root, best_lane = -1;
-    float tmax = r->tmax, tcull = tmax * BVH_T_WIDEN, bu = 0, bv = 0;
-    const tri_block *best = NULL;
-    ray_pre p;
-#ifdef BVH_AVX512
-    ray_vec v;
-#endif
-    h->tri = -1;
-    if (!b->nblocks || !ray_is_valid(r)) return 0;
-    ray_prepare(r, &p);
-#ifdef BVH_AVX512
-    v = ray_vectors(&p);
-#endif
-    for (;;) {
-        if (ref >= 0) {            /* node: go on with the nearest child entered, stack the others */
-#ifdef BVH_AVX512
-            __m256 dist;
-            unsigned mask = node_hits_v(&b->nodes[ref], &p, &v, tcull, &dist);
-            if (mask) { ref = push_near_first_v(&b->nodes[ref], mask, dist, stack, &sp); continue; }
-#else
-            float dist[BVH_WIDTH];
-            unsigned mask = node_hits(&b->nodes[ref], &p, tcull, dist);
-            if (mask) { ref = push_near_first(&b->nodes[ref], mask, dist, stack, &sp); continue; }
-#endif
-        } else {                   /* leaf: keep the nearest of its triangles closer than tmax */
-            const tri_block *blk = &b->blocks[~ref];
-            lane_hits lh;
-            unsigned mask = block_hits(blk, &p, tmax, &lh);
-            for (; mask; mask &= mask - 1) {
-                int i = lowest_bit(mask);
-                if (lh.t[i] < tmax) { tmax = lh.t[i]; bu = lh.u[i]; bv = lh.v[i]; best = blk; best_lane = i; }
-            }
-            tcull = tmax * BVH_T_WIDEN;
-        }
-        do {                       /* next stacked node that may still hold a closer hit */
-            if (sp == 0) goto done;
-            --sp;
-        } while (stack[sp].t > tcull);
-        ref = stack[sp].ref;
-    }
-done:
-    if (!best) return 0;
-    h->t = tmax; h->u = bu; h->v = bv; h->tri = best->id[best_lane];
-    return 1;
-}
-
-int bvh_occluded(const bvh *b, const ray *r)
-{
-    int stack[BVH_STACK], sp = 0, ref = b->root, i;
-    float tmax = r->tmax, tcull = tmax * BVH_T_WIDEN;
-    ray_pre p;
-#ifdef BVH_AVX512
-    ray_vec v;
-#endif
-    if (!b->nblocks || !ray_is_valid(r)) return 0;
-    ray_prepare(r, &p);
-#ifdef BVH_AVX512
-    v = ray_vectors(&p);
-#endif
-    for (;;) {
-        if (ref >= 0) {            /* node: any order will do, the first hit ends the search; the
-                                      last child pushed is popped at once, from a register */
-            const wnode *n = &b->nodes[ref];
-#ifdef BVH_AVX512
-            __m256 dist;
-            unsigned mask = node_hits_v(n, &p, &v, tcull, &dist);
-            assert(sp + BVH_WIDTH <= BVH_STACK);
-            for (i = 0; i < BVH_WIDTH; i++)
-                if (mask >> i & 1) stack[sp++] = n->child[i];
-#else
-            float dist[BVH_WIDTH];
-            unsigned mask = node_hits(n, &p, tcull, dist);
-            assert(sp + BVH_WIDTH <= BVH_STACK);
-            for (i = 0; i < BVH_WIDTH; i++)
-                if (mask >> i & 1) stack[sp++] = n->child[i];
-#endif
-        } else {
-            lane_hits lh;
-            if (block_hits(&b->blocks[~ref], &p, tmax, &lh)) return 1;
-        }
-        if (sp == 0) return 0;
-        ref = stack[--sp];
-    }
-}
-
-int bvh_triangle_hit(vec3 a, vec3 b, vec3 c, const ray *r, hit *h)
-{
-    tri_block blk;
-    lane_hits lh;
-    vec3 corners[3] = {a, b, c};
-    ray_pre p;
-    int k, lane;
-    if (!ray_is_valid(r)) return 0;
-    for (k = 0; k < 3; k++)
-        for (lane = 0; lane < BVH_LEAF_MAX; lane++) {
-            blk.v[k][0][lane] = corners[k].x; blk.v[k][1][lane] = corners[k].y; blk.v[k][2][lane] = corners[k].z;
-        }
-    ray_prepare(r, &p);
-    if (!(block_hits(&blk, &p, r->tmax, &lh) & 1)) return 0;
-    h->t = lh.t[0]; h->u = lh.u[0]; h->v = lh.v[0];
-    return 1;
 }

@@ -5,6 +5,7 @@
 #ifndef PATHLAB_BVH_H
 #define PATHLAB_BVH_H
 #include "geometry/ray.h"
+#include <stddef.h>
 
 typedef struct bvh bvh;
 
@@ -19,6 +20,14 @@ int bvh_occluded(const bvh *b, const ray *r);
 /* The bvh's ray-triangle test on one triangle (a, b, c), for reference and tests: returns 1 and
  * fills h->t, h->u, h->v (not h->tri) when the ray hits it with t in (0, r->tmax). */
 int bvh_triangle_hit(vec3 a, vec3 b, vec3 c, const ray *r, hit *h);
+/* The instruction set of the traversal: on x86-64 it is compiled for SSE2, AVX2 + FMA and AVX-512,
+ * and each tree built uses the best one this CPU runs, or the one bvh_isa_force named (call it
+ * before building any tree). Every one gives the same hits. bvh_isa: the name of the one in use;
+ * bvh_isa_names: every name compiled in ("avx512, avx2, sse2", with "(not on this CPU)" where it
+ * applies); bvh_isa_force: 0, -1 if no such name, -2 if this CPU cannot run it (NULL: back to the best). */
+const char *bvh_isa(void);
+void bvh_isa_names(char *dst, size_t cap);
+int bvh_isa_force(const char *name);
 /* Node and leaf counts and depth, for the tests (test_bvh). */
 void bvh_stats(const bvh *b, int *nodes, int *leaves, int *depth);
 #endif

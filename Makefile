@@ -3,6 +3,18 @@
 # `make test SAN=clang` the same with clang, whose UBSan also checks float-cast-overflow (gcc's does
 # not); `make fuzz` runs the libFuzzer harnesses of tests/fuzz/ (docs/fuzzing.md).
 CC ?= cc
+# Parallel by default, one job per core (make -j1 for one at a time); one short line per file
+# built (V=1 shows the whole commands).
+ifeq ($(filter -j% --jobs%,$(MAKEFLAGS)),)
+MAKEFLAGS += -j$(shell nproc 2>/dev/null || echo 2)
+endif
+ifeq ($(V),1)
+  Q =
+  say =
+else
+  Q = @
+  say = @printf '  %-5s %s\n' $(1) $(2)
+endif
 WARN = -std=c99 -Wall -Wextra -pedantic -Wdeclaration-after-statement
 DEFS = -D_POSIX_C_SOURCE=200809L
 # The builds, each in its own folder: the default (portable: runs on any x86-64 or other machine
@@ -65,30 +77,37 @@ TEST_BIN = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 all: $(PROG)
 
 $(PROG): $(OBJ)
-	$(CC) $(CFLAGS) -o $@ $(OBJ) $(LDLIBS)
+	$(call say,LINK,$@)
+	$(Q)$(CC) $(CFLAGS) -o $@ $(OBJ) $(LDLIBS)
 
 $(BUILD)/%.o: src/%.c
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $(DEPFLAGS) -c -o $@ $<
+	$(call say,CC,$<)
+	$(Q)$(CC) $(CFLAGS) $(DEPFLAGS) -c -o $@ $<
 
 $(ISA_OBJ): $(BUILD)/geometry/bvh_traverse_%.o: src/geometry/bvh_traverse.c
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $(ISA_FLAGS_$*) -DBVH_ISA=$* -DBVH_ISA_COPY $(DEPFLAGS) -c -o $@ $<
+	$(call say,CC,'$< ($*)')
+	$(Q)$(CC) $(CFLAGS) $(ISA_FLAGS_$*) -DBVH_ISA=$* -DBVH_ISA_COPY $(DEPFLAGS) -c -o $@ $<
 
 $(BUILD)/embed: tools/embed.c
 	@mkdir -p $(dir $@)
-	$(CC) $(WARN) $(DEFS) -O1 -o $@ $<
+	$(call say,LINK,$@)
+	$(Q)$(CC) $(WARN) $(DEFS) -O1 -o $@ $<
 
 $(BUILD)/gen/web_assets.c: $(BUILD)/embed $(WEB)
 	@mkdir -p $(dir $@)
-	$(BUILD)/embed $@.tmp pathlab_viewer_js web/viewer.js pathlab_viewer_css web/viewer.css && mv $@.tmp $@
+	$(call say,EMBED,$@)
+	$(Q)$(BUILD)/embed $@.tmp pathlab_viewer_js web/viewer.js pathlab_viewer_css web/viewer.css && mv $@.tmp $@
 
 $(GEN_OBJ): $(BUILD)/gen/web_assets.c
-	$(CC) $(CFLAGS) -c -o $@ $<
+	$(call say,CC,$<)
+	$(Q)$(CC) $(CFLAGS) -c -o $@ $<
 
 $(BUILD)/tests/%: tests/%.c $(LIB_OBJ)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $(DEPFLAGS) -o $@ $< $(LIB_OBJ) $(LDLIBS)
+	$(call say,LINK,$@)
+	$(Q)$(CC) $(CFLAGS) $(DEPFLAGS) -o $@ $< $(LIB_OBJ) $(LDLIBS)
 
 # The git revision goes into version.o only; the stamp file changes (and rebuilds it) when the revision does.
 REVISION := $(shell git describe --always --dirty 2>/dev/null || echo unknown)
@@ -131,11 +150,13 @@ FUZZ_COMMON = tests/fuzz/fuzz_common.c
 FUZZ_DEPS = $(FUZZ_COMMON) tests/fuzz/fuzz_common.h $(wildcard src/*/*.h) $(LIB_OBJ)
 $(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(FUZZ_DEPS)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -fsanitize=fuzzer -Itests/fuzz -o $@ $< $(FUZZ_COMMON) $(LIB_OBJ) $(LDLIBS)
+	$(call say,LINK,$@)
+	$(Q)$(CC) $(CFLAGS) -fsanitize=fuzzer -Itests/fuzz -o $@ $< $(FUZZ_COMMON) $(LIB_OBJ) $(LDLIBS)
 
 $(BUILD)/fuzz/replay_%: tests/fuzz/fuzz_%.c tests/fuzz/replay.c $(FUZZ_DEPS)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -Itests/fuzz -o $@ $< tests/fuzz/replay.c $(FUZZ_COMMON) $(LIB_OBJ) $(LDLIBS)
+	$(call say,LINK,$@)
+	$(Q)$(CC) $(CFLAGS) -Itests/fuzz -o $@ $< tests/fuzz/replay.c $(FUZZ_COMMON) $(LIB_OBJ) $(LDLIBS)
 
 FUZZ_REPLAY = $(FUZZ_TARGETS:%=$(BUILD)/fuzz/replay_%)
 TOOLS = $(FUZZ_REPLAY) $(BUILD)/tests/zcheck $(BUILD)/tests/pfmtool $(BUILD)/bench-plot
@@ -218,7 +239,8 @@ test-slurm: $(PROG)
 
 # The benchmark's error, slopes, ranking and SVG (bench/plot.c), linked like the tests.
 $(BUILD)/bench-plot: bench/plot.c $(LIB_OBJ)
-	$(CC) $(CFLAGS) $(DEPFLAGS) -o $@ bench/plot.c $(LIB_OBJ) $(LDLIBS)
+	$(call say,LINK,$@)
+	$(Q)$(CC) $(CFLAGS) $(DEPFLAGS) -o $@ bench/plot.c $(LIB_OBJ) $(LDLIBS)
 
 # Coverage-guided fuzzing (docs/fuzzing.md): each harness of tests/fuzz/ built with clang, libFuzzer,
 # ASan and UBSan (float-cast-overflow included), run FUZZ_SECONDS (default 60) from its seed corpus

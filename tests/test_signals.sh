@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
-# Signals at random moments leave no temporary file and no half-set of files (issue 13, part 4).
+# Signals at random moments leave no temporary file and no half-set of files.
 # A render with --split and --variance writes 20 files (o.pfm, o_var.pfm, o_L0..3, o_var_L0..3 and
-# a .meta sidecar each) over an older complete set; it is sent SIGINT or SIGTERM after a random
+# a .meta sidecar each) over an older complete set; it is sent SIGINT, SIGTERM, SIGHUP, SIGQUIT or
+# SIGPIPE (all handled alike) after a random
 # delay of 0..300 ms (a third of the runs get a second signal 0..100 ms later: the render then
 # quits at once), 30 times; then 6 more runs are hit while they write (two signals right after the
 # stats line, 0..200 turns of a shell loop apart), and 6 runs of convert and merge after 0..30 ms. After each run:
 #  - no *.tmp.* or *.pending file is left in the folder;
 #  - the set is whole: all 20 files, each PFM the size of a complete 200x200 image, and all 10
 #    sidecars name the same seed (each run has its own), i.e. the old set or the new one, never a mix;
-#  - the exit status is 0 (finished), 130 or 143 (stopped by SIGINT or SIGTERM), nothing else.
+#  - the exit status is 0 (finished) or 128 + the signal (129 HUP, 130 INT, 131 QUIT, 141 PIPE, 143
+#    TERM), nothing else.
 # SIGKILL cannot be caught: what it leaves is printed (not a test), see src/sys/interrupt.h.
 # Random delays from $RANDOM, seeded by SIGNAL_SEED (default: the clock, printed, to replay a failure).
 . "$(dirname "$0")/lib.sh"
@@ -38,9 +40,10 @@ check_set() {   # LABEL STATUS: the folder after a run (2 processes: the machine
     # shellcheck disable=SC2086
     seeds=$(awk '/^seed / { n++; s[$2] = 1 } END { for (k in s) d++; print n "/" d }' $metas 2>/dev/null)
     [ "$seeds" = "10/1" ] || { fail "$label: seed lines in the 10 sidecars (count/distinct): $seeds: a half-set"; bad_runs=$((bad_runs + 1)); return; }
-    case $rc in 0|130|143) ;; *) fail "$label: exit status $rc"; bad_runs=$((bad_runs + 1)) ;; esac
+    case $rc in 0|129|130|131|141|143) ;; *) fail "$label: exit status $rc"; bad_runs=$((bad_runs + 1)) ;; esac
 }
-sig_name() { if [ $((RANDOM % 2)) -eq 0 ]; then echo INT; else echo TERM; fi; }
+SIGNALS=(INT TERM HUP QUIT PIPE)
+sig_name() { echo "${SIGNALS[RANDOM % 5]}"; }
 
 # 30 renders stopped at random moments (loading, rendering, writing)
 stats=""
@@ -58,7 +61,7 @@ for i in $(seq 1 30); do
     check_set "render $i (SIG$s1${second:+ then SIG$second})" "$rc"
 done
 echo "exit statuses of the 30 renders:$stats"
-[ "$bad_runs" -eq 0 ] && pass "30 renders stopped by SIGINT/SIGTERM after 0..300 ms: no temporary file, the old set or the new one"
+[ "$bad_runs" -eq 0 ] && pass "30 renders stopped by SIGINT/TERM/HUP/QUIT/PIPE after 0..300 ms: no temporary file, the old set or the new one"
 
 # 6 renders hit while writing: the first signal is taken after the render, the second quits mid-write
 bad_runs=0; written=0
@@ -86,9 +89,25 @@ for i in $(seq 1 6); do
     wait "$pid"; rc=$?
     left=("$D"/*.tmp.* "$D"/*.pending)
     [ ${#left[@]} -eq 0 ] || { fail "convert/merge $i: left behind: ${left[*]##*/}"; bad_runs=$((bad_runs + 1)); }
-    case $rc in 0|2|130|143) ;; *) fail "convert/merge $i: exit status $rc"; bad_runs=$((bad_runs + 1)) ;; esac
+    case $rc in 0|2|129|130|131|141|143) ;; *) fail "convert/merge $i: exit status $rc"; bad_runs=$((bad_runs + 1)) ;; esac
 done
 [ "$bad_runs" -eq 0 ] && pass "6 runs of convert and merge stopped after 0..30 ms: no temporary file"
+
+# SIGHUP (a closed terminal), SIGQUIT (Ctrl-\\) and SIGPIPE (a reader gone) stop a render as Ctrl-C
+# does: the pass ends, the image reached is written, its sidecar says which signal; by default each
+# would have killed pathlab at once, writing nothing.
+for s in HUP QUIT PIPE; do
+    rm -f "$D"/h.pfm*
+    $PATHLAB render scenes/cornell.obj --size 32x32 --spp 1000000 --threads 2 -o "$D/h.pfm" 2> "$TMP/err.$s" &
+    pid=$!
+    for _ in $(seq 1 1000); do grep -q 'spp' "$TMP/err.$s" 2> /dev/null && break; sleep 0.01; done
+    sleep 0.2; kill -s "$s" "$pid" 2> /dev/null; wait "$pid"; rc=$?
+    want=$((128 + $(kill -l "$s")))
+    left=("$D"/*.tmp.* "$D"/*.pending)
+    if [ "$rc" = "$want" ] && grep -q "^stopped SIG$s$" "$D/h.pfm.meta" 2> /dev/null && [ ${#left[@]} -eq 0 ]; then
+        pass "SIG$s stops a render after its pass: the image reached written, 'stopped SIG$s' in its sidecar, exit $rc"
+    else fail "SIG$s during a render: exit $rc (want $want), sidecar: $(grep stopped "$D/h.pfm.meta" 2>&1), left: ${left[*]##*/}"; fi
+done
 
 # SIGKILL cannot be caught: shown, not tested (the outputs are still the old or the new ones, renamed
 # whole; the temporary files of the moment stay)

@@ -1,7 +1,8 @@
 /* atomic_file.c — files written whole or not at all: a temporary file next to the target, renamed
  * over it only after fflush and fclose succeeded, so that a crash, a full disk or Ctrl-C never leaves a
  * half-written file and an existing file stays untouched when the write fails. The temporary name is
- * registered with interrupt.c, which removes it on a second signal. */
+ * random and created exclusively (mkstemp), and registered with interrupt.c, which removes it on a
+ * signal. */
 #include "sys/atomic_file.h"
 #include "sys/interrupt.h"
 #include <errno.h>
@@ -11,9 +12,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#define TMP_SUFFIX ".tmp.XXXXXX"
+
 /* The permissions fopen would have given the file: 0666 minus the umask. mkstemp creates files
  * 0600, which would make every image private. umask can only be read by setting it, so this is
- * not thread-safe; images are written from the main thread after rendering. */
+ * not thread-safe; files are written from the main thread. */
 static mode_t creation_mode(void)
 {
     mode_t mask = umask(022);
@@ -21,44 +24,57 @@ static mode_t creation_mode(void)
     return (mode_t)(0666 & ~mask);
 }
 
-/* Opens a temporary file next to path; *tmp receives its name (to free). NULL on error. */
-FILE *atomic_file_open(const char *path, char **tmp)
+/* The mode the new file gets: the replaced file's (a private report stays private), or fopen's.
+ * 0 after printing why when the target must not be replaced. */
+static int target_mode(const char *path, mode_t *mode)
 {
-    size_t n = strlen(path);
+    struct stat st;
+    *mode = creation_mode();
+    if (lstat(path, &st) != 0) return 1;              /* a new file */
+    if (S_ISLNK(st.st_mode)) return 1;                /* the rename replaces the link itself */
+    if (!S_ISREG(st.st_mode)) {
+        fprintf(stderr, "%s: exists and is not a regular file: not replaced\n", path);
+        return 0;
+    }
+    if (!(st.st_mode & S_IWUSR)) {
+        fprintf(stderr, "%s: is read-only: not replaced (chmod u+w it, or write elsewhere)\n", path);
+        return 0;
+    }
+    *mode = st.st_mode & 07777;
+    return 1;
+}
+
+FILE *atomic_file_create(const char *path, char *tmp, size_t cap)
+{
+    mode_t mode;
     int fd;
     FILE *f;
-    *tmp = malloc(n + sizeof ".tmp.XXXXXX");
-    if (!*tmp) {
-        fprintf(stderr, "%s: out of memory\n", path);
+    if (snprintf(tmp, cap, "%s" TMP_SUFFIX, path) >= (int)cap) {
+        fprintf(stderr, "%s: name too long\n", path);
         return NULL;
     }
-    memcpy(*tmp, path, n);
-    memcpy(*tmp + n, ".tmp.XXXXXX", sizeof ".tmp.XXXXXX");
-    interrupt_hold();   /* a second Ctrl-C must find the file registered, to remove it */
-    fd = mkstemp(*tmp);
-    if (fd >= 0) interrupt_temp_add(*tmp);
+    if (!target_mode(path, &mode)) return NULL;
+    interrupt_hold();   /* a signal must find the file registered, to remove it */
+    fd = mkstemp(tmp);
+    if (fd >= 0) interrupt_temp_add(tmp);
     interrupt_release();
     if (fd < 0) {
-        fprintf(stderr, "%s: cannot create a temporary file: %s\n", path, strerror(errno));
-        free(*tmp);
-        *tmp = NULL;
+        fprintf(stderr, "%s: cannot create a temporary file beside it: %s\n", path, strerror(errno));
         return NULL;
     }
-    if (fchmod(fd, creation_mode()) != 0 || !(f = fdopen(fd, "wb"))) {
+    if (fchmod(fd, mode) != 0 || !(f = fdopen(fd, "wb"))) {
         fprintf(stderr, "%s: cannot write: %s\n", path, strerror(errno));
         close(fd);
-        unlink(*tmp);
-        interrupt_temp_remove(*tmp);
-        free(*tmp);
-        *tmp = NULL;
+        interrupt_hold();
+        unlink(tmp);
+        interrupt_temp_remove(tmp);
+        interrupt_release();
         return NULL;
     }
     return f;
 }
 
-/* Finishes an atomic write: when ok and the data reached the file, renames tmp over path.
- * Otherwise removes tmp. Frees tmp. Returns 0 when path now holds the new file. */
-int atomic_file_close(FILE *f, char *tmp, const char *path, int ok)
+int atomic_file_commit(FILE *f, const char *tmp, const char *path, int ok)
 {
     int err = 0;
     if (ok && fflush(f) != 0) err = errno;
@@ -70,6 +86,27 @@ int atomic_file_close(FILE *f, char *tmp, const char *path, int ok)
     interrupt_temp_remove(tmp);
     interrupt_release();
     if (ok && err) fprintf(stderr, "%s: cannot write: %s\n", path, strerror(err));
-    free(tmp);
     return (ok && !err) ? 0 : 1;
+}
+
+FILE *atomic_file_open(const char *path, char **tmp)
+{
+    size_t cap = strlen(path) + sizeof TMP_SUFFIX;
+    FILE *f;
+    if (!(*tmp = malloc(cap))) {
+        fprintf(stderr, "%s: out of memory\n", path);
+        return NULL;
+    }
+    if (!(f = atomic_file_create(path, *tmp, cap))) {
+        free(*tmp);
+        *tmp = NULL;
+    }
+    return f;
+}
+
+int atomic_file_close(FILE *f, char *tmp, const char *path, int ok)
+{
+    int rc = atomic_file_commit(f, tmp, path, ok);
+    free(tmp);
+    return rc;
 }

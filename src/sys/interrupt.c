@@ -28,19 +28,30 @@ static void on_signal(int sig)
     _exit(128 + sig);
 }
 
-/* The handler for SIGINT and SIGTERM (also when the shell started pathlab with SIGINT ignored, as a
+/* The signals that end pathlab: Ctrl-C, kill, a closed terminal (SIGHUP), Ctrl-\ (SIGQUIT) and a
+ * reader gone from a pipe (SIGPIPE). Each left temporary files behind before; all take the same
+ * handler. */
+static const int ENDING_SIGNALS[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE};
+#define NSIGNALS ((int)(sizeof ENDING_SIGNALS / sizeof ENDING_SIGNALS[0]))
+
+static void ending_set(sigset_t *s)
+{
+    int i;
+    sigemptyset(s);
+    for (i = 0; i < NSIGNALS; i++) sigaddset(s, ENDING_SIGNALS[i]);
+}
+
+/* The handler for all of them (also when the shell started pathlab with SIGINT ignored, as a
  * script's background job: the tests interrupt such renders). */
 static void set_handler(void)
 {
     struct sigaction sa;
+    int i;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_signal;
-    sigemptyset(&sa.sa_mask);
-    sigaddset(&sa.sa_mask, SIGINT);   /* one handler at a time: the second waits for the first */
-    sigaddset(&sa.sa_mask, SIGTERM);
+    ending_set(&sa.sa_mask);   /* one handler at a time: a second signal waits for the first */
     sa.sa_flags = SA_RESTART;
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
+    for (i = 0; i < NSIGNALS; i++) sigaction(ENDING_SIGNALS[i], &sa, NULL);
 }
 
 void interrupt_quit_on_signal(void)
@@ -57,16 +68,24 @@ void interrupt_install(void)
 
 int interrupt_signal(void) { return first_signal; }
 
-const char *interrupt_name(int sig) { return sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : "a signal"; }
+const char *interrupt_name(int sig)
+{
+    switch (sig) {
+    case SIGINT: return "SIGINT";
+    case SIGTERM: return "SIGTERM";
+    case SIGHUP: return "SIGHUP";
+    case SIGQUIT: return "SIGQUIT";
+    case SIGPIPE: return "SIGPIPE";
+    default: return "a signal";
+    }
+}
 
 static sigset_t held;
 
 void interrupt_hold(void)
 {
     sigset_t s;
-    sigemptyset(&s);
-    sigaddset(&s, SIGINT);
-    sigaddset(&s, SIGTERM);
+    ending_set(&s);
     pthread_sigmask(SIG_BLOCK, &s, &held);
 }
 

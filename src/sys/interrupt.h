@@ -1,4 +1,4 @@
-/* interrupt.h — Ctrl-C (SIGINT) and SIGTERM. Before a render (interrupt_quit_on_signal, set by
+/* interrupt.h — Ctrl-C (SIGINT) and SIGTERM, and SIGHUP, SIGQUIT and SIGPIPE alike. Before a render (interrupt_quit_on_signal, set by
  * main for every command): pathlab stops at once, removing any temporary file being written. During
  * a render (interrupt_install): the first asks the render to stop after its current pass, so that
  * the image reached is written; the second stops at once like the first mode, writing nothing.
@@ -11,9 +11,9 @@
 /* Installs the handlers: quit at once (removing the temporary files), or the render's two steps. */
 void interrupt_quit_on_signal(void);
 void interrupt_install(void);
-/* 0, or the first signal received since interrupt_install (SIGINT or SIGTERM). */
+/* 0, or the first signal received since interrupt_install. */
 int interrupt_signal(void);
-/* The name of a signal for messages: "SIGINT", "SIGTERM". */
+/* The name of a signal for messages: "SIGINT", "SIGTERM", "SIGHUP", ... */
 const char *interrupt_name(int sig);
 
 /* A temporary file that a second signal must remove. Call interrupt_hold() before creating it,

@@ -67,7 +67,7 @@ static int known_extension(const char *cmd, const char *flag, const char *path, 
 int output_path_check(const char *cmd, const char *flag, const char *path, const char *const *exts)
 {
     struct stat st;
-    char dir[4096];
+    char dir[PATH_CAP];
     if (!path[0]) return say(cmd, flag, "''", "an empty file name");
     if (path[strlen(path) - 1] == '/' || (stat(path, &st) == 0 && S_ISDIR(st.st_mode)))
         return say(cmd, flag, path, "is a folder: give a file name");
@@ -75,6 +75,9 @@ int output_path_check(const char *cmd, const char *flag, const char *path, const
     if (folder_of(dir, sizeof dir, path)) return say(cmd, flag, path, "the name is too long");
     if (writable_folder(cmd, flag, path, dir)) return 1;
     if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) return say(cmd, flag, path, "exists and is not a regular file");
+    /* a file its owner made read-only (a teacher's reference) is not replaced, even by root */
+    if (lstat(path, &st) == 0 && S_ISREG(st.st_mode) && !(st.st_mode & S_IWUSR))
+        return say(cmd, flag, path, "is read-only: not replaced (chmod u+w it, or write elsewhere)");
     return 0;
 }
 

@@ -113,6 +113,21 @@ if [ -z "$where" ]; then fail "docs/architecture.md has no \"Where to find\" tab
 elif [ -z "$gone" ]; then pass "docs/architecture.md's \"Where to find\": every function named is in a file its row names"
 else fail "docs/architecture.md's \"Where to find\" names functions not there:$gone"; fi
 
+# 7. README's flag table gives every value list of `pathlab render --help` (--light a|b|c ...) as it is
+help=$("$PATHLAB" render --help 2>&1)
+flags=""
+if [ -z "$help" ]; then fail "could not read $PATHLAB render --help (build it first)"
+else
+    while read -r m; do
+        [ -z "$m" ] && continue
+        flag=${m%% *}
+        row=$(grep -oE "^\| \`$flag [^\`]*\`" "$ROOT/README.md" | head -n 1 | sed -E 's/^\| `//; s/`$//; s/\\\|/|/g')
+        [ "$row" = "$m" ] || flags="$flags render --help says '$m', README's table '${row:-nothing}';"
+    done < <(echo "$help" | grep -oE -- '--[a-z-]+ [a-zA-Z0-9-]+(\|[a-zA-Z0-9-]+)+')
+    if [ -z "$flags" ]; then pass "README's flag table lists the values of every flag as render --help does"
+    else fail "README's flag table differs from render --help:$flags"; fi
+fi
+
 # negative checks: the same checks on a copy of the docs with one planted violation each must fail
 # (each its own check, named by what the FAIL line says)
 if [ -z "${DOCS_ROOT:-}" ]; then
@@ -122,7 +137,7 @@ if [ -z "${DOCS_ROOT:-}" ]; then
     for f in docs/*; do case $f in *.md) ;; *) ln -s "$PWD/$f" "$R/$f" ;; esac; done
     for plant in "issue:name an issue" "branch:name a branch" "length:over 400" \
                  "count:print list is stale" "path:paths that do not exist" "link:paths that do not exist" \
-                 "arrow:arrows differ" "where:names functions not there"; do
+                 "arrow:arrows differ" "where:names functions not there" "values:differs from render --help"; do
         want=${plant#*:}; plant=${plant%%:*}
         cp README.md "$R/README.md"; cp docs/*.md "$R/docs/"   # fresh copies, then one violation
         case $plant in
@@ -134,6 +149,7 @@ if [ -z "${DOCS_ROOT:-}" ]; then
             link) echo "[the log](../bench/no_such_log.md)" >> "$R/docs/sampler.md" ;;
             arrow) sed -i -E 's/^(\| `tracer\/` .*\| )`sys\/` /\1`sys\/` `render\/` /' "$R/docs/architecture.md" ;;
             where) sed -i 's/`survives_roulette()`/`survives_the_roulette()`/' "$R/docs/architecture.md" ;;
+            values) sed -i 's/\\|solid-angle`/`/' "$R/README.md" ;;
         esac
         if DOCS_ROOT="$R" bash "$0" 2>&1 | grep '^FAIL' | grep -q "$want"; then pass "a planted violation ($plant) is caught"
         else fail "a planted violation ($plant) was not caught"; fi

@@ -113,6 +113,22 @@ if [ -z "$where" ]; then fail "docs/architecture.md has no \"Where to find\" tab
 elif [ -z "$gone" ]; then pass "docs/architecture.md's \"Where to find\": every function named is in a file its row names"
 else fail "docs/architecture.md's \"Where to find\" names functions not there:$gone"; fi
 
+# 8. a section named by title ("docs/sampler.md, \"Which default\"", "README, \"Polygons\"") exists there:
+# a heading, or a paragraph's bold lead, that contains the title
+sections=""
+for d in $(docs); do
+    while IFS= read -r m; do
+        [ -z "$m" ] && continue
+        target=${m%%[,:]*}; title=${m#*\"}; title=${title%\"}
+        case $target in README|README.md) tf=$ROOT/README.md ;; *) tf=$ROOT/docs/${target##*/} ;; esac
+        [ -f "$tf" ] || continue   # a missing file is check 4's
+        grep -F -- "$title" "$tf" | grep -qE '^#+ |^- \*\*|^\*\*' ||
+            sections="$sections ${d#"$ROOT"/} names \"$title\" in ${tf#"$ROOT"/}, which has no such section;"
+    done < <(grep -oE '(README|[a-z-]+\.md)[,:] "[^"]+"' "$d")
+done
+if [ -z "$sections" ]; then pass "every section a doc names by its title exists"
+else fail "docs name sections that do not exist:$sections"; fi
+
 # 7. README's flag table gives every value list of `pathlab render --help` (--light a|b|c ...) as it is
 help=$("$PATHLAB" render --help 2>&1)
 flags=""
@@ -137,7 +153,8 @@ if [ -z "${DOCS_ROOT:-}" ]; then
     for f in docs/*; do case $f in *.md) ;; *) ln -s "$PWD/$f" "$R/$f" ;; esac; done
     for plant in "issue:name an issue" "branch:name a branch" "length:over 400" \
                  "count:print list is stale" "path:paths that do not exist" "link:paths that do not exist" \
-                 "arrow:arrows differ" "where:names functions not there" "values:differs from render --help"; do
+                 "arrow:arrows differ" "where:names functions not there" "values:differs from render --help" \
+                 "section:sections that do not exist"; do
         want=${plant#*:}; plant=${plant%%:*}
         cp README.md "$R/README.md"; cp docs/*.md "$R/docs/"   # fresh copies, then one violation
         case $plant in
@@ -150,6 +167,7 @@ if [ -z "${DOCS_ROOT:-}" ]; then
             arrow) sed -i -E 's/^(\| `tracer\/` .*\| )`sys\/` /\1`sys\/` `render\/` /' "$R/docs/architecture.md" ;;
             where) sed -i 's/`survives_roulette()`/`survives_the_roulette()`/' "$R/docs/architecture.md" ;;
             values) sed -i 's/\\|solid-angle`/`/' "$R/README.md" ;;
+            section) echo "See docs/sampler.md, \"Which sampler to pick\"." >> "$R/docs/guide.md" ;;
         esac
         if DOCS_ROOT="$R" bash "$0" 2>&1 | grep '^FAIL' | grep -q "$want"; then pass "a planted violation ($plant) is caught"
         else fail "a planted violation ($plant) was not caught"; fi

@@ -6,7 +6,11 @@
 #  - the "Print this" list of docs/architecture.md names every file of src/tracer/ with its line count
 #    as `wc -l` gives it (the failure says the right count), and its total;
 #  - every file path a doc names (src/..., tests/..., bench/..., docs/..., a layer's file such as
-#    tracer/integrator.c, a Markdown link) exists.
+#    tracer/integrator.c, a Markdown link) exists;
+#  - architecture.md's arrows are exactly test_layout.sh's allowed(), and every function its "Where to
+#    find" table names is in a file that row names;
+#  - every section a doc names by title ("docs/sampler.md, \"Which default\"") exists;
+#  - README's flag table gives each value list of `pathlab render --help` (--light a|b|...) as it is.
 # Each check is shown to fail on a copy of the docs with one planted violation (as test_layout.sh does).
 . "$(dirname "$0")/lib.sh"
 ROOT=${DOCS_ROOT:-.}   # another tree to check (this file's own negative checks use it)
@@ -151,7 +155,7 @@ if [ -z "${DOCS_ROOT:-}" ]; then
     R=$TMP/root; mkdir -p "$R/docs"
     for f in * .[!.]*; do case $f in docs|README.md) ;; *) ln -s "$PWD/$f" "$R/$f" ;; esac; done
     for f in docs/*; do case $f in *.md) ;; *) ln -s "$PWD/$f" "$R/$f" ;; esac; done
-    for plant in "issue:name an issue" "branch:name a branch" "length:over 400" \
+    for plant in "issue:name an issue" "branch:name a branch" "main:name a branch" "length:over 400" \
                  "count:print list is stale" "path:paths that do not exist" "link:paths that do not exist" \
                  "arrow:arrows differ" "where:names functions not there" "values:differs from render --help" \
                  "section:sections that do not exist"; do
@@ -160,6 +164,7 @@ if [ -z "${DOCS_ROOT:-}" ]; then
         case $plant in
             issue) echo "As issue 7 asks, the image is brighter." >> "$R/docs/guide.md" ;;
             branch) echo "Measured on branch \`bvh4\`." >> "$R/README.md" ;;
+            main) echo "The images are byte for byte those of main's binary." >> "$R/docs/sampler.md" ;;
             length) seq 401 >> "$R/docs/performance.md" ;;
             count) sed -i -E '/^#+ .*[Pp]rint this/,/^#/ s/^(\| *[0-9]+ *\| *`src\/tracer\/[a-z_]+\.[ch]` *\| *)[0-9]+/\10/' "$R/docs/architecture.md" ;;
             path) echo "See src/tracer/render.c." >> "$R/docs/estimators.md" ;;

@@ -17,12 +17,16 @@
 #include "cmd/render_cmd.h"
 #include "cmd/version.h"
 #include "cmd/view.h"
+#include "geometry/bvh.h"
 #include "sys/interrupt.h"
 #include "util/cli.h"
 
 static const char HEADER[] = "pathlab — a teaching path tracer (see README.md)\n\nusage:\n";
 static const char FOOTER[] =
     "  pathlab help [COMMAND] | COMMAND --help | --version\n"
+    "\n"
+    "  Any command takes --isa NAME: the instruction set of the ray traversal (avx512, avx2, sse2 on\n"
+    "  x86-64; default: the best this CPU runs; every one gives the same images; --version lists them).\n"
     "\n";
 static const char SYN_RENDER[] = "  pathlab render SCENE.obj [flags] -o FILE.pfm|FILE.ppm|FILE.png\n";
 static const char SYN_BENCH[] = "  pathlab bench-rays MESH.obj [-r RES] [-t THREADS]   rays per second of the BVH on a mesh\n";
@@ -129,9 +133,11 @@ static const char COMPARE_MORE[] = COMPARE_HELP "  render flags (pathlab render 
 
 static int version_main(int argc, char **argv)
 {
+    char names[128];
     (void)argv;
     if (argc > 1) { fprintf(stderr, "pathlab version: takes no arguments\n"); return 2; }
-    printf("pathlab %s\n", pathlab_revision());
+    bvh_isa_names(names, sizeof names);
+    printf("pathlab %s\nray traversal: %s (compiled for %s; --isa NAME picks one)\n", pathlab_revision(), bvh_isa(), names);
     return 0;
 }
 
@@ -217,10 +223,37 @@ static int asks_help(int argc, char **argv)
     return 0;
 }
 
+/* Takes "--isa NAME" (or --isa=NAME) out of argv, wherever it is, and forces that copy of the ray
+ * traversal (geometry/bvh.h). 0, or 2 after saying why. */
+static int take_isa_flag(int *argc, char **argv)
+{
+    int i, j, rc;
+    for (i = 1; i < *argc; i++) {
+        const char *name = NULL;
+        int used = 1;
+        char names[128];
+        if (!strcmp(argv[i], "--isa")) {
+            if (i + 1 >= *argc) { fprintf(stderr, "pathlab: --isa needs a name (pathlab --version lists them)\n"); return 2; }
+            name = argv[i + 1], used = 2;
+        } else if (!strncmp(argv[i], "--isa=", 6)) name = argv[i] + 6;
+        if (!name) continue;
+        if ((rc = bvh_isa_force(name)) != 0) {
+            bvh_isa_names(names, sizeof names);
+            fprintf(stderr, "pathlab: --isa %.100s: %s (compiled for %s)\n", name,
+                    rc == -2 ? "this CPU cannot run it" : "no such instruction set", names);
+            return 2;
+        }
+        for (j = i; j + used <= *argc; j++) argv[j] = argv[j + used];   /* argv[argc] is NULL */
+        *argc -= used, i--;
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     const command *c;
-    interrupt_quit_on_signal();   /* Ctrl-C at any moment leaves no temporary file (render: two steps) */
+    interrupt_quit_on_signal();
+    if (take_isa_flag(&argc, argv)) return 2;   /* Ctrl-C at any moment leaves no temporary file (render: two steps) */
     if (argc < 2) { help_all(stderr); return 2; }
     if (!strcmp(argv[1], "--version")) return version_main(1, argv + 1);
     if (!strcmp(argv[1], "help") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {

@@ -15,6 +15,7 @@
  * an existing image stays untouched when the write fails. */
 #include "image/image.h"
 #include "sys/atomic_file.h"
+#include "sys/input_file.h"
 #include <ctype.h>
 #include <errno.h>
 #include <float.h>
@@ -422,9 +423,9 @@ int img_read_pfm_info(image *im, const char *path, img_pfm_info *info)
     FILE *f;
     im->w = im->h = 0;
     im->px = NULL;
-    f = fopen(path, "rb");
+    f = input_file_open(path, 1);   /* a FIFO or a device in a class folder must not hang grade */
     if (!f) {
-        fprintf(stderr, "%s: cannot open: %s\n", path, strerror(errno));
+        fprintf(stderr, "%s: cannot open: %s\n", path, input_file_why(errno));
         return 1;
     }
     if (read_pfm_header(f, path, &hd)) goto out;

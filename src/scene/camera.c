@@ -1,5 +1,6 @@
 /* camera.c — view files and the pinhole camera. */
 #include "scene/camera.h"
+#include "sys/input_file.h"
 #include "scene/objtext.h"
 #include <errno.h>
 #include <float.h>
@@ -127,7 +128,7 @@ int view_read(view *vw, const char *path)
     int lineno = 0, rc = 0;
     FILE *fp;
     if (!line) { fprintf(stderr, "%s: out of memory\n", path); return 1; }
-    if (!(fp = text_file_open(path, 0))) {   /* a FIFO named SCENE.view must not hang the render */
+    if (!(fp = input_file_open(path, 0))) {   /* a FIFO named SCENE.view must not hang the render */
         free(line);
         return errno == ENOENT ? -1 : (fprintf(stderr, "%s: cannot open: %s\n", path, strerror(errno)), 1);
     }

@@ -2,6 +2,7 @@
  * Cutting lines in place, in a buffer that holds the whole file, costs one memchr per line and
  * no copy (only '\'-continued lines are copied, into t->join). */
 #include "scene/objtext.h"
+#include "sys/input_file.h"
 #include <errno.h>
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -13,23 +14,6 @@
 #include <string.h>
 
 static int is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-
-/* O_NONBLOCK: opening a FIFO without a writer returns at once (then reads end at once); reads
- * then wait for a writer's data, so that a pipe given on purpose is read. */
-FILE *text_file_open(const char *path, int regular_only)
-{
-    struct stat st;
-    int fd = open(path, O_RDONLY | O_NOCTTY | O_NONBLOCK), err = 0;
-    FILE *f;
-    if (fd < 0) return NULL;
-    if (regular_only && fstat(fd, &st) == 0 && !S_ISREG(st.st_mode)) err = S_ISDIR(st.st_mode) ? EISDIR : ENODEV;
-    if (!err && fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK) < 0) err = errno;
-    if (!err && (f = fdopen(fd, "rb"))) return f;
-    err = err ? err : errno;
-    close(fd);
-    errno = err;
-    return NULL;
-}
 
 /* Reading in a loop rather than asking for the size works for pipes and reports directories.
  * Reading stops after a chunk with a NUL byte: objtext_check refuses the file anyway, and
@@ -46,7 +30,7 @@ int objtext_open_bounded(objtext *t, const char *path, int quiet, size_t max)
     memset(t, 0, sizeof *t);
     t->path = path;
     t->quiet = quiet;
-    if (!(f = text_file_open(path, max > 0))) return errno;
+    if (!(f = input_file_open(path, max > 0))) return errno;
     for (;;) {
         if (!(bigger = realloc(buf, cap + 1))) { err = ENOMEM; break; } /* +1: the final NUL */
         buf = bigger;

@@ -36,10 +36,6 @@ const char *objtext_cut_tail(const char *s);
 
 /* Reads file path into t (path is kept, not copied). Returns 0, or the errno of the failure. */
 int objtext_open(objtext *t, const char *path, int quiet);
-/* Opens a text file (OBJ, MTL, view) without hanging on a FIFO that has no writer: it reads as
- * empty. regular_only: anything but a regular file is refused (errno EISDIR or ENODEV). NULL with
- * errno set. */
-FILE *text_file_open(const char *path, int regular_only);
 /* The same for a file a scene names: with max > 0, anything but a regular file of at most max bytes
  * is refused (EISDIR for a folder, ENODEV for a device, FIFO or socket, EFBIG when larger). */
 int objtext_open_bounded(objtext *t, const char *path, int quiet, size_t max);

@@ -1,5 +1,6 @@
 /* orbiter.c — gKit orbiter files: the reader, and the camera they describe as a pathlab view. */
 #include "scene/orbiter.h"
+#include "sys/input_file.h"
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -97,10 +98,10 @@ int orbiter_read(orbiter *o, const char *path)
     size_t cap = 256;
     char *line = malloc(cap);
     int seen[5] = {0, 0, 0, 0, 0}, lineno = 0, k, err = 0, rc;
-    FILE *fp = fopen(path, "r");
+    FILE *fp = input_file_open(path, 1);   /* a FIFO must not hang the command */
     memset(o, 0, sizeof *o);
     if (!fp || !line) {
-        fprintf(stderr, "%s: cannot open the orbiter file: %s\n", path, strerror(fp ? ENOMEM : errno));
+        fprintf(stderr, "%s: cannot open the orbiter file: %s\n", path, fp ? strerror(ENOMEM) : input_file_why(errno));
         free(line);
         if (fp) fclose(fp);
         return 1;

@@ -13,7 +13,7 @@
 
 #define VIEW_MAX_IMAGES 64
 #define VIEW_MAX_LAYERS 16
-#define VIEW_PATH 4200
+#define VIEW_PATH PATH_CAP
 
 typedef struct {
     const char *words[VIEW_MAX_IMAGES];

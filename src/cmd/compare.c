@@ -7,10 +7,9 @@
  *   apply to all; each estimator's flags are parsed after them, so they win. --spp, -o, --variance
  *   and --split are refused inside an estimator: the comparison fixes the samples (or the time) and
  *   the files.
- * - Equal time (--time SEC): each estimator is first rendered at 1, 2, 4 ... spp until one
- *   calibration render takes a fifth of SEC, which measures its seconds per sample; it is then
- *   rendered at round(SEC / that) spp. Fixed costs (threads, tiles) and a cold cache make the
- *   estimate pessimistic, so the final time is often under SEC; the table shows the time measured.
+ * - Equal time (--time SEC): each estimator is rendered at round(SEC / its seconds per sample) spp,
+ *   measured on calibration renders (compare/compare_render.h) until one takes a fifth of SEC; the
+ *   estimate is pessimistic, so the final time is often under SEC; the table shows the time measured.
  * - The reference, when not given, is rendered first with the best estimator (--direct mis-power
  *   --light solid-angle --dir brdf) at 16 x the largest spp (--ref-spp to change), with a different
  *   seed so that its noise is independent of the estimators'. It is written as DIR/reference.pfm.

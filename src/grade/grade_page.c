@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "sys/output_path.h"
 
 static const char *const CHANNELS[3] = {"red", "green", "blue"};
 
@@ -184,7 +185,7 @@ int grade_write_class_page(const char *path, const grade_row *rows, int n, const
 {
     html_image ref, *im = malloc(((size_t)n + 1) * sizeof *im);
     html_page page;
-    char *before = NULL, title[4200];
+    char *before = NULL, title[PATH_CAP];   /* "Grades against REF" */
     size_t nb;
     FILE *f = open_memstream(&before, &nb);
     int err = !f || !im;

@@ -37,8 +37,6 @@
 static const char REFERENCE_FLAGS[] = "--direct mis-power --light solid-angle --dir brdf";
 /* Render flags that compare refuses: it names its files itself. */
 static const char *const RENDER_ONLY[] = {"--split", "--variance", NULL};
-/* compare's own files, DIR/NAME.*, which no estimator may write over. */
-static const char *const RESERVED[] = {"reference", "mosaic", "table", "index", NULL};
 
 /* The flags, then what run() finds step by step. */
 typedef struct {
@@ -128,26 +126,13 @@ static int check_flags(const comparison *c)
     return render_check_camera_flags(&c->base) || output_dir_check("compare", "-o", c->dir);
 }
 
-/* Each estimator writes DIR/SLUG.*: not one of compare's own files, nor another estimator's. */
-static int check_file_names(const comparison *c)
+/* Each estimator's results are named after its spec: its files DIR/SLUG.*, its label and flags. */
+static int name_results(comparison *c)
 {
-    int i, j;
-    for (i = 0; i < c->nest; i++) {
-        const estimator_spec *e = &c->spec[i];
-        for (j = 0; RESERVED[j]; j++)
-            if (!strcmp(e->slug, RESERVED[j])) {
-                fprintf(stderr, "pathlab: compare: label '%s' would write over DIR/%s.*: name it, e.g. \"my %s=%s\"\n",
-                        e->label, RESERVED[j], e->label, e->flags);
-                return 1;
-            }
-        for (j = 0; j < i; j++)
-            if (!strcmp(e->slug, c->spec[j].slug)) {
-                fprintf(stderr, "pathlab: compare: estimators '%s' and '%s' would both write DIR/%s.pfm: label one (LABEL=FLAGS)\n",
-                        c->spec[j].label, e->label, e->slug);
-                return 1;
-            }
-    }
-    return 0;
+    int i;
+    for (i = 0; i < c->nest; i++)
+        c->est[i].slug = c->spec[i].slug, c->est[i].row.label = c->spec[i].label, c->est[i].row.flags = c->spec[i].flags;
+    return compare_check_names(c->est, c->nest);
 }
 
 static int parse_args(comparison *c, int argc, char **argv)
@@ -155,7 +140,7 @@ static int parse_args(comparison *c, int argc, char **argv)
     render_args_init(&c->base);
     c->spp = 16;
     if (parse_flags(c, argc, argv) || check_flags(c)) return 1;
-    return estimators_parse(c->list, &c->base, c->spec, MAX_EST, &c->nest) || check_file_names(c);
+    return estimators_parse(c->list, &c->base, c->spec, MAX_EST, &c->nest) || name_results(c);
 }
 
 /* ---- the steps of run() ---- */
@@ -249,9 +234,6 @@ static int render_estimators(comparison *c, const scene *s, const compare_refere
 static int write_outputs(comparison *c, const compare_reference *ref)
 {
     compare_outputs o;
-    int i;
-    for (i = 0; i < c->nest; i++)
-        c->est[i].slug = c->spec[i].slug, c->est[i].row.label = c->spec[i].label, c->est[i].row.flags = c->spec[i].flags;
     memset(&o, 0, sizeof o);
     o.dir = c->dir, o.scene = c->base.scene, o.exposure = c->base.exposure, o.scale = c->scale;
     o.n = c->nest, o.est = c->est, o.ref = ref;
@@ -290,14 +272,10 @@ done:
 int compare_main(int argc, char **argv)
 {
     comparison *c = calloc(1, sizeof *c);
-    int rc, i;
+    int rc;
     if (!c) { fprintf(stderr, "pathlab: compare: out of memory\n"); return 1; }
     rc = parse_args(c, argc, argv) ? 2 : run(c);
-    for (i = 0; i < MAX_EST; i++) {
-        img_free(&c->est[i].img);
-        img_free(&c->est[i].var);
-        img_free(&c->est[i].heat);
-    }
+    compare_estimators_free(c->est, MAX_EST);
     free(c);
     return rc;
 }

@@ -6,6 +6,31 @@
 #include <sys/stat.h>
 #include "sys/output_path.h"
 
+/* compare's own files, DIR/NAME.*, which no estimator may write over. */
+static const char *const RESERVED[] = {"reference", "mosaic", "table", "index", NULL};
+
+int compare_check_names(const compare_estimator *est, int n)
+{
+    int i, j;
+    for (i = 0; i < n; i++) {
+        const compare_estimator *e = &est[i];
+        const char *label = e->row.label;
+        for (j = 0; RESERVED[j]; j++)
+            if (!strcmp(e->slug, RESERVED[j])) {
+                fprintf(stderr, "pathlab: compare: label '%s' would write over DIR/%s.*: name it, e.g. \"my %s=%s\"\n",
+                        label, RESERVED[j], label, e->row.flags);
+                return 1;
+            }
+        for (j = 0; j < i; j++)
+            if (!strcmp(e->slug, est[j].slug)) {
+                fprintf(stderr, "pathlab: compare: estimators '%s' and '%s' would both write DIR/%s.pfm: label one (LABEL=FLAGS)\n",
+                        est[j].row.label, label, e->slug);
+                return 1;
+            }
+    }
+    return 0;
+}
+
 int compare_make_dir(const char *dir)
 {
     if (mkdir(dir, 0777) && errno != EEXIST) {

@@ -4,6 +4,9 @@
 #define PATHLAB_COMPARE_FILES_H
 #include "compare/compare_results.h"
 
+/* Each estimator writes DIR/SLUG.*: not one of compare's own files (reference, mosaic, table, index),
+ * nor another estimator's. 0, or 1 after saying which and how to label it. */
+int compare_check_names(const compare_estimator *est, int n);
 /* Makes DIR if missing; 0, or 1 after saying why. */
 int compare_make_dir(const char *dir);
 /* DIR/PRE SLUG EXT into path[PATH_CAP]; 0, or 1 when too long (said). */

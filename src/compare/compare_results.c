@@ -3,6 +3,16 @@
 #include <math.h>
 #include "stats/image_diff.h"
 
+void compare_estimators_free(compare_estimator *est, int n)
+{
+    int i;
+    for (i = 0; i < n; i++) {
+        img_free(&est[i].img);
+        img_free(&est[i].var);
+        img_free(&est[i].heat);
+    }
+}
+
 void compare_reference_noise(compare_reference *ref)
 {
     long i, n = 3L * ref->var.w * ref->var.h;

@@ -27,6 +27,8 @@ typedef struct {
     char label[160];         /* over its panel in the mosaic */
 } compare_reference;
 
+/* Frees the images of est[0..n). */
+void compare_estimators_free(compare_estimator *est, int n);
 /* Sets ref->mean_var from its variance (0 when unknown). */
 void compare_reference_noise(compare_reference *ref);
 /* The errors of img against the reference (RMSE, relMSE, MAE raw; MSE less the reference's noise),

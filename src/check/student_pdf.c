@@ -72,8 +72,6 @@ double student_pdf_eval(const student_pdf *p, dvec w)
     return lobe(p->m, h.z) / (4.0 * dv_dot(p->wo, h));
 }
 
-int student_pdf_on_hemisphere(const student_pdf *p) { return p->kind != SPDF_UNIFORM; }
-
 double student_pdf_measure(const student_pdf *p) { return p->kind == SPDF_UNIFORM ? 4.0 * PI : 2.0 * PI; }
 
 double student_pdf_lobe_cos(const student_pdf *p, dvec w)

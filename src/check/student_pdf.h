@@ -29,8 +29,6 @@ void student_pdf_name(const student_pdf *p, char *buf, int len);
 /* The density at the unit direction w per steradian; blinn: the slides' formula above the surface,
  * 0 below (where the reflections are not binned by direction). */
 double student_pdf_eval(const student_pdf *p, dvec w);
-/* 1 if the density lives on z > 0 (all but uniform): directions below are errors, except blinn's. */
-int student_pdf_on_hemisphere(const student_pdf *p);
 /* The solid angle where the column is checked by mean(1/pdf): 4 pi (uniform) or 2 pi (z > 0). */
 double student_pdf_measure(const student_pdf *p);
 /* The cosine the lobe is a power of: w.z, or blinn's h.z (h turned to z > 0); 0 if undefined. */

@@ -1,7 +1,7 @@
 /* check_sampler.h — `pathlab check-sampler FILE.txt --pdf NAME [--wo X,Y,Z] [--alpha A] [--seed S]`:
  * a student's directions (and the pdf their code returned) from a text file, checked against the
- * density they claim; the checks and diagnoses are check/student_check.h and student_diagnosis.h,
- * this file reads the flags and prints. docs/check-sampler.md is the student's guide. */
+ * density they claim; the checks, diagnoses and lines are check/student_check.h, student_diagnosis.h
+ * and student_print.h; this file reads the flags. docs/check-sampler.md is the student's guide. */
 #ifndef PATHLAB_CMD_CHECK_SAMPLER_H
 #define PATHLAB_CMD_CHECK_SAMPLER_H
 

@@ -2,9 +2,9 @@
  * (render_cmd.c, convert.c, diff.c, cmd/grade.c, compare.c, merge.c, bench_rays.c,
  * check_sampling.c, check_sampler.c).
  * A new command is one entry of COMMANDS: its name, its main, the lines of the overview
- * (`pathlab help`) and the parts of its own help (`pathlab NAME --help`, `pathlab help NAME`). */
+ * (`pathlab help`) and the parts of its own help (`pathlab NAME --help`, `pathlab help NAME`);
+ * util/commands.c dispatches and prints the helps. */
 #include <stdio.h>
-#include <string.h>
 #include "cmd/check_sampler.h"
 #include "cmd/check_sampling.h"
 #include "cmd/bench_rays.h"
@@ -19,7 +19,7 @@
 #include "cmd/view.h"
 #include "geometry/bvh.h"
 #include "sys/interrupt.h"
-#include "util/cli.h"
+#include "util/commands.h"
 
 static const char HEADER[] = "pathlab — a teaching path tracer (see README.md)\n\nusage:\n";
 static const char FOOTER[] =
@@ -141,16 +141,7 @@ static int version_main(int argc, char **argv)
     return 0;
 }
 
-/* The commands, by name: their lines in the overview, and the parts of their own help printed
- * after those lines (NULL-terminated). own_help: the command prints its help itself on --help. */
-typedef struct {
-    const char *name;
-    int (*run)(int argc, char **argv);   /* argv[0] is the command's name */
-    const char *synopsis;
-    const char *help[4];
-    int own_help;
-} command;
-
+/* The commands, by name (util/commands.h). */
 static const command COMMANDS[] = {
     {"render", render_main, SYN_RENDER, {USAGE_RENDER, USAGE_ADAPTIVE, NULL}, 0},
     {"bench-rays", bench_rays_main, SYN_BENCH, {MORE_BENCH, NULL}, 0},
@@ -165,63 +156,7 @@ static const command COMMANDS[] = {
     {"version", version_main, SYN_VERSION, {NULL}, 0},
     {NULL, NULL, NULL, {NULL}, 0}};
 
-/* Everything: the overview, then each command's own help. */
-static void help_all(FILE *f)
-{
-    const command *c;
-    int k;
-    help_print(f, HEADER);
-    for (c = COMMANDS; c->name; c++) help_print(f, c->synopsis);
-    help_print(f, FOOTER);
-    for (c = COMMANDS; c->name; c++)
-        for (k = 0; c->help[k]; k++) help_print(f, c->help[k]);
-}
-
-/* One command's help on stdout: its overview lines and its flags; 0. */
-static int help_one(const command *c)
-{
-    char *args[3];
-    int k;
-    if (c->own_help) {
-        args[0] = (char *)c->name, args[1] = "--help", args[2] = NULL;
-        return c->run(2, args);
-    }
-    help_print(stdout, "usage:\n");
-    help_print(stdout, c->synopsis);
-    for (k = 0; c->help[k]; k++) help_print(stdout, c->help[k]);
-    return 0;
-}
-
-static const command *find_command(const char *name)
-{
-    const command *c;
-    for (c = COMMANDS; c->name; c++)
-        if (!strcmp(name, c->name)) return c;
-    return NULL;
-}
-
-/* A short error for a name that is no command, with the closest command's name; 2. */
-static int unknown_command(const char *name)
-{
-    const command *c;
-    const char *best = NULL;
-    int d = 0;
-    for (c = COMMANDS; c->name; c++) cli_consider(name, c->name, &best, &d);
-    cli_consider(name, "help", &best, &d);
-    fprintf(stderr, "pathlab: unknown command '%.200s'", name);
-    if (best) fprintf(stderr, "; did you mean '%s'?", best);
-    fprintf(stderr, " (pathlab help lists the commands)\n");
-    return 2;
-}
-
-/* -h or --help among a command's arguments (a file named -h is written ./-h). */
-static int asks_help(int argc, char **argv)
-{
-    int i;
-    for (i = 1; i < argc; i++)
-        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return 1;
-    return 0;
-}
+static const command_table PATHLAB = {"pathlab", COMMANDS, HEADER, FOOTER, help_print};
 
 /* Takes "--isa NAME" (or --isa=NAME) out of argv, wherever it is, and forces that copy of the ray
  * traversal (geometry/bvh.h). 0, or 2 after saying why. */
@@ -251,19 +186,7 @@ static int take_isa_flag(int *argc, char **argv)
 
 int main(int argc, char **argv)
 {
-    const command *c;
-    interrupt_quit_on_signal();
-    if (take_isa_flag(&argc, argv)) return 2;   /* Ctrl-C at any moment leaves no temporary file (render: two steps) */
-    if (argc < 2) { help_all(stderr); return 2; }
-    if (!strcmp(argv[1], "--version")) return version_main(1, argv + 1);
-    if (!strcmp(argv[1], "help") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
-        if (argc < 3 || !strcmp(argv[2], "help")) { help_all(stdout); return 0; }
-        if (argc > 3) { fprintf(stderr, "pathlab help: one command at a time (pathlab help COMMAND)\n"); return 2; }
-        c = find_command(argv[2]);
-        return c ? help_one(c) : unknown_command(argv[2]);
-    }
-    c = find_command(argv[1]);
-    if (!c) return unknown_command(argv[1]);
-    if (asks_help(argc - 1, argv + 1)) return help_one(c);
-    return c->run(argc - 1, argv + 1);
+    interrupt_quit_on_signal();   /* Ctrl-C at any moment leaves no temporary file (render: two steps) */
+    if (take_isa_flag(&argc, argv)) return 2;
+    return commands_main(&PATHLAB, argc, argv);
 }

@@ -2,6 +2,7 @@
 #include "compare/compare_report.h"
 #include <errno.h>
 #include <string.h>
+#include "sys/output_path.h"
 #include "util/textfile.h"
 
 double compare_best_eff(const compare_row *rows, int n)
@@ -72,7 +73,7 @@ static void print_csv(FILE *f, const compare_row *rows, int n)
 
 int compare_write_md(const char *path, const compare_row *rows, int n, const char *notes)
 {
-    char tmp[4200];
+    char tmp[PATH_CAP];
     FILE *f = textfile_open(path, tmp, sizeof tmp);
     if (!f) return 1;
     print_md(f, rows, n, notes);
@@ -81,7 +82,7 @@ int compare_write_md(const char *path, const compare_row *rows, int n, const cha
 
 int compare_write_csv(const char *path, const compare_row *rows, int n)
 {
-    char tmp[4200];
+    char tmp[PATH_CAP];
     FILE *f = textfile_open(path, tmp, sizeof tmp);
     if (!f) return 1;
     print_csv(f, rows, n);

@@ -6,7 +6,10 @@
 #include <stdio.h>
 #include <string.h>
 #include "image/radiance.h"
+#include "sys/output_path.h"
 #include "util/textfile.h"
+
+#define COMMAND_CAP 8192   /* a render command: several paths and flags */
 
 /* The first NaN, infinite or negative value of im, or -1; *what names it. */
 static long first_bad(const image *im, int negative_too, const char **what)
@@ -40,7 +43,7 @@ int grade_check_reference(const grade_refs *refs, const char *ref_path, const ch
 static int manifest_command(char *cmd, size_t cap, const char *ref_path)
 {
     const char *slash = strrchr(ref_path, '/'), *name = slash ? slash + 1 : ref_path;
-    char path[4200], line[8192], key[512];
+    char path[PATH_CAP], line[COMMAND_CAP], key[512];
     FILE *f;
     int found = 0;
     snprintf(path, sizeof path, "%.*sMANIFEST.md", slash ? (int)(slash - ref_path + 1) : 0, ref_path);
@@ -59,20 +62,18 @@ static int manifest_command(char *cmd, size_t cap, const char *ref_path)
 /* The command's words with --size, -o and --variance made for a w x h reference named STEM-WxH. */
 static void resize_command(char *out, size_t cap, const char *cmd, const char *ref_path, int w, int h)
 {
-    char words[8192], stem[4200], *tok, *save = NULL;
+    char words[COMMAND_CAP], stem[PATH_CAP], *tok, *save = NULL;
     size_t used = 0, n = strlen(ref_path) > 4 ? strlen(ref_path) - 4 : strlen(ref_path);
     int skip = 0, sized = 0;
     snprintf(words, sizeof words, "%s", cmd);
     snprintf(stem, sizeof stem, "%.*s-%dx%d", (int)n, ref_path, w, h);
     out[0] = '\0';
     for (tok = strtok_r(words, " ", &save); tok && used < cap; tok = strtok_r(NULL, " ", &save)) {
-        const char *word = tok;
-        char buf[4300];
-        if (skip == 1) { snprintf(buf, sizeof buf, "%dx%d", w, h); word = buf; sized = 1; }
-        if (skip == 2) { snprintf(buf, sizeof buf, "%s.pfm", stem); word = buf; }
-        if (skip == 3) { snprintf(buf, sizeof buf, "%s_var.pfm", stem); word = buf; }
+        const char *sep = used ? " " : "", *suffix = skip == 2 ? ".pfm" : "_var.pfm";
+        if (skip == 1) used += (size_t)snprintf(out + used, cap - used, "%s%dx%d", sep, w, h), sized = 1;
+        else if (skip) used += (size_t)snprintf(out + used, cap - used, "%s%s%s", sep, stem, suffix);
+        else used += (size_t)snprintf(out + used, cap - used, "%s%s", sep, tok);
         skip = !strcmp(tok, "--size") ? 1 : !strcmp(tok, "-o") ? 2 : !strcmp(tok, "--variance") ? 3 : 0;
-        used += (size_t)snprintf(out + used, cap - used, "%s%s", used ? " " : "", word);
     }
     if (!sized && used < cap) snprintf(out + used, cap - used, " --size %dx%d", w, h);
 }
@@ -82,7 +83,7 @@ static void resize_command(char *out, size_t cap, const char *cmd, const char *r
 static int sidecar_command(char *out, size_t cap, const char *ref_path, int w, int h)
 {
     sidecar m;
-    char stem[4200], cmd[8192];
+    char stem[PATH_CAP], cmd[COMMAND_CAP];
     size_t n = strlen(ref_path) > 4 ? strlen(ref_path) - 4 : strlen(ref_path);
     snprintf(stem, sizeof stem, "%.*s-%dx%d", (int)n, ref_path, w, h);
     if (sidecar_read(&m, ref_path) != 0 || sidecar_render_command(&m, w, h, stem, cmd, sizeof cmd)) return 0;
@@ -93,7 +94,7 @@ static int sidecar_command(char *out, size_t cap, const char *ref_path, int w, i
 /* A wrong size: a fail, with the command that renders a reference at the image's size. */
 static int wrong_size(grade_row *row, const image *img, const grade_refs *refs, const char *ref_path)
 {
-    char cmd[8192] = "", fixed[640];   /* a command longer than 639 characters is cut */
+    char cmd[COMMAND_CAP] = "", fixed[640];   /* a command longer than 639 characters is cut */
     int w = img->w, h = img->h, rw = refs->ref->w, rh = refs->ref->h;
     int same_aspect = (long)w * rh == (long)h * rw;
     if (sidecar_command(fixed, sizeof fixed, ref_path, w, h)) cmd[0] = '\0';
@@ -215,7 +216,7 @@ static void write_csv(FILE *f, const grade_row *rows, int n)
 int grade_write_report(const char *path, const grade_row *rows, int n, const grade_opts *o, const char *ref_path,
                        const grade_refs *refs, const image *imgs)
 {
-    char tmp[4200];
+    char tmp[PATH_CAP];
     size_t len = strlen(path);
     FILE *f;
     if (len > 5 && !strcmp(path + len - 5, ".html")) {

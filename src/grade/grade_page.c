@@ -5,6 +5,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "sys/output_path.h"
+#include "util/path.h"
 
 static const char *const CHANNELS[3] = {"red", "green", "blue"};
 
@@ -89,8 +91,6 @@ void grade_make_marks(grade_marks *out, const grade_report *r)
 
 static const char *verdict_word(int status) { return status == 0 ? "PASS" : status == 1 ? "FAIL" : "UNREADABLE"; }
 
-static const char *base_name(const char *path) { return strrchr(path, '/') ? strrchr(path, '/') + 1 : path; }
-
 /* The verdict, the bias and where, the likely mistakes with their evidence, what the marks are. */
 static int put_verdict(FILE *f, const grade_page *p)
 {
@@ -134,8 +134,8 @@ int grade_write_page(const grade_page *p)
     grade_make_marks(&marks, p->r);
     nmarks = marks.n;
     memset(&page, 0, sizeof page);
-    im.name = base_name(p->row->path), im.img = p->img, im.var = NULL, im.link = NULL;
-    ref.name = base_name(p->ref_path), ref.img = p->refs->ref, ref.var = p->refs->var, ref.link = NULL;
+    im.name = path_file_name(p->row->path), im.img = p->img, im.var = NULL, im.link = NULL;
+    ref.name = path_file_name(p->ref_path), ref.img = p->refs->ref, ref.var = p->refs->var, ref.link = NULL;
     page.title = p->row->path, page.images = &im, page.nimages = 1, page.ref = &ref;
     page.marks = marks.m, page.nmarks = nmarks, page.before_html = before;
     err = html_page_write(p->path, &page);
@@ -173,7 +173,7 @@ static int class_images(html_image *im, const grade_row *rows, int n, const imag
     int k, m = 0;
     for (k = 0; imgs && k < n; k++) {
         if (!imgs[k].px) continue;
-        im[m].name = base_name(rows[k].path), im[m].img = &imgs[k], im[m].var = NULL;
+        im[m].name = path_file_name(rows[k].path), im[m].img = &imgs[k], im[m].var = NULL;
         im[m++].link = rows[k].page[0] ? rows[k].page : NULL;
     }
     return m;
@@ -184,7 +184,7 @@ int grade_write_class_page(const char *path, const grade_row *rows, int n, const
 {
     html_image ref, *im = malloc(((size_t)n + 1) * sizeof *im);
     html_page page;
-    char *before = NULL, title[4200];
+    char *before = NULL, title[PATH_CAP];   /* "Grades against REF" */
     size_t nb;
     FILE *f = open_memstream(&before, &nb);
     int err = !f || !im;
@@ -197,7 +197,7 @@ int grade_write_class_page(const char *path, const grade_row *rows, int n, const
     if (err) { fprintf(stderr, "%s: out of memory\n", path); free(before); free(im); return 1; }
     snprintf(title, sizeof title, "Grades against %s", ref_path);
     memset(&page, 0, sizeof page);
-    ref.name = base_name(ref_path), ref.img = refs->ref, ref.var = refs->var, ref.link = NULL;
+    ref.name = path_file_name(ref_path), ref.img = refs->ref, ref.var = refs->var, ref.link = NULL;
     page.title = title, page.images = im, page.nimages = class_images(im, rows, n, imgs), page.before_html = before;
     if (page.nimages) page.ref = &ref;
     else page.images = &ref, page.nimages = 1;   /* nothing graded: the reference alone */

@@ -5,6 +5,7 @@
 #include <stddef.h>
 #include "grade/grade.h"
 #include "grade/grade_diagnose.h"
+#include "sys/output_path.h"
 
 /* One graded image, as a row of the class report. */
 typedef struct {
@@ -17,7 +18,7 @@ typedef struct {
     char channel[8];         /* that channel's name, "mean", "groups", or "" for no figure */
     char where[160];         /* where the significant groups are; "" if none */
     char mistake[1024];      /* the likely mistakes, "; " between them; the input error for status 2 */
-    char page[12800];        /* its page (grade_page.h) as the class report links it; "" if none */
+    char page[PATH_CAP];     /* its page (grade_page.h) as the class report links it; "" if none */
 } grade_row;
 
 /* The tests that ran, their levels and counts, then the verdict with where and how much. */

@@ -55,7 +55,8 @@ static double gamma_q_fraction(double a, double x, double lead)
     return lead * h;
 }
 
-double chi2_gamma_q(double a, double x)
+/* The regularized upper incomplete gamma function Q(a, x) = Gamma(a, x) / Gamma(a), a > 0. */
+static double chi2_gamma_q(double a, double x)
 {
     double lead;
     if (x <= 0.0) return 1.0;

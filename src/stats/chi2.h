@@ -12,8 +12,6 @@ typedef struct {
     double expected_total;   /* sum of the expected counts: N when the pdf integrates to 1 */
 } chi2_result;
 
-/* Regularized upper incomplete gamma function Q(a, x) = Gamma(a, x) / Gamma(a), a > 0. */
-double chi2_gamma_q(double a, double x);
 /* P-value of the statistic chi2 with dof degrees of freedom: Q(dof/2, chi2/2); 0 for dof < 1. */
 double chi2_pvalue(double chi2, int dof);
 /* The test on n cells. Cells expected under 5 are pooled into one; if the pool itself stays under 5,

@@ -47,12 +47,6 @@ static int pixel_fails(const zreport *r, double d, double v1, double dof1, doubl
     return t_two_sided_tail(d / sqrt(v1 + v2 + rnd2), dof) < level;
 }
 
-int zreport_compute(zreport *r, const image *a, const image *va, const image *b, const image *vb,
-                    double alpha, int block)
-{
-    return zreport_compute_dof(r, a, va, 0.0, b, vb, 0.0, alpha, block);
-}
-
 int zreport_compute_dof(zreport *r, const image *a, const image *va, double dof_a, const image *b, const image *vb,
                         double dof_b, double alpha, int block)
 {

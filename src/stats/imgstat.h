@@ -27,10 +27,8 @@ typedef struct {
     double mean_b[3];           /* mean of b per channel (for relative figures) */
 } zreport;
 
-/* Runs the three tests; images must have the same size. Returns 0, or 1 if sizes differ. */
-int zreport_compute(zreport *r, const image *a, const image *va, const image *b, const image *vb,
-                    double alpha, int block);
-/* The same with the degrees of freedom of va and vb (0: many, the normal test of zreport_compute). */
+/* Runs the three tests; images must have the same size. dof_a, dof_b: the degrees of freedom of va
+ * and vb (0: many, the normal test). Returns 0, or 1 if sizes differ. */
 int zreport_compute_dof(zreport *r, const image *a, const image *va, double dof_a, const image *b, const image *vb,
                         double dof_b, double alpha, int block);
 #endif

@@ -1,0 +1,92 @@
+/* view_images.c — the images of a viewer page read with what lies beside them (view_images.h). */
+#include "compare/view_images.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "files/render_files.h"
+#include "files/sidecar.h"
+#include "sys/output_path.h"
+#include "util/path.h"
+
+static int exists(const char *path) { return access(path, F_OK) == 0; }
+
+/* Reads path into im; the first image read sets the size (*first), later ones must match it. 0 or 2. */
+static int read_sized(image *im, const char *path, const char **first, const image *first_img)
+{
+    if (img_read_pfm(im, path)) return 2;
+    if (!*first) { *first = path; return 0; }
+    if (im->w == first_img->w && im->h == first_img->h) return 0;
+    fprintf(stderr, "pathlab view: %s is %dx%d, %s is %dx%d: the images of a page must have one size\n", path, im->w,
+            im->h, *first, first_img->w, first_img->h);
+    return 2;
+}
+
+/* The variance of the image at path: STEM_var.pfm beside it, else the one its sidecar names. 1 if found. */
+static int variance_of(const char *path, char *out, size_t cap)
+{
+    size_t n = strlen(path), stem = n > 4 && !strcmp(path + n - 4, ".pfm") ? n - 4 : n;
+    sidecar m;
+    snprintf(out, cap, "%.*s_var.pfm", (int)stem, path);
+    if (exists(out)) return 1;
+    if (sidecar_read(&m, path) || !m.variance[0]) return 0;
+    render_files_variance_path(out, cap, path, m.variance);
+    return out[0] && exists(out);
+}
+
+/* Reads one image (and its variance, given or found) into slot i of the page. 0 or 2. */
+static int read_image(view_data *d, html_image *h, image *im, image *var, const char *path, const char *var_path,
+                      const char **first)
+{
+    char found[PATH_CAP];
+    h->name = path_file_name(path);
+    h->img = im;
+    if (read_sized(im, path, first, &d->img[0])) return 2;
+    if (!var_path && variance_of(path, found, sizeof found)) var_path = found;
+    if (!var_path) return 0;
+    if (read_sized(var, var_path, first, &d->img[0])) return 2;
+    h->var = var;
+    return 0;
+}
+
+/* The strip: PREFIX_Lk.pfm as far as they exist, or the first image's layers A:B (its sidecar). 0 or 2. */
+static int read_layers(view_data *d, const char *image0, const char *layers, const char **first)
+{
+    sidecar m;
+    int k, lo = 0, hi = VIEW_MAX_LAYERS - 1;
+    char path[PATH_CAP];
+    if (!layers && (sidecar_read(&m, image0) || sscanf(m.layers, "%d:%d", &lo, &hi) != 2)) return 0;
+    for (k = lo; k <= hi && k < VIEW_MAX_LAYERS && d->nlayers < VIEW_MAX_LAYERS; k++) {
+        html_image *h = &d->strip[d->nlayers];
+        if (layers) snprintf(path, sizeof path, "%s_L%d.pfm", layers, k);
+        else render_files_layer_path(path, sizeof path, image0, k);
+        if (!exists(path)) continue;   /* a layer deleted since, or a gap in PREFIX_Lk: the others are shown */
+        if (read_sized(&d->layer[d->nlayers], path, first, &d->img[0])) return 2;
+        snprintf(d->layer_name[d->nlayers], sizeof d->layer_name[0], "L%d", k);
+        h->name = d->layer_name[d->nlayers];
+        h->img = &d->layer[d->nlayers++];
+    }
+    if (layers && !d->nlayers) { fprintf(stderr, "pathlab view: no layer %s_L0.pfm, %s_L1.pfm ...\n", layers, layers); return 2; }
+    return 0;
+}
+
+void view_data_free(view_data *d)
+{
+    int i;
+    for (i = 0; i < VIEW_MAX_IMAGES; i++) img_free(&d->img[i]), img_free(&d->var[i]);
+    for (i = 0; i < VIEW_MAX_LAYERS; i++) img_free(&d->layer[i]);
+    img_free(&d->ref);
+    img_free(&d->ref_var);
+    free(d);
+}
+
+
+int view_data_read(view_data *d, const char *const *images, int n, const char *ref, const char *var, const char *layers)
+{
+    const char *first = NULL;
+    int i, rc = 0;
+    for (i = 0; i < n && !rc; i++) rc = read_image(d, &d->im[i], &d->img[i], &d->var[i], images[i], i ? NULL : var, &first);
+    if (!rc && ref) rc = read_image(d, &d->refim, &d->ref, &d->ref_var, ref, NULL, &first);
+    if (!rc) rc = read_layers(d, images[0], layers, &first);
+    return rc;
+}

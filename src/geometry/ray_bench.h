@@ -1,0 +1,24 @@
+/* ray_bench.h — the work of `pathlab bench-rays`: the BVH built (the best time of a few builds) and
+ * three fixed ray sets traced and timed: primary rays of a res x res camera, one diffuse bounce
+ * and one shadow ray from each primary hit. It generates exactly the rays of the Embree anchor
+ * (shared/tools/embree-rays/README.md: same camera, same lowbias32 hashes, same 1e-4 D offset, same
+ * shadow tmax, rows shared out among the threads), so that hit counts must agree and speeds
+ * compare like with like. */
+#ifndef PATHLAB_RAY_BENCH_H
+#define PATHLAB_RAY_BENCH_H
+#include "geometry/bvh.h"
+
+#define RAY_BENCH_BUILDS 3      /* the build time is the best of this many */
+
+enum { RAY_BENCH_PRIMARY, RAY_BENCH_DIFFUSE, RAY_BENCH_SHADOW };
+
+typedef struct {
+    double build_ms;            /* the fastest build */
+    long rays[3], hits[3];      /* per kind; a shadow ray's hit: it is occluded */
+    double secs[3];
+} ray_bench_result;
+
+/* The triangles P[tri[3i+k]] (nverts vertices, ntris triangles), res x res primary rays on
+ * `threads` threads. 0, or 1 when out of memory. */
+int ray_bench_run(const vec3 *P, int nverts, const int *tri, int ntris, int res, int threads, ray_bench_result *out);
+#endif

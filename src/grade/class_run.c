@@ -1,0 +1,159 @@
+/* class_run.c — one grading run: the reference, then each image in turn, then the class (class_run.h). */
+#include "grade/class_run.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "grade/grade_class.h"
+#include "grade/grade_diagnose.h"
+#include "grade/grade_page.h"
+#include "grade/grade_print.h"
+#include "grade/page_paths.h"
+#include "grade/reference.h"
+#include "util/path.h"
+
+#define GRADE_MAX_HYP 6
+
+/* What every image of the run shares. */
+typedef struct {
+    grade_job job;          /* the job, with the reference's variance-dof once read */
+    grade_reference R;
+    grade_pages pages;
+    int loud;              /* each image's tests in full: one image, or --details */
+} run;
+
+/* The heatmap's path for an image: the --heatmap file itself, or FOLDER/NAME.png with several. */
+static void heatmap_path(char *out, size_t cap, const grade_job *j, const char *image)
+{
+    const char *base = path_file_name(image);
+    size_t stem = path_ends_with(base, ".pfm") ? strlen(base) - 4 : strlen(base);
+    if (j->nimages == 1) snprintf(out, cap, "%s", j->heatmap);
+    else snprintf(out, cap, "%s/%.*s.png", j->heatmap, (int)stem, base);
+}
+
+/* The likely mistakes of a failing image: printed in full (one image, or --details) and joined into
+ * the row. */
+static int diagnose(grade_row *row, const image *img, const run *s, double excess, grade_hypothesis *h, int *nh)
+{
+    const grade_reference *R = &s->R;
+    int n = *nh = grade_diagnose(img, &R->refs, &s->job.o, excess, h, GRADE_MAX_HYP), k;
+    size_t used = 0;
+    if (n < 0) { fprintf(stderr, "pathlab grade: out of memory\n"); *nh = 0; return 2; }
+    if (s->loud) grade_print_hypotheses(h, n);
+    if (n == 0) snprintf(row->mistake, sizeof row->mistake, "none of the catalogue%s", R->refs.nlayers ? "" :
+                         " (no layers REF_split_L0.pfm ... beside the reference: the bounce mistakes were not tried)");
+    if (s->loud && n == 0 && !R->refs.nlayers)
+        printf("    (no layers %s_L0.pfm ... beside the reference: the bounce mistakes were not tried; docs/grading.md)\n", R->layer_prefix);
+    for (k = 0; k < n && k < 3 && used < sizeof row->mistake; k++)
+        used += (size_t)snprintf(row->mistake + used, sizeof row->mistake - used, "%s%s", k ? "; " : "", h[k].what);
+    return 0;
+}
+
+/* The heatmap of one graded image, if asked: 0, or 2 (said). */
+static int write_heatmap(const grade_report *r, const run *s, const char *image_path)
+{
+    char path[PATH_CAP];
+    image heat;
+    int err;
+    if (!s->job.heatmap) return 0;
+    heatmap_path(path, sizeof path, &s->job, image_path);
+    err = grade_heatmap(&heat, r, &s->R.ref) || img_write(&heat, path, 0.0f);
+    if (!err && s->loud) printf("heatmap: %s (red: significantly brighter blocks, blue: darker, grey: the reference)\n", path);
+    img_free(&heat);
+    return err ? 2 : 0;
+}
+
+/* The page of one graded image, if there is a pages folder; the row's link to it. 0, or 2 (said). */
+static int write_page(grade_row *row, const grade_report *r, const image *img, const run *s, const grade_hypothesis *h,
+                      int nh, int same_name)
+{
+    char path[PATH_CAP];
+    grade_page p;
+    if (!s->pages.dir[0]) return 0;
+    if (grade_page_path(path, sizeof path, &s->pages, row->path, same_name)) return 2;
+    p.path = path, p.ref_path = s->job.ref, p.var_path = s->R.var_path, p.img = img, p.refs = &s->R.refs, p.r = r, p.row = row;
+    p.h = h, p.nh = nh, p.back = s->pages.back[0] ? s->pages.back : NULL;
+    if (grade_write_page(&p)) return 2;
+    grade_page_link(row->page, sizeof row->page, &s->pages, path);
+    if (s->loud) printf("page: %s\n", path);
+    return 0;
+}
+
+/* Grades one image into its row: 0 pass, 1 fail, 2 could not be read or graded. keep (or NULL)
+ * receives the graded image, for the class's page. */
+static int grade_one(grade_row *row, const run *s, const char *path, int same_name, image *keep)
+{
+    const grade_job *j = &s->job;
+    grade_hypothesis h[GRADE_MAX_HYP];
+    image img;
+    grade_report r;
+    int rc, nh = 0;
+    memset(row, 0, sizeof *row);
+    row->path = path;
+    rc = grade_read_image(&img, row, &s->R.refs, j->ref);
+    if (rc && s->loud && j->nimages == 1) grade_print_row(row);
+    if (rc) return row->status = rc;
+    if (grade_compute(&r, &img, &s->R.ref, s->R.refs.var, &j->o)) {
+        fprintf(stderr, "pathlab grade: out of memory\n");
+        img_free(&img);
+        return row->status = 2;
+    }
+    if (s->loud) grade_print_report(&r, row->path, j->ref, &j->o);
+    grade_fill_row(row, &r);
+    row->status = grade_failed(&r);
+    if (row->status == 1 && diagnose(row, &img, s, grade_excess(&r), h, &nh)) row->status = 2;
+    if (write_heatmap(&r, s, row->path) || write_page(row, &r, &img, s, h, nh, same_name)) row->status = 2;
+    grade_free(&r);
+    if (keep && row->status < 2) { *keep = img; img.px = NULL; }
+    img_free(&img);
+    return row->status;
+}
+
+/* Each image in turn, its row printed; the worst status. */
+static int grade_all(run *s, grade_row *rows, image *kept, const unsigned char *same)
+{
+    const grade_job *j = &s->job;
+    int k, rc = 0;
+    for (k = 0; k < j->nimages; k++) {
+        if (s->loud && k) printf("\n");
+        grade_one(&rows[k], s, j->images[k], same[k], kept ? &kept[k] : NULL);
+        if (!s->loud || j->nimages > 1) grade_print_row(&rows[k]);
+        if (rows[k].status > rc) rc = rows[k].status;
+    }
+    return rc;
+}
+
+/* The reference, then the pages' folder: bad input writes nothing. 0, or 2 (said). */
+static int start(run *s)
+{
+    const grade_job *j = &s->job;
+    if (grade_reference_read(&s->R, j->ref, j->var, j->layers) || grade_pages_setup(&s->pages, j->pages, j->report)) return 2;
+    s->loud = j->nimages == 1 || j->details;
+    if (s->R.has_meta) grade_reference_print_provenance(&s->R, j->ref);
+    if (s->R.has_meta) s->job.o.ref_var_dof = s->R.meta.variance_dof;   /* a sobol reference's variance: 3 dof */
+    if (!s->loud) grade_print_class_header(&j->o, j->ref, j->nimages, &s->R.refs, s->R.var_path, s->R.layer_prefix);
+    return 0;
+}
+
+int grade_run(const grade_job *job)
+{
+    int n = job->nimages, k, rc = 0, started;
+    run *s = calloc(1, sizeof *s);
+    grade_row *rows = calloc((size_t)n + 1, sizeof *rows);
+    image *kept = NULL;    /* the graded images, kept for the class's page (--report X.html) */
+    unsigned char *same = calloc((size_t)n + 1, 1);
+    if (job->report && path_ends_with(job->report, ".html") && !(kept = calloc((size_t)n, sizeof *kept))) rc = 2;
+    if (!s || !rows || !same || grade_mark_same_names(job->images, n, same)) rc = 2;
+    if (s) s->job = *job;
+    if (!rc) rc = start(s);
+    started = !rc;
+    if (started) rc = grade_all(s, rows, kept, same);
+    if (started && n > 1) grade_print_summary(rows, n, &s->job.o);
+    if (started && job->report && grade_write_report(job->report, rows, n, &s->job.o, job->ref, &s->R.refs, kept)) rc = 2;
+    for (k = 0; kept && k < n; k++) img_free(&kept[k]);
+    if (s) grade_reference_free(&s->R);
+    free(kept);
+    free(same);
+    free(rows);
+    free(s);
+    return rc;
+}

@@ -1,0 +1,89 @@
+/* page_paths.c — the pages' folder, names and links (page_paths.h). */
+#include "grade/page_paths.h"
+#include <ctype.h>
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include "util/path.h"
+
+/* dir/file (file NULL: dir alone) as an absolute path: the working folder before it when relative. */
+static void absolute(char *out, size_t cap, const char *dir, const char *file)
+{
+    char cwd[PATH_CAP];
+    int n;
+    if (dir[0] != '/' && getcwd(cwd, sizeof cwd)) n = snprintf(out, cap, "%s/%s%s%s", cwd, dir, file ? "/" : "", file ? file : "");
+    else n = snprintf(out, cap, "%s%s%s", dir, file ? "/" : "", file ? file : "");
+    if (n < 0 || (size_t)n >= cap) out[0] = '\0';   /* too long: no link rather than a wrong one */
+}
+
+/* Made if missing, once the reference has been read (bad input writes nothing). */
+int grade_pages_setup(grade_pages *p, const char *pages, const char *report)
+{
+    const char *base = report ? path_file_name(report) : "";
+    size_t stem = strrchr(base, '.') ? (size_t)(strrchr(base, '.') - base) : strlen(base);
+    char dir[PATH_CAP];
+    p->report = report;
+    p->dir[0] = p->back[0] = '\0';
+    if (pages) snprintf(p->dir, sizeof p->dir, "%s", pages);
+    else if (report) snprintf(p->dir, sizeof p->dir, "%.*s-pages", (int)(base - report + stem), report);
+    else return 0;
+    if (mkdir(p->dir, 0777) && errno != EEXIST) {
+        fprintf(stderr, "pathlab grade: cannot create the folder %s for the pages: %s\n", p->dir, strerror(errno));
+        return 1;
+    }
+    if (!path_is_dir(p->dir)) { fprintf(stderr, "pathlab grade: --pages %s is not a folder\n", p->dir); return 1; }
+    snprintf(dir, sizeof dir, "%.*s", base > report ? (int)(base - report) : 1, base > report ? report : ".");
+    if (!report) p->back[0] = '\0';
+    else if (!pages) snprintf(p->back, sizeof p->back, "../%s", base);
+    else absolute(p->back, sizeof p->back, dir, base);
+    return 0;
+}
+
+int grade_page_path(char *out, size_t cap, const grade_pages *p, const char *image, int same_name)
+{
+    const char *base = path_file_name(image);
+    size_t stem, k, n;
+    int used;
+    if (same_name && base > image) base--;   /* with its folder: ana/render.pfm */
+    while (same_name && base > image && base[-1] != '/') base--;
+    stem = path_ends_with(base, ".pfm") ? strlen(base) - 4 : strlen(base);
+    used = snprintf(out, cap, "%s/", p->dir);
+    if (used < 0 || (size_t)used + stem + 6 > cap) {
+        fprintf(stderr, "pathlab grade: the page of %s would have a path over %d characters\n", image, (int)cap - 1);
+        return 1;
+    }
+    for (n = (size_t)used, k = 0; k < stem; k++)   /* ana/render.pfm, when render.pfm is not alone: ana_render.html */
+        out[n++] = (char)(isalnum((unsigned char)base[k]) || strchr("-.", base[k]) ? base[k] : '_');
+    snprintf(out + n, cap - n, ".html");
+    return 0;
+}
+
+void grade_page_link(char *out, size_t cap, const grade_pages *p, const char *page)
+{
+    const char *report = p->report, *slash = report ? strrchr(report, '/') : NULL;
+    size_t n = slash ? (size_t)(slash - report) + 1 : 0;
+    if (n && !strncmp(page, report, n)) snprintf(out, cap, "%s", page + n);
+    else if (page[0] == '/' || !report || (n == 0 && strncmp(page, "../", 3))) snprintf(out, cap, "%s", page);
+    else absolute(out, cap, page, NULL);
+}
+
+static int by_file_name(const void *a, const void *b)
+{
+    return strcmp(path_file_name(**(const char *const *const *)a), path_file_name(**(const char *const *const *)b));
+}
+
+int grade_mark_same_names(const char *const *images, int n, unsigned char *same)
+{
+    const char *const **order = malloc((size_t)n * sizeof *order);
+    int k;
+    if (!order) return 1;
+    for (k = 0; k < n; k++) order[k] = &images[k];
+    qsort(order, (size_t)n, sizeof *order, by_file_name);
+    for (k = 0; k + 1 < n; k++)
+        if (!strcmp(path_file_name(*order[k]), path_file_name(*order[k + 1]))) same[order[k] - images] = same[order[k + 1] - images] = 1;
+    free(order);
+    return 0;
+}

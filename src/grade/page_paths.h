@@ -1,0 +1,27 @@
+/* page_paths.h — where grade's pages go and how they link: the pages' folder (--pages DIR, else
+ * REPORT-pages beside the report, whose links are then relative and survive moving both), each
+ * image's page in it (PAGES/STEM.html; PAGES/ana_render.html when another image of the run has the
+ * same file name), the report's link to a page and the pages' link back to the report. */
+#ifndef PATHLAB_GRADE_PAGE_PATHS_H
+#define PATHLAB_GRADE_PAGE_PATHS_H
+#include <stddef.h>
+#include "sys/output_path.h"
+
+typedef struct {
+    const char *report;      /* --report, or NULL */
+    char dir[PATH_CAP];      /* the pages' folder; "" none */
+    char back[PATH_CAP];     /* the pages' link to the report, or "" */
+} grade_pages;
+
+/* Sets the folder and the link back from pages (--pages, or NULL) and report (or NULL), and makes
+ * the folder if missing. 0, or 1 after saying why. */
+int grade_pages_setup(grade_pages *p, const char *pages, const char *report);
+/* The page of image into out[cap]: PAGES/STEM.html, named by its path when same_name. 0, or 1 when
+ * it does not fit (said). */
+int grade_page_path(char *out, size_t cap, const grade_pages *p, const char *image, int same_name);
+/* The link from the report to the page: relative when it lies under the report's folder, else absolute. */
+void grade_page_link(char *out, size_t cap, const grade_pages *p, const char *page);
+/* same[k] = 1 when another image has images[k]'s file name (students/NAME/render.pfm): their pages
+ * are then named by their paths. 0, or 1 when out of memory. */
+int grade_mark_same_names(const char *const *images, int n, unsigned char *same);
+#endif

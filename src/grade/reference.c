@@ -1,0 +1,80 @@
+/* reference.c — the reference, its variance, its layers and its sidecar read (reference.h). */
+#include "grade/reference.h"
+#include <stdio.h>
+#include <string.h>
+#include "files/render_files.h"
+#include "grade/grade_class.h"
+#include "util/path.h"
+
+/* The variance: --var, else STEM_var.pfm beside the reference, else the one its sidecar names. 0 or 2. */
+static int read_variance(grade_reference *R, const char *path, const char *var, size_t stem)
+{
+    snprintf(R->var_found, sizeof R->var_found, "%.*s_var.pfm", (int)stem, path);
+    if (!var && !path_is_readable(R->var_found) && R->has_meta && R->meta.variance[0])   /* the variance its sidecar names */
+        render_files_variance_path(R->var_found, sizeof R->var_found, path, R->meta.variance);
+    R->var_path = var ? var : (path_is_readable(R->var_found) ? R->var_found : NULL);
+    if (!R->var_path) return 0;
+    if (img_read_pfm(&R->var, R->var_path)) return 2;
+    if (R->var.w != R->ref.w || R->var.h != R->ref.h) {
+        fprintf(stderr, "pathlab grade: %s is %dx%d, the reference %s %dx%d\n", R->var_path, R->var.w, R->var.h, path, R->ref.w, R->ref.h);
+        return 2;
+    }
+    R->refs.var = &R->var;
+    return 0;
+}
+
+/* The layers PREFIX_L0.pfm, PREFIX_L1.pfm ... as far as they exist. 0 or 2. */
+static int read_layers(grade_reference *R, const char *path, const char *layers, size_t stem)
+{
+    char file[PATH_CAP];
+    int k;
+    if (layers) snprintf(R->layer_prefix, sizeof R->layer_prefix, "%s", layers);
+    else snprintf(R->layer_prefix, sizeof R->layer_prefix, "%.*s_split", (int)stem, path);
+    if (!layers && R->has_meta && !strncmp(R->meta.layers, "0:", 2)) {   /* render --split's own REF_L0.pfm ... */
+        if (snprintf(file, sizeof file, "%s_L0.pfm", R->layer_prefix) >= (int)sizeof file || !path_is_readable(file)) snprintf(R->layer_prefix, sizeof R->layer_prefix, "%.*s", (int)stem, path);
+    }
+    for (k = 0; k < GRADE_MAX_LAYERS; k++) {
+        if (snprintf(file, sizeof file, "%s_L%d.pfm", R->layer_prefix, k) >= (int)sizeof file || !path_is_readable(file)) break;
+        if (img_read_pfm(&R->layer[k], file)) return 2;
+        if (R->layer[k].w != R->ref.w || R->layer[k].h != R->ref.h) {
+            fprintf(stderr, "pathlab grade: the layer %s is %dx%d, the reference %dx%d\n", file, R->layer[k].w, R->layer[k].h, R->ref.w, R->ref.h);
+            return 2;
+        }
+        R->refs.layer[k] = &R->layer[k];
+        R->refs.nlayers = k + 1;
+    }
+    return 0;
+}
+
+int grade_reference_read(grade_reference *R, const char *path, const char *var, const char *layers)
+{
+    size_t stem = path_ends_with(path, ".pfm") ? strlen(path) - 4 : strlen(path);
+    img_pfm_info info;
+    memset(R, 0, sizeof *R);
+    if (img_read_pfm_info(&R->ref, path, &info)) return 2;
+    R->refs.ref = &R->ref;
+    R->refs.channels = info.channels;
+    R->has_meta = sidecar_read(&R->meta, path) == 0;
+    if (read_variance(R, path, var, stem) || read_layers(R, path, layers, stem)) return 2;
+    return grade_check_reference(&R->refs, path, R->var_path);
+}
+
+void grade_reference_free(grade_reference *R)
+{
+    int k;
+    img_free(&R->ref);
+    img_free(&R->var);
+    for (k = 0; k < GRADE_MAX_LAYERS; k++) img_free(&R->layer[k]);
+}
+
+void grade_reference_print_provenance(const grade_reference *R, const char *path)
+{
+    const sidecar *m = &R->meta;
+    char ranges[256], spp[96];
+    sidecar_ranges_text(m, ranges, sizeof ranges);
+    if (m->adaptive[0]) snprintf(spp, sizeof spp, "adaptive, a mean of %.1f spp per pixel", m->spp_mean);   /* not the range's width */
+    else snprintf(spp, sizeof spp, "%lld spp", (long long)sidecar_spp(m));
+    printf("reference %s: %s (samples %s), seed %llu, %s %s, camera %s, pathlab %s%s%s\n", path,
+           spp, ranges, (unsigned long long)m->seed, m->scene, m->flags, m->camera, m->revision,
+           m->stopped[0] ? ", stopped by " : "", m->stopped);
+}

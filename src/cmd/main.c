@@ -5,6 +5,7 @@
  * (`pathlab help`) and the parts of its own help (`pathlab NAME --help`, `pathlab help NAME`);
  * util/commands.c dispatches and prints the helps. */
 #include <stdio.h>
+#include <string.h>
 #include "cmd/check_sampler.h"
 #include "cmd/check_sampling.h"
 #include "cmd/bench_rays.h"

@@ -135,7 +135,7 @@ static void describe_render(const render_args *a, const scene *s, sidecar *m)
     snprintf(m->scene_id, sizeof m->scene_id, "fnv1a64:%016" PRIx64, mesh_fingerprint(&s->m));
     snprintf(bmax, sizeof bmax, io->bmax == BOUNCES_INF ? "inf" : "%d", io->bmax);
     /* --rr-below only when it is not 1 (the classic rule): sidecars written before it stay comparable */
-    rr_below = rr_below_for(io, o->sampler);
+    rr_below = render_rr_below(io->rr_below, o->sampler);
     if (io->rr_depth < 0) snprintf(rr, sizeof rr, "off");
     else snprintf(rr, sizeof rr, rr_below == 1.0f ? "%d" : "%d --rr-below %.6g", io->rr_depth, (double)rr_below);
     /* --sampler only when not independent (whatever the default): the sidecars written before it

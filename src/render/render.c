@@ -67,7 +67,7 @@ static void render_pixel(const job *j, thread_state *t, int px, int py)
         ray r;
         vec3 L;
         sampler_start(&smp, o->sampler, o->seed, (uint64_t)idx, (uint64_t)i);
-        if (!o->pixel_center) sampler_2d(&smp, SAMPLER_DIM_PIXEL, &jx, &jy);
+        if (!o->pixel_center) sampler_pixel(&smp, &jx, &jy);
         /* image rows run top to bottom here, gKit's bottom to top: its (x + o, y + o) is our (x + o, row + 1 - o) */
         r = camera_ray(j->cam, (float)px + (jx + (o->pixel_offset - 0.5f)), (float)py + (jy - (o->pixel_offset - 0.5f)));
         L = integrate(j->sc, &o->io, &r, &smp, t->Lk, &t->st);
@@ -273,10 +273,19 @@ static int setup(job *j, int nthreads, render_result *out)
     return j->sums == NULL || (o->pixel_spp && tile_counts(j));
 }
 
-int render(const scene *sc, const camera *cam, const render_opts *o, render_result *out)
+float render_rr_below(float given, sampler_kind kind)
+{
+    if (given > 0.0f) return given;
+    return kind == SAMPLER_INDEPENDENT ? 1.0f : RR_BELOW_STRATIFIED;
+}
+
+int render(const scene *sc, const camera *cam, const render_opts *opts, render_result *out)
 {
     job j;
+    render_opts ro = *opts;   /* with the roulette's T resolved, once */
+    const render_opts *o = &ro;
     int t, nthreads = parallel_threads(o->threads);
+    ro.io.rr_below = render_rr_below(opts->io.rr_below, opts->sampler);
     memset(out, 0, sizeof *out);
     memset(&j, 0, sizeof j);
     j.sc = sc; j.cam = cam; j.o = o; j.out = out;

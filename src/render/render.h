@@ -40,7 +40,14 @@ typedef struct {
     double seconds;
 } render_result;
 
-/* Renders; 0 on success (also when stopped by a signal or --time: see spp), nonzero (after
+/* The roulette's T (integrator_opts.rr_below) of a render: `given` if > 0 (--rr-below), else 1 with
+ * independent samples (the classic p_survive = max(beta)) and 1/3 with the Sobol samplers, whose
+ * stratified samples leave the roulette's own noise as most of the error (docs/estimators.md,
+ * "Where to stop"). */
+#define RR_BELOW_STRATIFIED (1.0f / 3.0f)
+float render_rr_below(float given, sampler_kind kind);
+
+/* Renders (o->io.rr_below 0: render_rr_below's default); 0 on success (also when stopped by a signal or --time: see spp), nonzero (after
  * printing why) if memory ran out. */
 int render(const scene *sc, const camera *cam, const render_opts *o, render_result *out);
 void render_result_free(render_result *r);

@@ -250,7 +250,7 @@ static void test_render_defaults(void)
     cli_flag t[RENDER_NFLAGS];
     int i, j, dup = 0;
     render_args_init(&a);
-    check(!strcmp(a.cmd, "render") && a.ro.spp == 16 && a.ro.seed == 1 && a.ro.io.bmin == 0 && a.ro.io.bmax == BOUNCES_INF
+    check(!strcmp(a.cmd, "render") && a.spp == 16 && a.ro.seed == 1 && a.ro.io.bmin == 0 && a.ro.io.bmax == BOUNCES_NO_END
           && a.ro.io.rr_depth == 3 && a.ro.io.direct == DIRECT_MIS_POWER && a.ro.io.light == LIGHT_AREA && a.ro.io.dir == DIR_BRDF,
           "render_args_init: the defaults", NULL);
     render_flag_table(&a, t);
@@ -289,7 +289,7 @@ static void test_render_flags(void)
     rc = render_flag_at(&a, 1, &i);
     check(rc == 0 && i == 2 && a.ro.io.bmin == 2 && a.ro.io.bmax == 2, "render_parse_flag: --bounce K is K:K", "status %d, i %d", rc, i);
     rc = render_flag_at(&a, 3, NULL);
-    check(rc == 0 && a.ro.io.bmin == 0 && a.ro.io.bmax == BOUNCES_INF, "render_parse_flag: --bounces 0:inf", NULL);
+    check(rc == 0 && a.ro.io.bmin == 0 && a.ro.io.bmax == BOUNCES_NO_END, "render_parse_flag: --bounces 0:inf", NULL);
     rc = render_flag_at(&a, 5, NULL);
     check(rc == 1 && strstr(err, "pathlab compare: one scene only") && strstr(err, "other.obj"), "render_parse_flag: a second scene", "'%s'", err);
     rc = render_flag_at(&a, 6, NULL);

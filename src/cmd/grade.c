@@ -259,7 +259,7 @@ static int read_reference(reference *R, const grade_args *a)
     }
     if (a->layers) snprintf(R->layer_prefix, sizeof R->layer_prefix, "%s", a->layers);
     else snprintf(R->layer_prefix, sizeof R->layer_prefix, "%.*s_split", (int)stem, a->ref);
-    if (!a->layers && R->has_meta && !strncmp(R->meta.layers, "0:", 2)) {   /* render --split's own REF_L0.pfm ... */
+    if (!a->layers && R->has_meta && R->meta.layers_n > 0 && R->meta.layers_first == 0) {   /* render --split's own REF_L0.pfm ... */
         char first[4200];
         snprintf(first, sizeof first, "%s_L0.pfm", R->layer_prefix);
         if (!access_ok(first)) snprintf(R->layer_prefix, sizeof R->layer_prefix, "%.*s", (int)stem, a->ref);

@@ -8,6 +8,7 @@
 #include "files/render_files.h"
 #include "stats/combine.h"
 #include "sampler/sampler.h"
+#include "tracer/integrator.h"
 #include "util/cli.h"
 #include "sys/output_path.h"
 
@@ -59,17 +60,26 @@ static int check_inputs(input *in, int n, sidecar *all)
     return 0;
 }
 
+/* "'A:B'", or "none" */
+static const char *layers_text(const sidecar *m, char *buf, size_t cap)
+{
+    if (m->layers_n > 0) snprintf(buf, cap, "'%d:%d'", m->layers_first, m->layers_first + m->layers_n - 1);
+    else snprintf(buf, cap, "none");
+    return buf;
+}
+
 /* The layers to merge: those of the first input if every input has the same, else none (said so). */
 static int common_layers(const input *in, int n)
 {
+    char a[32], b[32];
     int i;
     for (i = 1; i < n; i++)
-        if (strcmp(in[i].meta.layers, in[0].meta.layers)) {
-            fprintf(stderr, "pathlab merge: note: %s has layers '%s' and %s '%s': merging the totals only\n", in[0].path,
-                    in[0].meta.layers, in[i].path, in[i].meta.layers);
+        if (in[i].meta.layers_n != in[0].meta.layers_n || (in[0].meta.layers_n && in[i].meta.layers_first != in[0].meta.layers_first)) {
+            fprintf(stderr, "pathlab merge: note: %s has layers %s and %s %s: merging the totals only\n", in[0].path,
+                    layers_text(&in[0].meta, a, sizeof a), in[i].path, layers_text(&in[i].meta, b, sizeof b));
             return 0;
         }
-    return in[0].meta.layers[0] != '\0';
+    return in[0].meta.layers_n > 0;
 }
 
 /* Adds every input to the sums (one combine_acc per layer), reading one input at a time. */
@@ -96,7 +106,7 @@ static int merge(const char *out, const char *var_out, input *in, int n)
 {
     render_files first;
     sidecar all;
-    combine_acc acc[1 + 1001];
+    combine_acc acc[2 + BOUNCES_CAP];   /* the total and L0 .. L_BOUNCES_CAP */
     int k, nlayers, err = 0;
     if (check_inputs(in, n, &all)) return 2;
     if (render_files_read(&first, in[0].path, var_out != NULL, "merge")) return 2;   /* the size and the layers */
@@ -106,7 +116,7 @@ static int merge(const char *out, const char *var_out, input *in, int n)
     err = err ? 2 : add_inputs(in, n, nlayers, var_out != NULL, acc, &first) ? 2 : 0;
     for (k = 0; k < nlayers && !err; k++) combine_result(&acc[k], first.mean[k].px, var_out ? first.var[k].px : NULL);
     all.stopped[0] = '\0';
-    if (nlayers == 1) all.layers[0] = '\0';
+    if (nlayers == 1) all.layers_n = 0;
     if (!err && render_files_write(out, var_out, 0.0f, &all, first.mean, first.var, nlayers, first.bmin)) err = 1;
     if (!err) {
         char ranges[8192];

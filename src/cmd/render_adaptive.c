@@ -3,8 +3,6 @@
 #include <stdio.h>
 #include <string.h>
 
-#define DEFAULT_CAP 65536   /* --target-error without --spp: the cap of n(x) */
-
 void render_adaptive_flag_table(render_args *a, cli_flag t[RENDER_ADAPTIVE_NFLAGS])
 {
     const cli_flag flags[RENDER_ADAPTIVE_NFLAGS] = {
@@ -47,12 +45,10 @@ int render_adaptive_check(render_args *a)
     if (a->target_given) a->adaptive = 1;
     if (check_combinations(a)) return 1;
     if (!a->adaptive) return 0;
-    if (a->target_given && !a->spp_given) a->ro.spp = DEFAULT_CAP;
-    if (a->spp_given && a->ao.min_spp > a->ro.spp) {
-        fprintf(stderr, "pathlab render: --min-spp %d is over the cap --spp %d\n", a->ao.min_spp, a->ro.spp);
+    if (a->spp_given && a->ao.min_spp > a->spp) {
+        fprintf(stderr, "pathlab render: --min-spp %d is over the cap --spp %d\n", a->ao.min_spp, a->spp);
         return 1;
     }
-    a->ao.time_limit = a->ro.time_limit;
     return 0;
 }
 

@@ -7,10 +7,10 @@
 #include "files/sidecar.h"
 
 #define RENDER_ADAPTIVE_NFLAGS 6   /* the flags and the closing NULL entry */
+#define RENDER_ADAPTIVE_DEFAULT_CAP 65536   /* --target-error without --spp: the cap of n(x) */
 
 void render_adaptive_flag_table(render_args *a, cli_flag t[RENDER_ADAPTIVE_NFLAGS]);
-/* After the flags were read, before --time's default cap: 0, or 1 after printing why. Sets
- * a->adaptive (--target-error implies it), the default cap and a->ao's time. */
+/* After the flags were read: 0, or 1 after printing why. Sets a->adaptive (--target-error implies it). */
 int render_adaptive_check(render_args *a);
 /* The adaptive flags in one canonical form, into m->adaptive ("" if not adaptive). */
 void render_adaptive_describe(const render_args *a, sidecar *m);

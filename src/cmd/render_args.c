@@ -17,20 +17,21 @@ static int parse_as(const render_args *a, const char *flag, const char *v, cli_k
     return cli_parse_value(a->cmd, &f, v, NULL);
 }
 
-/* --bounces A:B, whole numbers with 0 <= A <= B <= 1000, or B = inf */
+/* --bounces A:B, whole numbers with 0 <= A <= B <= BOUNCES_CAP, or B = inf (BOUNCES_NO_END) */
 static int parse_bounces(void *ctx, const char *flag, const char *v)
 {
     render_args *a = ctx;
     const char *b;
-    char *end;
-    long lo = strtol(v, &end, 10), hi = BOUNCES_INF;
-    int ok = end != v && *end == ':' && lo >= 0 && lo <= 1000;
+    char *end, want[96];
+    long lo = strtol(v, &end, 10), hi = BOUNCES_NO_END;
+    int ok = end != v && *end == ':' && lo >= 0 && lo <= BOUNCES_CAP;
     if (ok && strcmp(end + 1, "inf")) {
         b = end + 1;
         hi = strtol(b, &end, 10);
-        ok = end != b && !*end && lo <= hi && hi <= 1000;
+        ok = end != b && !*end && lo <= hi && hi <= BOUNCES_CAP;
     }
-    if (!ok) return cli_fail(a->cmd, flag, "A:B with 0 <= A <= B <= 1000, B a whole number or inf (e.g. 0:1, 2:inf)", v);
+    snprintf(want, sizeof want, "A:B with 0 <= A <= B <= %d, B a whole number or inf (e.g. 0:1, 2:inf)", BOUNCES_CAP);
+    if (!ok) return cli_fail(a->cmd, flag, want, v);
     a->ro.io.bmin = (int)lo;
     a->ro.io.bmax = (int)hi;
     return 0;
@@ -47,8 +48,8 @@ static int parse_samples(void *ctx, const char *flag, const char *v)
     hi = ok ? strtoll(b, &end, 10) : 0;
     ok = ok && end != b && !*end && hi > lo && hi - lo <= (1 << 30) && hi <= (1LL << 62);
     if (!ok) return cli_fail(a->cmd, flag, "A:B, the sample indices A to B-1 (0 <= A < B, at most 2^30 samples; e.g. 0:64, 64:128)", v);
-    a->ro.first = lo;
-    a->ro.spp = (int)(hi - lo);
+    a->samples[0] = lo;
+    a->samples[1] = hi;
     return 0;
 }
 
@@ -56,7 +57,7 @@ static int parse_samples(void *ctx, const char *flag, const char *v)
 static int parse_bounce(void *ctx, const char *flag, const char *v)
 {
     render_args *a = ctx;
-    if (parse_as(a, flag, v, CLI_INT, &a->ro.io.bmin, 0, 1000, NULL)) return 1;
+    if (parse_as(a, flag, v, CLI_INT, &a->ro.io.bmin, 0, BOUNCES_CAP, NULL)) return 1;
     a->ro.io.bmax = a->ro.io.bmin;
     return 0;
 }
@@ -68,7 +69,11 @@ static int parse_rr(void *ctx, const char *flag, const char *v)
     char *end;
     long d = strtol(v, &end, 10);
     if (!strcmp(v, "off")) { a->ro.io.rr_depth = -1; return 0; }
-    if (end == v || *end || d < 0 || d > 1000) return cli_fail(a->cmd, flag, "a whole number from 0 to 1000, or off", v);
+    if (end == v || *end || d < 0 || d > BOUNCES_CAP) {
+        char want[64];
+        snprintf(want, sizeof want, "a whole number from 0 to %d, or off", BOUNCES_CAP);
+        return cli_fail(a->cmd, flag, want, v);
+    }
     a->ro.io.rr_depth = (int)d;
     return 0;
 }
@@ -162,7 +167,7 @@ void render_flag_table(render_args *a, cli_flag t[RENDER_NFLAGS])
     const cli_flag flags[RENDER_NFLAGS] = {
         {"-o", CLI_STRING, &a->out, 0, 0, NULL, NULL, NULL},
         {"--variance", CLI_STRING, &a->variance, 0, 0, NULL, NULL, NULL},
-        {"--spp", CLI_INT, &a->ro.spp, 1, 1 << 30, NULL, NULL, &a->spp_given},
+        {"--spp", CLI_INT, &a->spp, 1, 1 << 30, NULL, NULL, &a->spp_given},
         {"--samples", CLI_CUSTOM, NULL, 0, 0, NULL, parse_samples, &a->samples_given},
         {"--time", CLI_DOUBLE, &a->ro.time_limit, 1e-3, 1e9, NULL, NULL, NULL},
         {"--resume", CLI_SWITCH, &a->resume, 0, 0, NULL, NULL, NULL},
@@ -216,7 +221,7 @@ void render_args_init(render_args *a)
 {
     memset(a, 0, sizeof *a);
     a->cmd = "render";
-    a->ro.spp = 16;
+    a->spp = 16;
     a->ro.seed = 1;
     a->ro.pixel_offset = 0.5f;
     a->ro.threads = parallel_default_threads();
@@ -225,7 +230,7 @@ void render_args_init(render_args *a)
     a->ro.io.dir = DIR_BRDF;
     a->ro.io.direct = DIRECT_MIS_POWER;
     a->ro.io.bmin = 0;
-    a->ro.io.bmax = BOUNCES_INF;
+    a->ro.io.bmax = BOUNCES_NO_END;
     a->ro.io.rr_depth = 3;
     adaptive_opts_init(&a->ao);
 }

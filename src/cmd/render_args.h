@@ -13,10 +13,12 @@ typedef struct {
     float exposure;
     view vw, flags;                  /* flags: values given on the command line */
     int eye, target, up, fov, size;  /* which camera flags were given */
+    int spp;                         /* --spp N: the samples the image is to hold (16 if not given) */
+    int64_t samples[2];              /* --samples A:B: the sample indices A .. B - 1 */
     int spp_given, samples_given, resume;
     int sampler_given;               /* --sampler given (else render_cmd picks one: render_default_sampler) */
     const char *orbiter, *view_file, *write_view;  /* --orbiter, --view, --write-view (NULL if not given) */
-    render_opts ro;
+    render_opts ro;                  /* the other flags' values (ro.first, ro.spp: see render_plan) */
     /* render only (cmd/render_adaptive.h): adaptive sampling */
     int adaptive, target_given, pilot_given, min_given;
     const char *sample_count;        /* --sample-count FILE.pfm (NULL if not given) */

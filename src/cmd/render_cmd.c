@@ -8,6 +8,7 @@
 #include "cmd/render_args.h"
 #include "cmd/render_adaptive.h"
 #include "files/render_files.h"
+#include "render/plan.h"
 #include "cmd/version.h"
 #include "stats/combine.h"
 #include "sys/interrupt.h"
@@ -24,16 +25,16 @@ static sampler_kind render_default_sampler(const render_args *a)
 }
 
 /* What a Sobol sampler cannot do: 1 after saying why. */
-static int check_sampler_args(const render_args *a)
+static int check_sampler_args(const render_args *a, const render_plan *p)
 {
-    const char *name = SAMPLER_NAMES[a->ro.sampler];
-    if (a->ro.first + a->ro.spp > sampler_max_index(a->ro.sampler)) {
+    const char *name = SAMPLER_NAMES[p->ro.sampler];
+    if (p->ro.first + p->ro.spp > sampler_max_index(p->ro.sampler)) {
         fprintf(stderr, "pathlab render: --sampler %s takes sample indices below %lld (2^32 points in each of its %d "
                 "scrambling(s); past that the points would repeat): use --sampler independent\n",
-                name, (long long)sampler_max_index(a->ro.sampler), sampler_groups(a->ro.sampler));
+                name, (long long)sampler_max_index(p->ro.sampler), sampler_groups(p->ro.sampler));
         return 1;
     }
-    if (a->ro.sampler == SAMPLER_SOBOL1 && a->variance) {
+    if (p->ro.sampler == SAMPLER_SOBOL1 && a->variance) {
         fprintf(stderr, "pathlab render: --variance %s: --sampler sobol1 draws one scrambled sequence per pixel, whose "
                 "samples are not independent: no variance of the mean can be estimated from them. Use --sampler sobol "
                 "(4 independent scramblings a pixel: a variance with 3 degrees of freedom) or independent\n", a->variance);
@@ -51,7 +52,7 @@ static int check_outputs(const render_args *a)
     char layer[4200];
     int k;
     if (output_path_check("render", "-o", a->out, IMG_EXTENSIONS)) return 1;
-    for (k = a->ro.io.bmin; a->ro.split && a->ro.io.bmax != BOUNCES_INF && k <= a->ro.io.bmax; k++) {
+    for (k = a->ro.io.bmin; a->ro.split && a->ro.io.bmax != BOUNCES_NO_END && k <= a->ro.io.bmax; k++) {
         render_files_layer_path(layer, sizeof layer, a->out, k);
         if (output_path_check("render", "--split", layer, IMG_EXTENSIONS)) return 1;
         if (!a->variance) continue;
@@ -80,7 +81,7 @@ static int check_render_args(render_args *a)
     if (!a->scene) { fprintf(stderr, "pathlab render: needs a scene: pathlab render SCENE.obj -o FILE\n"); return 1; }
     if (!a->out) { fprintf(stderr, "pathlab render: needs an output: -o FILE.pfm, -o FILE.ppm or -o FILE.png\n"); return 1; }
     if (check_outputs(a)) return 1;
-    if (a->ro.split && a->ro.io.bmax == BOUNCES_INF) {
+    if (a->ro.split && a->ro.io.bmax == BOUNCES_NO_END) {
         fprintf(stderr, "pathlab render: --split needs a last bounce, e.g. --bounces 0:8\n");
         return 1;
     }
@@ -96,13 +97,30 @@ static int check_render_args(render_args *a)
         fprintf(stderr, "pathlab render: --resume needs --spp N (the samples wanted in all) or --time SEC\n");
         return 1;
     }
-    if (render_adaptive_check(a) || render_check_camera_flags(a)) return 1;
-    if (a->ro.time_limit > 0 && !a->spp_given && !a->samples_given && !a->target_given) a->ro.spp = 1 << 30;   /* --time alone: no cap */
-    if (!a->sampler_given) a->ro.sampler = render_default_sampler(a);
-    return check_sampler_args(a);
+    return render_adaptive_check(a) || render_check_camera_flags(a);
 }
 
-static int parse_render_args(render_args *a, int argc, char **argv)
+/* The plan of the render the valid flags a ask for (before --resume adds what the image had). */
+static void make_plan(const render_args *a, render_plan *p)
+{
+    p->ro = a->ro;
+    p->ro.sampler = a->sampler_given ? a->ro.sampler : render_default_sampler(a);
+    p->ro.io.rr_below = render_rr_below(a->ro.io.rr_below, p->ro.sampler);
+    p->ro.first = a->samples_given ? a->samples[0] : 0;
+    if (a->samples_given) p->ro.spp = (int)(a->samples[1] - a->samples[0]);
+    else if (a->spp_given) p->ro.spp = a->spp;
+    else if (a->target_given) p->ro.spp = RENDER_ADAPTIVE_DEFAULT_CAP;
+    else if (a->ro.time_limit > 0) p->ro.spp = RENDER_SPP_UNTIL_TIME;
+    else p->ro.spp = a->spp;
+    p->had = 0;
+    p->total = p->ro.spp;
+    p->adaptive = a->adaptive;
+    p->ao = a->ao;
+    p->ao.time_limit = a->ro.time_limit;
+    p->ao.pilot_rr_below = render_rr_below(a->ro.io.rr_below, SAMPLER_INDEPENDENT);
+}
+
+static int parse_render_args(render_args *a, render_plan *p, int argc, char **argv)
 {
     cli_flag t[RENDER_NFLAGS], ta[RENDER_ADAPTIVE_NFLAGS];
     const cli_flag *tables[3];
@@ -116,28 +134,28 @@ static int parse_render_args(render_args *a, int argc, char **argv)
     tables[2] = NULL;
     if (cli_parse("render", argc, argv, tables, a, words, 1, &nwords)) return 1;
     a->scene = nwords ? words[0] : NULL;
-    return check_render_args(a);
+    if (check_render_args(a)) return 1;
+    make_plan(a, p);
+    return check_sampler_args(a, p);
 }
 
 /* The sidecar of this render, its sample range aside: what must match for pieces to merge. */
-static void describe_render(const render_args *a, const scene *s, sidecar *m)
+static void describe_render(const render_args *a, const render_plan *p, const scene *s, sidecar *m)
 {
-    const render_opts *o = &a->ro;
+    const render_opts *o = &p->ro;
     const integrator_opts *io = &o->io;
     const view *v = &a->vw;
     char bmax[16], rr[48];
-    float rr_below;
     memset(m, 0, sizeof *m);
     strcpy(m->kind, "mean");
     strcpy(m->layer, "total");
     m->seed = o->seed;
     snprintf(m->scene, sizeof m->scene, "%s", a->scene);
     snprintf(m->scene_id, sizeof m->scene_id, "fnv1a64:%016" PRIx64, mesh_fingerprint(&s->m));
-    snprintf(bmax, sizeof bmax, io->bmax == BOUNCES_INF ? "inf" : "%d", io->bmax);
+    snprintf(bmax, sizeof bmax, io->bmax == BOUNCES_NO_END ? "inf" : "%d", io->bmax);
     /* --rr-below only when it is not 1 (the classic rule): sidecars written before it stay comparable */
-    rr_below = render_rr_below(io->rr_below, o->sampler);
     if (io->rr_depth < 0) snprintf(rr, sizeof rr, "off");
-    else snprintf(rr, sizeof rr, rr_below == 1.0f ? "%d" : "%d --rr-below %.6g", io->rr_depth, (double)rr_below);
+    else snprintf(rr, sizeof rr, io->rr_below == 1.0f ? "%d" : "%d --rr-below %.6g", io->rr_depth, (double)io->rr_below);
     /* --sampler only when not independent (whatever the default): the sidecars written before it
      * existed stay comparable, and a sidecar without it is independent */
     snprintf(m->flags, sizeof m->flags, "--bounces %d:%s --light %s --dir %s --direct %s --rr %s --pixel-offset %.9g%s%s%s",
@@ -153,21 +171,22 @@ static void describe_render(const render_args *a, const scene *s, sidecar *m)
 }
 
 /* --sampler sobol cannot be resumed: 1 after saying why. */
-static int refuse_sobol_resume(const render_args *a, const sidecar *had)
+static int refuse_sobol_resume(const render_args *a, const render_plan *p, const sidecar *had)
 {
-    if (!sidecar_is_sobol(had) && a->ro.sampler == SAMPLER_INDEPENDENT) return 0;
+    if (!sidecar_is_sobol(had) && p->ro.sampler == SAMPLER_INDEPENDENT) return 0;
     fprintf(stderr, "pathlab render: --resume: %s%s%s%s: a Sobol render cannot be resumed: its file keeps the mean and the "
             "variance, not the sums of each scrambling that the variance needs, and more points of the same "
             "scrambled sequences are not independent of those it has. Render it again with the --spp wanted, "
             "or use --sampler independent for renders to resume\n", a->out,
             sidecar_is_sobol(had) ? " was rendered with --sampler " : " (this render: --sampler ",
-            sidecar_is_sobol(had) ? had->sampler : SAMPLER_NAMES[a->ro.sampler], sidecar_is_sobol(had) ? "" : ")");
+            sidecar_is_sobol(had) ? had->sampler : SAMPLER_NAMES[p->ro.sampler], sidecar_is_sobol(had) ? "" : ")");
     return 1;
 }
 
-/* --resume: reads the render at -o, checks it is this render, and sets the samples still to do
- * (from the end of its samples up to --spp in all). 1 if done already (prints so), 2 on error. */
-static int prepare_resume(render_args *a, const sidecar *now, render_files *prev, char *var_out, size_t cap)
+/* --resume: reads the render at -o, checks it is this render, and sets the plan's samples: those
+ * it had, and the rest up to --spp in all from the end of its samples. 1 if done already (prints
+ * so), 2 on error. */
+static int prepare_resume(render_args *a, render_plan *p, const sidecar *now, render_files *prev, char *var_out, size_t cap)
 {
     sidecar had;
     int64_t have;
@@ -177,7 +196,7 @@ static int prepare_resume(render_args *a, const sidecar *now, render_files *prev
         return 2;
     }
     if (rc < 0) render_files_read(prev, a->out, 0, "render");   /* says that it has no sidecar */
-    if (rc || refuse_sobol_resume(a, &had)) return 2;
+    if (rc || refuse_sobol_resume(a, p, &had)) return 2;
     if (render_files_read(prev, a->out, had.variance[0] != '\0', "render")) return 2;
     if (sidecar_check_same(&prev->meta, now, "render --resume", a->out, "this render")) return 2;
     if (a->variance && !had.variance[0]) {
@@ -194,12 +213,13 @@ static int prepare_resume(render_args *a, const sidecar *now, render_files *prev
         a->variance = var_out;
     }
     have = sidecar_spp(&had);
-    if (have >= a->ro.spp) {
-        fprintf(stderr, "pathlab render: %s already has %" PRId64 " spp (--spp %d): nothing to add\n", a->out, have, a->ro.spp);
+    if (have >= p->total) {
+        fprintf(stderr, "pathlab render: %s already has %" PRId64 " spp (--spp %" PRId64 "): nothing to add\n", a->out, have, p->total);
         return 1;
     }
-    a->ro.first = had.range[had.nranges - 1][1];
-    a->ro.spp -= (int)have;
+    p->had = have;
+    p->ro.first = had.range[had.nranges - 1][1];
+    p->ro.spp = (int)(p->total - have);
     return 0;
 }
 
@@ -221,26 +241,27 @@ static int combine_with(const render_files *prev, int64_t n, render_result *r)
 
 /* What was rendered, into the sidecar: the samples (with those of the resumed render), and why it
  * stopped; adaptive: the range of the pixels with the most samples, and the counts' cap and mean. */
-static int finish_meta(sidecar *m, const render_args *a, const render_result *r, const render_files *prev, const adaptive_result *ar)
+static int finish_meta(sidecar *m, const render_args *a, const render_plan *p, const render_result *r, const render_files *prev,
+                       const adaptive_result *ar)
 {
     m->nranges = 1;
-    m->range[0][0] = a->ro.first;
-    m->range[0][1] = a->ro.first + r->spp;
-    m->spp_cap = a->ro.spp;
+    m->range[0][0] = p->ro.first;
+    m->range[0][1] = p->ro.first + r->spp;
+    m->spp_cap = p->ro.spp;
     m->spp_mean = ar->mean_spp;
     m->pilot_seed = ar->pilot_seed;
     m->variance_dof = r->variance_dof;
     if (r->interrupted) snprintf(m->stopped, sizeof m->stopped, "%s", interrupt_name(r->interrupted));
-    else if (a->adaptive && a->target_given && r->spp < ar->max_spp) snprintf(m->stopped, sizeof m->stopped, "time");
-    else if (!a->adaptive && r->spp < a->ro.spp && a->ro.time_limit > 0 && a->spp_given) snprintf(m->stopped, sizeof m->stopped, "time");
+    else if (p->adaptive && a->target_given && r->spp < ar->max_spp) snprintf(m->stopped, sizeof m->stopped, "time");
+    else if (!p->adaptive && r->spp < p->ro.spp && p->ro.time_limit > 0 && a->spp_given) snprintf(m->stopped, sizeof m->stopped, "time");
     return prev->nlayers ? sidecar_add_ranges(m, &prev->meta, "this render", a->out) : 0;
 }
 
 /* After a stop by a signal or --time: what was written, and how to go on. */
-static void report_stop(const render_args *a, const render_result *r, const sidecar *m, const adaptive_result *ar)
+static void report_stop(const render_args *a, const render_plan *p, const render_result *r, const sidecar *m, const adaptive_result *ar)
 {
     char el[32];
-    int64_t spp = sidecar_spp(m), asked = spp - r->spp + a->ro.spp;
+    int64_t spp = sidecar_spp(m), asked = p->total;
     progress_duration(el, sizeof el, r->seconds);
     if (r->interrupted && a->adaptive)
         fprintf(stderr, "pathlab render: interrupted (%s) after %s at sample %d of the %d the noisiest pixels wanted "
@@ -254,11 +275,11 @@ static void report_stop(const render_args *a, const render_result *r, const side
         fprintf(stderr, "pathlab render: --time %.9g s: stopped at sample %d of the %d the noisiest pixels wanted: those pixels "
                         "have fewer samples than --target-error asks (see the sample count), written %s\n", a->ro.time_limit, r->spp,
                 ar->max_spp, a->out);
-    else if (!a->adaptive && r->spp < a->ro.spp && a->spp_given)
+    else if (!a->adaptive && r->spp < p->ro.spp && a->spp_given)
         fprintf(stderr, "pathlab render: --time %.9g s: %" PRId64 " of %" PRId64 " spp fitted, written %s\n", a->ro.time_limit, spp, asked, a->out);
 }
 
-static int render_and_write(render_args *a, const scene *s, const camera *cam)
+static int render_and_write(render_args *a, render_plan *p, const scene *s, const camera *cam)
 {
     render_files prev;
     render_result r;
@@ -268,19 +289,19 @@ static int render_and_write(render_args *a, const scene *s, const camera *cam)
     int rc = 0, err;
     memset(&prev, 0, sizeof prev);
     memset(&ar, 0, sizeof ar);
-    describe_render(a, s, &m);
-    if (a->resume && (rc = prepare_resume(a, &m, &prev, var_out, sizeof var_out)) != 0) {
+    describe_render(a, p, s, &m);
+    if (a->resume && (rc = prepare_resume(a, p, &m, &prev, var_out, sizeof var_out)) != 0) {
         render_files_free(&prev);
         return rc == 1 ? 0 : 2;
     }
     interrupt_install();   /* from here, a first Ctrl-C stops after the pass and writes what it reached */
-    if (a->adaptive ? adaptive_render(s, cam, &a->ro, &a->ao, &r, &ar) : render(s, cam, &a->ro, &r)) { render_files_free(&prev); return 1; }
-    if (!a->ro.quiet && a->adaptive) render_adaptive_print(&ar, r.seconds);
-    else if (!a->ro.quiet) render_print_stats(&r, r.spp, cam->width * cam->height);
-    err = finish_meta(&m, a, &r, &prev, &ar) || (prev.nlayers && combine_with(&prev, sidecar_spp(&prev.meta), &r));
+    if (p->adaptive ? adaptive_render(s, cam, &p->ro, &p->ao, &r, &ar) : render(s, cam, &p->ro, &r)) { render_files_free(&prev); return 1; }
+    if (!p->ro.quiet && p->adaptive) render_adaptive_print(&ar, r.seconds);
+    else if (!p->ro.quiet) render_print_stats(&r, r.spp, cam->width * cam->height);
+    err = finish_meta(&m, a, p, &r, &prev, &ar) || (prev.nlayers && combine_with(&prev, sidecar_spp(&prev.meta), &r));
     err = err || render_files_write_all(a->out, a->variance, a->sample_count, &ar.count, a->exposure, &m, r.mean, r.var,
-                                        r.nlayers, a->ro.io.bmin);
-    if (!err) report_stop(a, &r, &m, &ar);
+                                        r.nlayers, p->ro.io.bmin);
+    if (!err) report_stop(a, p, &r, &m, &ar);
     if (!err && r.interrupted) rc = 128 + r.interrupted;
     render_result_free(&r);
     render_files_free(&prev);
@@ -291,10 +312,11 @@ static int render_and_write(render_args *a, const scene *s, const camera *cam)
 int render_main(int argc, char **argv)
 {
     render_args a;
+    render_plan p;
     scene s;
     camera cam;
     int rc;
-    if (parse_render_args(&a, argc, argv)) return 2;
+    if (parse_render_args(&a, &p, argc, argv)) return 2;
     if (scene_load(&s, a.scene, a.ro.threads, a.ro.quiet)) return 2;
     if (!a.ro.quiet)
         fprintf(stderr, "%s: %d triangles (%d degenerate dropped), %d emitting, %d materials; loaded in %.0f ms, BVH in %.0f ms\n",
@@ -302,7 +324,7 @@ int render_main(int argc, char **argv)
     if (render_make_camera(&a, &s, &cam)) { scene_free(&s); return 2; }
     if (s.lights.n == 0)
         fprintf(stderr, "pathlab render: warning: %s has no emitters (no material with Ke > 0): the image is black\n", a.scene);
-    rc = render_and_write(&a, &s, &cam);
+    rc = render_and_write(&a, &p, &s, &cam);
     scene_free(&s);
     return rc;
 }

@@ -77,7 +77,8 @@ static int read_layers(view_data *d, const view_args *a, const char **first)
     sidecar m;
     int k, lo = 0, hi = VIEW_MAX_LAYERS - 1;
     char path[VIEW_PATH];
-    if (!a->layers && (sidecar_read(&m, a->words[0]) || sscanf(m.layers, "%d:%d", &lo, &hi) != 2)) return 0;
+    if (!a->layers && (sidecar_read(&m, a->words[0]) || m.layers_n == 0)) return 0;
+    if (!a->layers) lo = m.layers_first, hi = m.layers_first + m.layers_n - 1;
     for (k = lo; k <= hi && k < VIEW_MAX_LAYERS && d->nlayers < VIEW_MAX_LAYERS; k++) {
         html_image *h = &d->strip[d->nlayers];
         if (a->layers) snprintf(path, sizeof path, "%s_L%d.pfm", a->layers, k);

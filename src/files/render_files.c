@@ -1,5 +1,6 @@
 /* render_files.c — a render's files and their sidecars, written and read back. */
 #include "files/render_files.h"
+#include "render/render.h"
 #include "sys/interrupt.h"
 #include <errno.h>
 #include <stdio.h>
@@ -142,19 +143,21 @@ int render_files_write_all(const char *out, const char *var_out, const char *cou
     if (count_out) variance_name(m.sample_count, sizeof m.sample_count, out, count_out);
     else m.sample_count[0] = '\0';
     for (i = 0; i < nlayers && !err; i++) {
+        int k = render_bounce_of_layer(i, bmin);
         if (i == 0) snprintf(path, sizeof path, "%s", out), snprintf(m.layer, sizeof m.layer, "total");
-        else render_files_layer_path(path, sizeof path, out, bmin + i - 1), snprintf(m.layer, sizeof m.layer, "L%d", bmin + i - 1);
+        else render_files_layer_path(path, sizeof path, out, k), snprintf(m.layer, sizeof m.layer, "L%d", k);
         if (var_out && i == 0) snprintf(vpath, sizeof vpath, "%s", var_out);
-        else if (var_out) render_files_layer_path(vpath, sizeof vpath, var_out, bmin + i - 1);
+        else if (var_out) render_files_layer_path(vpath, sizeof vpath, var_out, k);
         strcpy(m.kind, "mean");
         if (var_out) variance_name(m.variance, sizeof m.variance, path, vpath);
         else m.variance[0] = '\0';
-        if (i > 0) m.layers[0] = '\0';   /* only the total lists the layers */
-        else if (nlayers > 1) snprintf(m.layers, sizeof m.layers, "%d:%d", bmin, bmin + nlayers - 2);
+        m.layers_first = bmin;   /* only the total lists the layers */
+        m.layers_n = i == 0 ? nlayers - 1 : 0;
         err = write_one(&fs, path, &mean[i], exposure, &m);
         if (!err && var_out) {
             strcpy(m.kind, "variance");
-            m.variance[0] = m.layers[0] = '\0';
+            m.variance[0] = '\0';
+            m.layers_n = 0;
             err = write_one(&fs, vpath, &var[i], 0.0f, &m);
         }
         if (i == 0) m.sample_count[0] = '\0';   /* only the total names the counts */
@@ -162,7 +165,8 @@ int render_files_write_all(const char *out, const char *var_out, const char *cou
     if (!err && count_out) {
         strcpy(m.kind, "sample-count");
         strcpy(m.layer, "total");
-        m.variance[0] = m.layers[0] = '\0';
+        m.variance[0] = '\0';
+        m.layers_n = 0;
         err = write_one(&fs, count_out, count, 0.0f, &m);
     }
     return finish(&fs, !err) || err;
@@ -202,23 +206,13 @@ static int read_one(const char *cmd, const char *path, const char *kind, const s
     return img_read_pfm(im, path);
 }
 
-/* Parses the sidecar's "layers A:B"; 0 layers if none. */
-static int layer_count(const sidecar *m, int *bmin)
-{
-    int a, b;
-    *bmin = 0;
-    if (!m->layers[0] || sscanf(m->layers, "%d:%d", &a, &b) != 2 || a < 0 || b < a || b > 1000) return 0;
-    *bmin = a;
-    return b - a + 1;
-}
-
 /* Layer i (0: the total) and, with_var, its variance. */
 static int read_layer(render_files *rf, int i, const char *path, int with_var, const char *cmd)
 {
     char p[4096], vp[4096];
     sidecar m, vm;
     if (i == 0) snprintf(p, sizeof p, "%s", path);
-    else render_files_layer_path(p, sizeof p, path, rf->bmin + i - 1);
+    else render_files_layer_path(p, sizeof p, path, render_bounce_of_layer(i, rf->bmin));
     if (read_one(cmd, p, "mean", i ? &rf->meta : NULL, &rf->mean[i], i ? &m : &rf->meta)) return 1;
     if (!with_var) return 0;
     if (!(i ? m.variance : rf->meta.variance)[0]) {
@@ -236,7 +230,8 @@ int render_files_read(render_files *rf, const char *path, int with_var, const ch
     memset(rf, 0, sizeof *rf);
     if ((rc = sidecar_read(&first, path)) < 0) return read_one(cmd, path, "mean", NULL, NULL, &first);   /* prints why */
     if (rc) return 1;
-    n = 1 + layer_count(&first, &rf->bmin);
+    rf->bmin = first.layers_first;
+    n = 1 + first.layers_n;
     rf->mean = calloc((size_t)n, sizeof(image));
     rf->var = with_var ? calloc((size_t)n, sizeof(image)) : NULL;
     if (!rf->mean || (with_var && !rf->var)) {

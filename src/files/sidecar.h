@@ -28,7 +28,8 @@ typedef struct {
     char flags[SIDECAR_TEXT];      /* every flag that changes the samples, in one canonical form */
     char camera[SIDECAR_TEXT];     /* the camera used, exactly (%.9g) */
     char variance[SIDECAR_TEXT];   /* the variance image's file name, in the same folder ("" if none) */
-    char layers[32];               /* "A:B" when --split wrote FILE_LA.pfm .. FILE_LB.pfm ("" if none) */
+    int layers_first, layers_n;    /* --split wrote the layers L_first .. L_(first + n - 1), FILE_Lk.pfm
+                                    * ("layers A:B" in the file; n = 0: none) */
     char revision[64];             /* pathlab's version (git describe) */
     char stopped[32];              /* "SIGINT", "SIGTERM" or "time" when stopped before the samples asked */
     char adaptive[SIDECAR_TEXT];   /* the adaptive flags ("--target-error 0.01 --pilot 16 ..."); "" if uniform */

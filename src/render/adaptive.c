@@ -13,6 +13,7 @@ void adaptive_opts_init(adaptive_opts *ao)
     ao->min_spp = 4;
     ao->dark = 0.1;
     ao->spread = 1;
+    ao->pilot_rr_below = 1.0f;
 }
 
 /* A constant of its own ("pilot" in ASCII) hashed with the seed: the pilot's streams are keyed by
@@ -124,6 +125,7 @@ static int run_pilot(const scene *sc, const camera *cam, const render_opts *o, c
     po.time_limit = 0;
     po.pixel_spp = NULL;
     po.sampler = SAMPLER_INDEPENDENT;   /* its variance per sample must be that of independent samples */
+    po.io.rr_below = ao->pilot_rr_below;
     if (render(sc, cam, &po, pr)) return 1;
     ar->pilot_seconds = pr->seconds;
     ar->pilot_spp = pr->spp;

@@ -15,11 +15,12 @@ typedef struct {
     int min_spp;           /* the fewest samples a pixel gets (>= 2, so that its variance exists) */
     double dark;           /* a pixel darker than dark x the image's mean is held to the error of that level */
     int spread;            /* 1: each pixel's relative variance is the largest of its 3x3 neighbours' */
+    float pilot_rr_below;  /* the roulette's T of the pilot, whose samples are independent (render_rr_below) */
 } adaptive_opts;
 
 #define ADAPTIVE_GROUP 4   /* counts are rounded up to a multiple of this (the stratified sampler's groups) */
 
-/* The defaults: no target, pilot 16, min 4, dark 0.1, spread on. */
+/* The defaults: no target, pilot 16, min 4, dark 0.1, spread on, the pilot's T 1 (no --rr-below). */
 void adaptive_opts_init(adaptive_opts *ao);
 
 typedef struct {

@@ -47,7 +47,7 @@ static void add_sample(const job *j, const thread_state *t, double *a, int64_t i
     int k;
     pixel_sums_add(a, j->o->sampler, i, L);
     for (k = io->bmin; t->Lk && k <= io->bmax; k++) {
-        int layer = 1 + k - io->bmin;
+        int layer = render_layer_of(k, io->bmin);
         assert(layer < j->out->nlayers);
         pixel_sums_add(a + j->nsum * layer, j->o->sampler, i, t->Lk[k]);
     }
@@ -262,7 +262,7 @@ static int tile_counts(job *j)
 static int setup(job *j, int nthreads, render_result *out)
 {
     const render_opts *o = j->o;
-    int nlayers = 1 + (o->split ? o->io.bmax - o->io.bmin + 1 : 0);
+    int nlayers = o->split ? render_layer_of(o->io.bmax, o->io.bmin) + 1 : 1;
     size_t npx = (size_t)j->cam->width * (size_t)j->cam->height;
     j->ts = alloc_thread_states(nthreads, o->split ? o->io.bmax + 1 : 0);
     if (!j->ts || alloc_layers(out, nlayers, j->cam->width, j->cam->height)) return 1;
@@ -279,13 +279,11 @@ float render_rr_below(float given, sampler_kind kind)
     return kind == SAMPLER_INDEPENDENT ? 1.0f : RR_BELOW_STRATIFIED;
 }
 
-int render(const scene *sc, const camera *cam, const render_opts *opts, render_result *out)
+int render(const scene *sc, const camera *cam, const render_opts *o, render_result *out)
 {
     job j;
-    render_opts ro = *opts;   /* with the roulette's T resolved, once */
-    const render_opts *o = &ro;
     int t, nthreads = parallel_threads(o->threads);
-    ro.io.rr_below = render_rr_below(opts->io.rr_below, opts->sampler);
+    assert(o->io.rr_depth < 0 || o->io.rr_below > 0.0f);   /* resolved by the caller: render_rr_below */
     memset(out, 0, sizeof *out);
     memset(&j, 0, sizeof j);
     j.sc = sc; j.cam = cam; j.o = o; j.out = out;

@@ -17,19 +17,20 @@ typedef enum { DIRECT_LIGHT, DIRECT_BRDF, DIRECT_MIS_BALANCE, DIRECT_MIS_POWER }
 extern const char *const DIR_STRATEGY_NAMES[];
 extern const char *const DIRECT_STRATEGY_NAMES[];
 
-#define BOUNCES_INF 1000000   /* --bounces A:inf */
 /* The hard bounce cap of every path, whatever --bounces says: Kd >= 1 (or Kd + Ks > 1) and
- * --rr off would otherwise never end a path. 1000 is also the largest finite --bounces. */
+ * --rr off would otherwise never end a path. It is also the largest finite last bounce. */
 #define BOUNCES_CAP 1000
+/* bmax of a path with no last bounce (--bounces A:inf): only the roulette or BOUNCES_CAP ends it. */
+#define BOUNCES_NO_END 1000000
 
 typedef struct {
     light_strategy light;
     dir_strategy dir;
     direct_strategy direct;
-    int bmin, bmax;           /* L_bmin + ... + L_bmax, 0 <= bmin <= bmax */
+    int bmin, bmax;           /* L_bmin + ... + L_bmax, 0 <= bmin <= bmax <= BOUNCES_CAP, or bmax = BOUNCES_NO_END */
     int rr_depth;             /* Russian roulette after this many bounces; -1: off */
     float rr_below;           /* T > 0: the roulette thins paths whose throughput max(beta) is below T
-                               * (--rr-below, or the sampler's default: render/render.h) */
+                               * (--rr-below, or the sampler's default: render_rr_below) */
 } integrator_opts;
 
 typedef struct {

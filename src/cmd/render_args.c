@@ -3,6 +3,7 @@
  * camera they describe: a view file, a gKit orbiter file or framing, then the camera flags. */
 #include "cmd/render_args.h"
 #include "scene/orbiter.h"
+#include "sys/output_path.h"
 #include "sys/parallel.h"
 #include "util/textfile.h"
 #include <stdio.h>
@@ -253,7 +254,7 @@ static int read_orbiter(render_args *a)
 /* The view before the camera flags: --orbiter, --view, or SCENE.view if it exists; 0 or 1 after printing why. */
 static int base_view(render_args *a)
 {
-    char path[4096];
+    char path[PATH_CAP];
     size_t n = strlen(a->scene) - strlen(img_extension(a->scene));
     int rc;
     view_defaults(&a->vw);
@@ -275,7 +276,7 @@ static int base_view(render_args *a)
  * read back as another camera without a word */
 static int write_view(const render_args *a)
 {
-    char tmp[4200];
+    char tmp[PATH_CAP];
     FILE *f = textfile_open(a->write_view, tmp, sizeof tmp);
     if (!f) return 1;
     fprintf(f, "# the camera of pathlab %s %s%s%s: read it back with --view\n", a->cmd, a->scene,

@@ -27,8 +27,9 @@ typedef struct {
 
 #define RENDER_NFLAGS 30   /* the flags of render_flag_table, and its closing NULL entry */
 
-/* The defaults of pathlab render (16 spp, seed 1, every core, independent until render_cmd picks the sampler,
- * area, brdf, mis-power, 0:inf, rr 3). */
+/* The defaults of pathlab render (16 spp, seed 1, every core, area, brdf, mis-power, 0:inf, rr 3;
+ * ro.sampler independent, which is compare's default: render's plan picks its own when --sampler is
+ * not given, render_plan). */
 void render_args_init(render_args *a);
 /* Fills t with render's flags, each writing into *a; parse them with cli_parse(..., ctx = a, ...). */
 void render_flag_table(render_args *a, cli_flag t[RENDER_NFLAGS]);

@@ -4,13 +4,12 @@
 #include <inttypes.h>
 #include <stdio.h>
 #include <string.h>
-#include <unistd.h>
 #include "cmd/render_args.h"
 #include "cmd/render_adaptive.h"
-#include "files/render_files.h"
+#include "files/render_meta.h"
+#include "files/resume.h"
 #include "render/plan.h"
 #include "cmd/version.h"
-#include "stats/combine.h"
 #include "sys/interrupt.h"
 #include "sys/output_path.h"
 #include "sys/progress.h"
@@ -44,43 +43,14 @@ static int check_sampler_args(const render_args *a, const render_plan *p)
 }
 
 
-/* Every file the render will write, checked before the scene is read: the folder exists and can be
- * written, the extension is known (the --split layers and their variances go beside -o and
- * --variance, so checking those covers them). 0, or 1 after printing why. */
-static int check_outputs(const render_args *a)
-{
-    char layer[4200];
-    int k;
-    if (output_path_check("render", "-o", a->out, IMG_EXTENSIONS)) return 1;
-    for (k = a->ro.io.bmin; a->ro.split && a->ro.io.bmax != BOUNCES_NO_END && k <= a->ro.io.bmax; k++) {
-        render_files_layer_path(layer, sizeof layer, a->out, k);
-        if (output_path_check("render", "--split", layer, IMG_EXTENSIONS)) return 1;
-        if (!a->variance) continue;
-        render_files_layer_path(layer, sizeof layer, a->variance, k);
-        if (output_path_check("render", "--split --variance", layer, IMG_PFM_EXTENSION)) return 1;
-    }
-    if (a->variance && img_format_of(a->variance) != IMG_PFM) {
-        fprintf(stderr, "pathlab render: --variance %s: the variance is written as .pfm\n", a->variance);
-        return 1;
-    }
-    if (a->variance && output_path_check("render", "--variance", a->variance, IMG_PFM_EXTENSION)) return 1;
-    if (a->sample_count && output_path_check("render", "--sample-count", a->sample_count, NULL)) return 1;   /* .pfm: render_adaptive_check */
-    if (a->write_view && output_path_check("render", "--write-view", a->write_view, NULL)) return 1;
-    if ((a->variance && !strcmp(a->variance, a->out)) || (a->sample_count && !strcmp(a->sample_count, a->out))
-        || (a->variance && a->sample_count && !strcmp(a->variance, a->sample_count))) {
-        fprintf(stderr, "pathlab render: -o, --variance and --sample-count must be three different files\n");
-        return 1;
-    }
-    return 0;
-}
-
 /* What render needs beyond valid flag values: a scene, an output it can write, a last bounce for
  * --split, sample flags that go together. 0, or 1 after printing why. */
 static int check_render_args(render_args *a)
 {
     if (!a->scene) { fprintf(stderr, "pathlab render: needs a scene: pathlab render SCENE.obj -o FILE\n"); return 1; }
     if (!a->out) { fprintf(stderr, "pathlab render: needs an output: -o FILE.pfm, -o FILE.ppm or -o FILE.png\n"); return 1; }
-    if (check_outputs(a)) return 1;
+    if (render_files_check_outputs(a->out, a->variance, a->sample_count, a->write_view, a->ro.split, a->ro.io.bmin, a->ro.io.bmax))
+        return 1;
     if (a->ro.split && a->ro.io.bmax == BOUNCES_NO_END) {
         fprintf(stderr, "pathlab render: --split needs a last bounce, e.g. --bounces 0:8\n");
         return 1;
@@ -142,45 +112,8 @@ static int parse_render_args(render_args *a, render_plan *p, int argc, char **ar
 /* The sidecar of this render, its sample range aside: what must match for pieces to merge. */
 static void describe_render(const render_args *a, const render_plan *p, const scene *s, sidecar *m)
 {
-    const render_opts *o = &p->ro;
-    const integrator_opts *io = &o->io;
-    const view *v = &a->vw;
-    char bmax[16], rr[48];
-    memset(m, 0, sizeof *m);
-    strcpy(m->kind, "mean");
-    strcpy(m->layer, "total");
-    m->seed = o->seed;
-    snprintf(m->scene, sizeof m->scene, "%s", a->scene);
-    snprintf(m->scene_id, sizeof m->scene_id, "fnv1a64:%016" PRIx64, mesh_fingerprint(&s->m));
-    snprintf(bmax, sizeof bmax, io->bmax == BOUNCES_NO_END ? "inf" : "%d", io->bmax);
-    /* --rr-below only when it is not 1 (the classic rule): sidecars written before it stay comparable */
-    if (io->rr_depth < 0) snprintf(rr, sizeof rr, "off");
-    else snprintf(rr, sizeof rr, io->rr_below == 1.0f ? "%d" : "%d --rr-below %.6g", io->rr_depth, (double)io->rr_below);
-    /* --sampler only when not independent (whatever the default): the sidecars written before it
-     * existed stay comparable, and a sidecar without it is independent */
-    snprintf(m->flags, sizeof m->flags, "--bounces %d:%s --light %s --dir %s --direct %s --rr %s --pixel-offset %.9g%s%s%s",
-             io->bmin, bmax, LIGHT_STRATEGY_NAMES[io->light], DIR_STRATEGY_NAMES[io->dir], DIRECT_STRATEGY_NAMES[io->direct],
-             rr, o->pixel_offset, o->pixel_center ? " --pixel-center" : "", o->sampler != SAMPLER_INDEPENDENT ? " --sampler " : "",
-             o->sampler != SAMPLER_INDEPENDENT ? SAMPLER_NAMES[o->sampler] : "");
-    snprintf(m->camera, sizeof m->camera, "eye %.9g,%.9g,%.9g target %.9g,%.9g,%.9g up %.9g,%.9g,%.9g fov %.9g size %dx%d",
-             v->eye.x, v->eye.y, v->eye.z, v->target.x, v->target.y, v->target.z, v->up.x, v->up.y, v->up.z, v->fov,
-             v->width, v->height);
-    snprintf(m->revision, sizeof m->revision, "%s", pathlab_revision());
+    render_meta_describe(m, &p->ro, a->scene, mesh_fingerprint(&s->m), &a->vw, pathlab_revision());
     render_adaptive_describe(a, m);
-    if (o->sampler != SAMPLER_INDEPENDENT) snprintf(m->sampler, sizeof m->sampler, "%s", SAMPLER_NAMES[o->sampler]);
-}
-
-/* --sampler sobol cannot be resumed: 1 after saying why. */
-static int refuse_sobol_resume(const render_args *a, const render_plan *p, const sidecar *had)
-{
-    if (!sidecar_is_sobol(had) && p->ro.sampler == SAMPLER_INDEPENDENT) return 0;
-    fprintf(stderr, "pathlab render: --resume: %s%s%s%s: a Sobol render cannot be resumed: its file keeps the mean and the "
-            "variance, not the sums of each scrambling that the variance needs, and more points of the same "
-            "scrambled sequences are not independent of those it has. Render it again with the --spp wanted, "
-            "or use --sampler independent for renders to resume\n", a->out,
-            sidecar_is_sobol(had) ? " was rendered with --sampler " : " (this render: --sampler ",
-            sidecar_is_sobol(had) ? had->sampler : SAMPLER_NAMES[p->ro.sampler], sidecar_is_sobol(had) ? "" : ")");
-    return 1;
 }
 
 /* --resume: reads the render at -o, checks it is this render, and sets the plan's samples: those
@@ -190,24 +123,7 @@ static int prepare_resume(render_args *a, render_plan *p, const sidecar *now, re
 {
     sidecar had;
     int64_t have;
-    int rc = sidecar_read(&had, a->out);
-    if (rc < 0 && access(a->out, F_OK) != 0) {
-        fprintf(stderr, "pathlab render: --resume: %s does not exist: there is nothing to resume (leave out --resume)\n", a->out);
-        return 2;
-    }
-    if (rc < 0) render_files_read(prev, a->out, 0, "render");   /* says that it has no sidecar */
-    if (rc || refuse_sobol_resume(a, p, &had)) return 2;
-    if (render_files_read(prev, a->out, had.variance[0] != '\0', "render")) return 2;
-    if (sidecar_check_same(&prev->meta, now, "render --resume", a->out, "this render")) return 2;
-    if (a->variance && !had.variance[0]) {
-        fprintf(stderr, "pathlab render: %s was rendered without --variance: its variance cannot be resumed\n", a->out);
-        return 2;
-    }
-    if ((prev->nlayers > 1) != (a->ro.split != 0)) {
-        fprintf(stderr, "pathlab render: %s was rendered %s --split: resume it %s --split\n", a->out,
-                prev->nlayers > 1 ? "with" : "without", prev->nlayers > 1 ? "with" : "without");
-        return 2;
-    }
+    if (resume_read(prev, &had, a->out, now, p->ro.sampler, a->variance != NULL, a->ro.split)) return 2;
     if (had.variance[0] && !a->variance) {   /* keep its variance up to date, where it is */
         render_files_variance_path(var_out, cap, a->out, had.variance);
         a->variance = var_out;
@@ -220,22 +136,6 @@ static int prepare_resume(render_args *a, render_plan *p, const sidecar *now, re
     p->had = have;
     p->ro.first = had.range[had.nranges - 1][1];
     p->ro.spp = (int)(p->total - have);
-    return 0;
-}
-
-/* r := prev (n samples) combined with r, layer by layer, the variances exactly. */
-static int combine_with(const render_files *prev, int64_t n, render_result *r)
-{
-    int i;
-    for (i = 0; i < r->nlayers; i++) {
-        size_t count = 3 * (size_t)r->mean[i].w * (size_t)r->mean[i].h;
-        combine_acc c;
-        if (combine_init(&c, count)) { fprintf(stderr, "pathlab render: out of memory\n"); return 1; }
-        combine_add(&c, prev->mean[i].px, prev->var ? prev->var[i].px : NULL, (double)n);
-        combine_add(&c, r->mean[i].px, r->var[i].px, r->spp);
-        combine_result(&c, r->mean[i].px, r->var[i].px);
-        combine_free(&c);
-    }
     return 0;
 }
 
@@ -285,7 +185,7 @@ static int render_and_write(render_args *a, render_plan *p, const scene *s, cons
     render_result r;
     adaptive_result ar;
     sidecar m;
-    char var_out[4096];
+    char var_out[PATH_CAP];
     int rc = 0, err;
     memset(&prev, 0, sizeof prev);
     memset(&ar, 0, sizeof ar);
@@ -298,7 +198,7 @@ static int render_and_write(render_args *a, render_plan *p, const scene *s, cons
     if (p->adaptive ? adaptive_render(s, cam, &p->ro, &p->ao, &r, &ar) : render(s, cam, &p->ro, &r)) { render_files_free(&prev); return 1; }
     if (!p->ro.quiet && p->adaptive) render_adaptive_print(&ar, r.seconds);
     else if (!p->ro.quiet) render_print_stats(&r, r.spp, cam->width * cam->height);
-    err = finish_meta(&m, a, p, &r, &prev, &ar) || (prev.nlayers && combine_with(&prev, sidecar_spp(&prev.meta), &r));
+    err = finish_meta(&m, a, p, &r, &prev, &ar) || (prev.nlayers && resume_combine(&prev, sidecar_spp(&prev.meta), &r));
     err = err || render_files_write_all(a->out, a->variance, a->sample_count, &ar.count, a->exposure, &m, r.mean, r.var,
                                         r.nlayers, p->ro.io.bmin);
     if (!err) report_stop(a, p, &r, &m, &ar);

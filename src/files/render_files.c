@@ -2,6 +2,7 @@
 #include "files/render_files.h"
 #include "render/render.h"
 #include "sys/interrupt.h"
+#include "sys/output_path.h"
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -13,6 +14,33 @@ void render_files_layer_path(char *dst, size_t cap, const char *out, int k)
 {
     const char *e = img_extension(out);
     snprintf(dst, cap, "%.*s_L%d%s", (int)(strlen(out) - strlen(e)), out, k, e);
+}
+
+int render_files_check_outputs(const char *out, const char *var_out, const char *count_out, const char *view_out, int split,
+                               int bmin, int bmax)
+{
+    char layer[PATH_CAP];
+    int k;
+    if (output_path_check("render", "-o", out, IMG_EXTENSIONS)) return 1;
+    for (k = bmin; split && bmax != BOUNCES_NO_END && k <= bmax; k++) {
+        render_files_layer_path(layer, sizeof layer, out, k);
+        if (output_path_check("render", "--split", layer, IMG_EXTENSIONS)) return 1;
+        if (!var_out) continue;
+        render_files_layer_path(layer, sizeof layer, var_out, k);
+        if (output_path_check("render", "--split --variance", layer, IMG_PFM_EXTENSION)) return 1;
+    }
+    if (var_out && img_format_of(var_out) != IMG_PFM) {
+        fprintf(stderr, "pathlab render: --variance %s: the variance is written as .pfm\n", var_out);
+        return 1;
+    }
+    if (var_out && output_path_check("render", "--variance", var_out, IMG_PFM_EXTENSION)) return 1;
+    if (count_out && output_path_check("render", "--sample-count", count_out, NULL)) return 1;   /* .pfm: render_adaptive_check */
+    if (view_out && output_path_check("render", "--write-view", view_out, NULL)) return 1;
+    if ((var_out && !strcmp(var_out, out)) || (count_out && !strcmp(count_out, out)) || (var_out && count_out && !strcmp(var_out, count_out))) {
+        fprintf(stderr, "pathlab render: -o, --variance and --sample-count must be three different files\n");
+        return 1;
+    }
+    return 0;
 }
 
 static const char *base_name(const char *p)
@@ -31,7 +59,7 @@ static void folder_of(char *dst, size_t cap, const char *p)
  * that the pair can be moved together (to another machine, for merge); else the path as given. */
 static void variance_name(char *dst, size_t cap, const char *image_path, const char *var_path)
 {
-    char a[4096], b[4096];
+    char a[PATH_CAP], b[PATH_CAP];
     folder_of(a, sizeof a, image_path);
     folder_of(b, sizeof b, var_path);
     if (snprintf(dst, cap, "%s", strcmp(a, b) ? var_path : base_name(var_path)) >= (int)cap) dst[0] = '\0';   /* too long to name */
@@ -116,7 +144,7 @@ static int finish(file_set *fs, int commit)
 /* One image file and, for a PFM, its sidecar (an 8-bit PPM or PNG is for viewing: nothing reads it back). */
 static int write_one(file_set *fs, const char *path, const image *im, float exposure, const sidecar *meta)
 {
-    char meta_path[4200];
+    char meta_path[PATH_CAP];
     const char *tmp = stage(fs, path), *mtmp;
     img_format fmt = img_format_of(path);
     int err = !tmp || (fmt == IMG_PFM ? img_write_pfm(im, tmp) : fmt == IMG_PPM ? img_write_ppm(im, tmp, exposure)
@@ -136,7 +164,7 @@ int render_files_write(const char *out, const char *var_out, float exposure, con
 int render_files_write_all(const char *out, const char *var_out, const char *count_out, const image *count,
                            float exposure, const sidecar *meta, const image *mean, const image *var, int nlayers, int bmin)
 {
-    char path[4096], vpath[4096];
+    char path[PATH_CAP], vpath[PATH_CAP];
     sidecar m = *meta;
     file_set fs = {NULL, NULL, 0, 0};
     int i, err = 0;
@@ -174,7 +202,7 @@ int render_files_write_all(const char *out, const char *var_out, const char *cou
 
 void render_files_variance_path(char *dst, size_t cap, const char *image_path, const char *name)
 {
-    char dir[4096];
+    char dir[PATH_CAP];
     int n;
     folder_of(dir, sizeof dir, image_path);
     n = strchr(name, '/') ? snprintf(dst, cap, "%s", name) : snprintf(dst, cap, "%s%s", dir, name);
@@ -209,7 +237,7 @@ static int read_one(const char *cmd, const char *path, const char *kind, const s
 /* Layer i (0: the total) and, with_var, its variance. */
 static int read_layer(render_files *rf, int i, const char *path, int with_var, const char *cmd)
 {
-    char p[4096], vp[4096];
+    char p[PATH_CAP], vp[PATH_CAP];
     sidecar m, vm;
     if (i == 0) snprintf(p, sizeof p, "%s", path);
     else render_files_layer_path(p, sizeof p, path, render_bounce_of_layer(i, rf->bmin));

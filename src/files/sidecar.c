@@ -1,5 +1,6 @@
 /* sidecar.c — reading, writing and comparing the FILE.meta that says what made FILE. */
 #include "files/sidecar.h"
+#include "sys/output_path.h"
 #include "tracer/integrator.h"
 #include "util/textfile.h"
 #include <errno.h>
@@ -29,16 +30,9 @@ void sidecar_ranges_text(const sidecar *m, char *dst, size_t cap)
         len += (size_t)snprintf(dst + len, cap - len, "%s%" PRId64 ":%" PRId64, i ? "," : "", m->range[i][0], m->range[i][1]);
 }
 
-int sidecar_write(const sidecar *m, const char *image_path)
-{
-    char path[4200];
-    sidecar_path(path, sizeof path, image_path);
-    return sidecar_write_to(m, image_path, path);
-}
-
 int sidecar_write_to(const sidecar *m, const char *image_path, const char *path)
 {
-    char tmp[4300], ranges[8192];
+    char tmp[PATH_CAP], ranges[8192];
     FILE *f;
     if (!(f = textfile_open(path, tmp, sizeof tmp))) return 1;
     sidecar_ranges_text(m, ranges, sizeof ranges);
@@ -162,7 +156,7 @@ static int split_line(char *line, char **key, char **value)
 
 int sidecar_read(sidecar *m, const char *image_path)
 {
-    char path[4200], line[4 * SIDECAR_TEXT + 8192], *key, *value;
+    char path[PATH_CAP], line[4 * SIDECAR_TEXT + 8192], *key, *value;
     int lineno = 0, err = 0;
     FILE *f;
     memset(m, 0, sizeof *m);

@@ -43,9 +43,8 @@ typedef struct {
 
 /* FILE -> FILE.meta */
 void sidecar_path(char *dst, size_t cap, const char *image_path);
-/* Writes the sidecar of image_path (atomically); 0, or 1 after printing why. */
-int sidecar_write(const sidecar *m, const char *image_path);
-/* The same, into the file `file` (a temporary name, renamed later with the image). */
+/* Writes the sidecar of image_path into the file `file` (a temporary name, renamed later with the
+ * image: render_files.h); 0, or 1 after printing why. */
 int sidecar_write_to(const sidecar *m, const char *image_path, const char *file);
 /* Reads the sidecar of image_path. 0; -1 if it does not exist (nothing printed); 1 after printing
  * "FILE.meta:LINE: why" for a malformed one. */

@@ -95,7 +95,11 @@ static void counts_for_budget(const double *rel, size_t npx, int min_spp, int ca
     counts_for(rel, npx, lo, min_spp, cap, n);
 }
 
-void adaptive_allocate(const image *m, const image *v, int pilot, const adaptive_opts *ao, int cap, double budget, int *n)
+/* n(x) from a pilot's mean m and variance of the mean v (pilot samples per pixel) into n, each in
+ * [min_spp, cap] and a multiple of ADAPTIVE_GROUP (or cap). With a target error, n(x) =
+ * ceil(s^2 / (E^2 max(|m|, d)^2)); else the counts are proportional to the relative standard
+ * deviation s / max(|m|, d), scaled so that they add up to about `budget` pixel-samples. */
+static void adaptive_allocate(const image *m, const image *v, int pilot, const adaptive_opts *ao, int cap, double budget, int *n)
 {
     size_t npx = (size_t)m->w * (size_t)m->h, p;
     int min_spp = ao->min_spp < cap ? ao->min_spp : cap;

@@ -34,11 +34,6 @@ typedef struct {
 
 /* The seed of the pilot's streams, derived from the render's: unrelated to every kept stream. */
 uint64_t adaptive_pilot_seed(uint64_t seed);
-/* n(x) from a pilot's mean m and variance of the mean v (pilot samples per pixel) into n, each in
- * [min_spp, cap] and a multiple of ADAPTIVE_GROUP (or cap). With a target error, n(x) =
- * ceil(s^2 / (E^2 max(|m|, d)^2)); else the counts are proportional to the relative standard
- * deviation s / max(|m|, d), scaled so that they add up to about `budget` pixel-samples. */
-void adaptive_allocate(const image *m, const image *v, int pilot, const adaptive_opts *ao, int cap, double budget, int *n);
 /* The pilot, the allocation and the render (o->spp is the cap, o->time_limit is ignored: ao's
  * counts). 0, or nonzero (after printing why) if memory ran out; out as render()'s. */
 int adaptive_render(const scene *sc, const camera *cam, const render_opts *o, const adaptive_opts *ao,

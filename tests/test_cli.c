@@ -281,7 +281,7 @@ static void test_render_flags(void)
     check(rc == 0 && !strcmp(a.scene, "scene.obj") && a.ro.io.bmin == 1 && a.ro.io.bmax == 3 && a.ro.io.rr_depth == -1
           && a.ro.io.light == LIGHT_SOLID_ANGLE && a.ro.io.dir == DIR_COSINE && a.ro.io.direct == DIRECT_LIGHT,
           "render_parse_flag: scene, --bounces, --rr off, --light, --dir, --direct", "status %d: %s", rc, err);
-    check(a.size && a.flags.width == 64 && a.flags.height == 32 && a.eye && a.flags.eye.z == -5.0f && a.ro.quiet && !a.target,
+    check(a.cam.size && a.cam.flags.width == 64 && a.cam.flags.height == 32 && a.cam.eye && a.cam.flags.eye.z == -5.0f && a.ro.quiet && !a.cam.target,
           "render_parse_flag: --size, --eye (given), --quiet", NULL);
     split("--bounce 2 --bounces 0:inf other.obj --rr 7 --rr maybe --bounces 3:1 --rr-below 0.25 --rr-below 0");
     a.scene = "scene.obj";   /* the words of the first line are gone with it */

@@ -1,23 +1,23 @@
 /* render_args.h — the flags of `pathlab render`, shared with `pathlab compare` (one set per
- * estimator): their defaults, their cli_flag table, one flag at a time, and the camera they describe. */
+ * estimator): their defaults, their cli_flag table, one flag at a time, and the camera they describe
+ * (made by files/view_setup.h). */
 #ifndef PATHLAB_RENDER_ARGS_H
 #define PATHLAB_RENDER_ARGS_H
 #include "util/cli.h"
 #include "render/adaptive.h"
 #include "render/render.h"
+#include "files/view_setup.h"
 
 typedef struct {
     const char *cmd;                 /* the command, in messages: "render" (set by render_args_init) */
     const cli_flag *more_flags;      /* the calling command's own flags, for "did you mean" (or NULL) */
     const char *scene, *out, *variance;
     float exposure;
-    view vw, flags;                  /* flags: values given on the command line */
-    int eye, target, up, fov, size;  /* which camera flags were given */
+    view_setup cam;                  /* the camera flags and files, and the view made of them */
     int spp;                         /* --spp N: the samples the image is to hold (16 if not given) */
     int64_t samples[2];              /* --samples A:B: the sample indices A .. B - 1 */
     int spp_given, samples_given, resume;
     int sampler_given;               /* --sampler given (else render_cmd picks one: render_default_sampler) */
-    const char *orbiter, *view_file, *write_view;  /* --orbiter, --view, --write-view (NULL if not given) */
     render_opts ro;                  /* the other flags' values (ro.first, ro.spp: see render_plan) */
     /* render only (cmd/render_adaptive.h): adaptive sampling */
     int adaptive, target_given, pilot_given, min_given;

@@ -49,7 +49,7 @@ static int check_render_args(render_args *a)
 {
     if (!a->scene) { fprintf(stderr, "pathlab render: needs a scene: pathlab render SCENE.obj -o FILE\n"); return 1; }
     if (!a->out) { fprintf(stderr, "pathlab render: needs an output: -o FILE.pfm, -o FILE.ppm or -o FILE.png\n"); return 1; }
-    if (render_files_check_outputs(a->out, a->variance, a->sample_count, a->write_view, a->ro.split, a->ro.io.bmin, a->ro.io.bmax))
+    if (render_files_check_outputs(a->out, a->variance, a->sample_count, a->cam.write_view, a->ro.split, a->ro.io.bmin, a->ro.io.bmax))
         return 1;
     if (a->ro.split && a->ro.io.bmax == BOUNCES_NO_END) {
         fprintf(stderr, "pathlab render: --split needs a last bounce, e.g. --bounces 0:8\n");
@@ -112,7 +112,7 @@ static int parse_render_args(render_args *a, render_plan *p, int argc, char **ar
 /* The sidecar of this render, its sample range aside: what must match for pieces to merge. */
 static void describe_render(const render_args *a, const render_plan *p, const scene *s, sidecar *m)
 {
-    render_meta_describe(m, &p->ro, a->scene, mesh_fingerprint(&s->m), &a->vw, pathlab_revision());
+    render_meta_describe(m, &p->ro, a->scene, mesh_fingerprint(&s->m), &a->cam.vw, pathlab_revision());
     render_adaptive_describe(a, m);
 }
 

@@ -196,7 +196,7 @@ static int render_and_write(render_args *a, render_plan *p, const scene *s, cons
     }
     interrupt_install();   /* from here, a first Ctrl-C stops after the pass and writes what it reached */
     if (p->adaptive ? adaptive_render(s, cam, &p->ro, &p->ao, &r, &ar) : render(s, cam, &p->ro, &r)) { render_files_free(&prev); return 1; }
-    if (!p->ro.quiet && p->adaptive) render_adaptive_print(&ar, r.seconds);
+    if (!p->ro.quiet && p->adaptive) adaptive_print_summary(&ar, r.seconds);
     else if (!p->ro.quiet) render_print_stats(&r, r.spp, cam->width * cam->height);
     err = finish_meta(&m, a, p, &r, &prev, &ar) || (prev.nlayers && resume_combine(&prev, sidecar_spp(&prev.meta), &r));
     err = err || render_files_write_all(a->out, a->variance, a->sample_count, &ar.count, a->exposure, &m, r.mean, r.var,

@@ -31,3 +31,11 @@ void render_meta_describe(sidecar *m, const render_opts *o, const char *scene_pa
     snprintf(m->revision, sizeof m->revision, "%s", revision);
     if (o->sampler != SAMPLER_INDEPENDENT) snprintf(m->sampler, sizeof m->sampler, "%s", SAMPLER_NAMES[o->sampler]);
 }
+
+void render_meta_describe_adaptive(sidecar *m, const adaptive_opts *ao, int target_given, double time_limit)
+{
+    char target[48] = "", time[48] = "";
+    if (target_given) snprintf(target, sizeof target, " --target-error %.9g", ao->target_error);
+    if (time_limit > 0) snprintf(time, sizeof time, " --time %.9g", time_limit);   /* it shapes n(x) */
+    snprintf(m->adaptive, sizeof m->adaptive, "--adaptive%s%s --pilot %d --min-spp %d", target, time, ao->pilot, ao->min_spp);
+}

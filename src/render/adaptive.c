@@ -187,3 +187,17 @@ void adaptive_result_free(adaptive_result *ar)
     ar->pixel_spp = NULL;
     img_free(&ar->count);
 }
+
+void adaptive_print_summary(const adaptive_result *ar, double seconds)
+{
+    size_t npx = (size_t)ar->count.w * (size_t)ar->count.h, p;
+    float lo = npx ? ar->count.px[0] : 0, hi = lo;
+    for (p = 0; p < npx; p++) {
+        float n = ar->count.px[3 * p];
+        lo = n < lo ? n : lo;
+        hi = n > hi ? n : hi;
+    }
+    fprintf(stderr, "adaptive: pilot %d spp in %.2f s (not kept), then %.0f..%.0f spp per pixel, mean %.1f, in %.2f s; "
+                    "%.2f Msamples/s kept\n", ar->pilot_spp, ar->pilot_seconds, lo, hi, ar->mean_spp, seconds,
+            seconds > 0 ? ar->mean_spp * (double)npx / seconds * 1e-6 : 0.0);
+}

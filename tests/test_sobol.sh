@@ -153,7 +153,7 @@ out2=$("$ZCHECK" "$TMP/q.pfm" "$TMP/qv.pfm" "$REF/cornell_L0-4.pfm" "$REF/cornel
 if [ $rc1 -eq 0 ] && [ $rc2 -eq 0 ]; then pass "sobol1, 8 seeds x 512 spp, against cornell_L0-4 (7 dof): $out1 | $out2"
 else fail "sobol1, 8 seeds x 512 spp, against cornell_L0-4 (7 dof): $out1 | $out2"; fi
 
-# ---- 7. the default sampler (render_default_sampler): sobol1 unless the render needs independent
+# ---- 7. the default sampler (render_plan_default_sampler): sobol1 unless the render needs independent
 # samples (--variance, --resume, --samples, adaptive sampling); an explicit --sampler is obeyed.
 # Each check compares bytes with a render that names its sampler, so a wrong default fails it.
 D="$PATHLAB render scenes/cornell.obj --quiet --size 16x16 --spp 8 --seed 5"

@@ -17,7 +17,7 @@ typedef struct {
     int spp;                         /* --spp N: the samples the image is to hold (16 if not given) */
     int64_t samples[2];              /* --samples A:B: the sample indices A .. B - 1 */
     int spp_given, samples_given, resume;
-    int sampler_given;               /* --sampler given (else render_cmd picks one: render_default_sampler) */
+    int sampler_given;               /* --sampler given (else the plan picks one: render_plan_default_sampler) */
     render_opts ro;                  /* the other flags' values (ro.first, ro.spp: see render_plan) */
     /* render only (cmd/render_adaptive.h): adaptive sampling */
     int adaptive, target_given, pilot_given, min_given;

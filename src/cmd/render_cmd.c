@@ -14,34 +14,12 @@
 #include "sys/output_path.h"
 #include "sys/progress.h"
 
-/* The sampler of a render that names none: sobol1, the least noise for a given time (docs/sampler.md,
- * "Which default"), unless the render needs independent samples: a variance (--variance), more
- * samples added later (--resume) or merged (--samples), or the adaptive allocation. */
-static sampler_kind render_default_sampler(const render_args *a)
+/* 1 if the render needs independent samples: a variance (--variance), more samples added later
+ * (--resume) or merged (--samples), or the adaptive allocation (render_plan_default_sampler). */
+static int needs_independent(const render_args *a)
 {
-    int needs_independent = a->variance || a->resume || a->samples_given || a->adaptive || a->target_given;
-    return needs_independent ? SAMPLER_INDEPENDENT : SAMPLER_SOBOL1;
+    return a->variance || a->resume || a->samples_given || a->adaptive || a->target_given;
 }
-
-/* What a Sobol sampler cannot do: 1 after saying why. */
-static int check_sampler_args(const render_args *a, const render_plan *p)
-{
-    const char *name = SAMPLER_NAMES[p->ro.sampler];
-    if (p->ro.first + p->ro.spp > sampler_max_index(p->ro.sampler)) {
-        fprintf(stderr, "pathlab render: --sampler %s takes sample indices below %lld (2^32 points in each of its %d "
-                "scrambling(s); past that the points would repeat): use --sampler independent\n",
-                name, (long long)sampler_max_index(p->ro.sampler), sampler_groups(p->ro.sampler));
-        return 1;
-    }
-    if (p->ro.sampler == SAMPLER_SOBOL1 && a->variance) {
-        fprintf(stderr, "pathlab render: --variance %s: --sampler sobol1 draws one scrambled sequence per pixel, whose "
-                "samples are not independent: no variance of the mean can be estimated from them. Use --sampler sobol "
-                "(4 independent scramblings a pixel: a variance with 3 degrees of freedom) or independent\n", a->variance);
-        return 1;
-    }
-    return 0;
-}
-
 
 /* What render needs beyond valid flag values: a scene, an output it can write, a last bounce for
  * --split, sample flags that go together. 0, or 1 after printing why. */
@@ -74,7 +52,7 @@ static int check_render_args(render_args *a)
 static void make_plan(const render_args *a, render_plan *p)
 {
     p->ro = a->ro;
-    p->ro.sampler = a->sampler_given ? a->ro.sampler : render_default_sampler(a);
+    p->ro.sampler = a->sampler_given ? a->ro.sampler : render_plan_default_sampler(needs_independent(a));
     p->ro.io.rr_below = render_rr_below(a->ro.io.rr_below, p->ro.sampler);
     p->ro.first = a->samples_given ? a->samples[0] : 0;
     if (a->samples_given) p->ro.spp = (int)(a->samples[1] - a->samples[0]);
@@ -106,7 +84,7 @@ static int parse_render_args(render_args *a, render_plan *p, int argc, char **ar
     a->scene = nwords ? words[0] : NULL;
     if (check_render_args(a)) return 1;
     make_plan(a, p);
-    return check_sampler_args(a, p);
+    return render_plan_check_sampler(p, a->variance);
 }
 
 /* The sidecar of this render, its sample range aside: what must match for pieces to merge. */

@@ -16,4 +16,11 @@ typedef struct {
     int adaptive;         /* adaptive sampling, with ao (ao.pilot_rr_below: T for the pilot's samples) */
     adaptive_opts ao;
 } render_plan;
+
+/* The sampler of a render that names none: sobol1, the least noise for a given time (docs/sampler.md,
+ * "Which default"), or independent when the render needs independent samples. */
+sampler_kind render_plan_default_sampler(int needs_independent);
+/* What the plan's sampler cannot do: Sobol indices past sampler_max_index, a variance (`variance`,
+ * the --variance file, or NULL) with sobol1. 0, or 1 after printing why. */
+int render_plan_check_sampler(const render_plan *p, const char *variance);
 #endif

@@ -250,7 +250,7 @@ static void test_render_defaults(void)
     cli_flag t[RENDER_NFLAGS];
     int i, j, dup = 0;
     render_args_init(&a);
-    check(!strcmp(a.cmd, "render") && a.ro.spp == 16 && a.ro.seed == 1 && a.ro.io.bmin == 0 && a.ro.io.bmax == BOUNCES_INF
+    check(!strcmp(a.cmd, "render") && a.spp == 16 && a.ro.seed == 1 && a.ro.io.bmin == 0 && a.ro.io.bmax == BOUNCES_NO_END
           && a.ro.io.rr_depth == 3 && a.ro.io.direct == DIRECT_MIS_POWER && a.ro.io.light == LIGHT_AREA && a.ro.io.dir == DIR_BRDF,
           "render_args_init: the defaults", NULL);
     render_flag_table(&a, t);
@@ -281,7 +281,7 @@ static void test_render_flags(void)
     check(rc == 0 && !strcmp(a.scene, "scene.obj") && a.ro.io.bmin == 1 && a.ro.io.bmax == 3 && a.ro.io.rr_depth == -1
           && a.ro.io.light == LIGHT_SOLID_ANGLE && a.ro.io.dir == DIR_COSINE && a.ro.io.direct == DIRECT_LIGHT,
           "render_parse_flag: scene, --bounces, --rr off, --light, --dir, --direct", "status %d: %s", rc, err);
-    check(a.size && a.flags.width == 64 && a.flags.height == 32 && a.eye && a.flags.eye.z == -5.0f && a.ro.quiet && !a.target,
+    check(a.cam.size && a.cam.flags.width == 64 && a.cam.flags.height == 32 && a.cam.eye && a.cam.flags.eye.z == -5.0f && a.ro.quiet && !a.cam.target,
           "render_parse_flag: --size, --eye (given), --quiet", NULL);
     split("--bounce 2 --bounces 0:inf other.obj --rr 7 --rr maybe --bounces 3:1 --rr-below 0.25 --rr-below 0");
     a.scene = "scene.obj";   /* the words of the first line are gone with it */
@@ -289,7 +289,7 @@ static void test_render_flags(void)
     rc = render_flag_at(&a, 1, &i);
     check(rc == 0 && i == 2 && a.ro.io.bmin == 2 && a.ro.io.bmax == 2, "render_parse_flag: --bounce K is K:K", "status %d, i %d", rc, i);
     rc = render_flag_at(&a, 3, NULL);
-    check(rc == 0 && a.ro.io.bmin == 0 && a.ro.io.bmax == BOUNCES_INF, "render_parse_flag: --bounces 0:inf", NULL);
+    check(rc == 0 && a.ro.io.bmin == 0 && a.ro.io.bmax == BOUNCES_NO_END, "render_parse_flag: --bounces 0:inf", NULL);
     rc = render_flag_at(&a, 5, NULL);
     check(rc == 1 && strstr(err, "pathlab compare: one scene only") && strstr(err, "other.obj"), "render_parse_flag: a second scene", "'%s'", err);
     rc = render_flag_at(&a, 6, NULL);

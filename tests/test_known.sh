@@ -58,9 +58,16 @@ zcheck_expect "furnace at 64 spp: --precision 1e-3 refuses a too coarse check" 3
 # issue 11, 1.7e-3 at L3 with 1024 spp).
 # BRDF sampling with cosine directions is exact in a diffuse furnace (f cos / pdf = a at every
 # bounce): zcheck's rounding floor is then the only tolerance.
-for mode in "furnace:1:mis-power:brdf:8:32:1024:1e-3" "furnace:1:light:cosine:0:16:1024:0" "furnace:1:brdf:cosine:0:16:256:1e-3" "furnace:1:brdf:uniform:0:16:1024:0" \
-            "sphere-furnace:0.5:mis-power:brdf:0:16:512:1e-3" "sphere-furnace:0.5:light:cosine:0:16:512:0" "sphere-furnace:0.5:brdf:brdf:0:16:256:1e-3"; do
-    IFS=: read -r scene le direct dir block size spp prec <<< "$mode"
+# The last field is zcheck's alpha: 0.01, but 1e-4 (critical |z| 4.15) for light sampling alone in
+# the box furnace, whose infinite variance makes its sigma untrustworthy (above): at alpha 0.01 its
+# L1..L6 failed for 2 of 8 seeds with the numbers of pathlab before the joint light set (max |z|
+# 3.46) and 3 of 8 with those after (max 3.24), while renders of 2048 spp with 8 other seeds
+# scattered on both sides of the exact L3 with either numbers (no sign of a bias). At 1e-4 the
+# tolerance is about 3% of L3 (0.033 of the mean with seed 1).
+for mode in "furnace:1:mis-power:brdf:8:32:1024:1e-3:0.01" "furnace:1:light:cosine:0:16:1024:0:1e-4" "furnace:1:brdf:cosine:0:16:256:1e-3:0.01" \
+            "furnace:1:brdf:uniform:0:16:1024:0:0.01" "sphere-furnace:0.5:mis-power:brdf:0:16:512:1e-3:0.01" \
+            "sphere-furnace:0.5:light:cosine:0:16:512:0:0.01" "sphere-furnace:0.5:brdf:brdf:0:16:256:1e-3:0.01"; do
+    IFS=: read -r scene le direct dir block size spp prec alpha <<< "$mode"
     $PATHLAB render "scenes/$scene.obj" --quiet --size "${size}x$size" --spp "$spp" --bounces 0:6 --split --rr off \
         --direct "$direct" --dir "$dir" -o "$TMP/fk.pfm" --variance "$TMP/fkv.pfm"
     $PFMTOOL const "$size" "$size" 0 0 0 "$TMP/zero.pfm"
@@ -68,7 +75,7 @@ for mode in "furnace:1:mis-power:brdf:8:32:1024:1e-3" "furnace:1:light:cosine:0:
         v=$(awk -v k=$k -v le="$le" 'BEGIN { printf "%.9g", le * 0.5 ^ k }')
         $PFMTOOL const "$size" "$size" "$v" "$v" "$v" "$TMP/exact.pfm"
         zcheck_expect "$scene --direct $direct --dir $dir, ${size}x$size x $spp spp: L$k = $le x 0.5^$k = $v" 0 \
-            "$TMP/fk_L$k.pfm" "$TMP/fkv_L$k.pfm" "$TMP/exact.pfm" "$TMP/zero.pfm" --pixel-pass 0 --block "$block" --precision "$prec"
+            "$TMP/fk_L$k.pfm" "$TMP/fkv_L$k.pfm" "$TMP/exact.pfm" "$TMP/zero.pfm" --pixel-pass 0 --block "$block" --precision "$prec" --alpha "$alpha"
     done
 done
 exit 0

@@ -23,7 +23,7 @@ allowed() {
         render) echo "sys math geometry scene image sampler tracer" ;;
         stats) echo "sys math image" ;;
         util) echo "sys math" ;;
-        files) echo "sys math geometry scene image sampler tracer render util" ;;
+        files) echo "sys math geometry scene image sampler tracer render stats util" ;;
         grade) echo "sys math image stats util files" ;;
         compare) echo "sys math geometry scene image sampler tracer render stats util files grade" ;;
         check) echo "sys math geometry scene sampler tracer stats" ;;

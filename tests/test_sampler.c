@@ -1,6 +1,5 @@
-/* test_sampler.c — the samplers of tracer/sampler.h:
- *   1. independent reads the stream pcg32_for_sample in the order of the calls (the images of
- *      pathlab before --sampler, bit for bit);
+/* test_sampler.c — the samplers of sampler/sampler.h:
+ *   1. independent reads the stream pcg32_for_sample in the order of the calls;
  *   2. the first two Sobol dimensions, and each scrambled, shuffled 2D set of --sampler sobol, are
  *      (0, m, 2)-nets for every m <= 10: one point in every elementary interval of area 2^-m, for
  *      every shape 2^-a x 2^-(m-a); a 1D dimension puts one point in each of 2^m strata; each of
@@ -47,13 +46,13 @@ static void check_independent(void)
 {
     sampler s;
     pcg32 r;
-    float u1, u2;
+    float u1, u2, v2;
     int k, same = 1;
     sampler_start(&s, SAMPLER_INDEPENDENT, 42, 1234, 77);
     pcg32_for_sample(&r, 42, 1234, 77);
     for (k = 0; k < 20; k++) {
-        double d = sampler_1d_32bit(&s, 99);
-        same = same && d == pcg32_double(&r);
+        double d = sampler_2d_32bit(&s, 99, &v2);
+        same = same && d == pcg32_double(&r) && v2 == pcg32_float(&r);
         sampler_2d(&s, 3, &u1, &u2);
         same = same && u1 == pcg32_float(&r) && u2 == pcg32_float(&r);
         same = same && sampler_1d(&s, 0) == pcg32_float(&r);
@@ -143,8 +142,9 @@ static double mean_z(uint32_t dim, int n)
         double pix = 0;
         for (i = 0; i < 16; i++) {
             sampler s;
+            float u2;
             sampler_start(&s, SAMPLER_SOBOL, 11, (uint64_t)p, (uint64_t)i);
-            pix += dim % 2 ? sampler_1d(&s, dim) : sampler_1d_32bit(&s, dim);
+            pix += dim % 2 ? sampler_1d(&s, dim) : sampler_2d_32bit(&s, dim, &u2);
         }
         pix /= 16;
         sum += pix, sum2 += pix * pix;

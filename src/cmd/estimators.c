@@ -143,21 +143,22 @@ static int apply_flags(estimator_spec *e, const flag_list *f, const render_args 
     int i;
     e->a = *base;
     e->a.scene = e->a.out = e->a.variance = NULL;
-    e->a.ro.spp = 0;
+    e->a.spp_given = 0;
     for (i = 0; i < f->n; i++)
         if (render_parse_flag(&e->a, f->n, (char **)f->tok, &i)) {
             fprintf(stderr, "pathlab: compare: in estimator '%s'\n", e->label);
             return 1;
         }
-    if (e->a.scene || e->a.out || e->a.variance || e->a.ro.split || e->a.ro.spp) {
+    if (e->a.scene || e->a.out || e->a.variance || e->a.ro.split || e->a.spp_given) {
         fprintf(stderr, "pathlab: compare: estimator '%s': %s\n", e->label,
                 e->a.scene ? "a word that is neither a flag, a flag's value nor a name" :
-                e->a.ro.spp ? "--spp is set for all estimators (--spp or --time of compare), not for one" :
+                e->a.spp_given ? "--spp is set for all estimators (--spp or --time of compare), not for one" :
                 "-o, --variance and --split are not for an estimator");
         return 1;
     }
     e->a.scene = base->scene;
     e->a.ro.quiet = 1;
+    e->a.ro.io.rr_below = render_rr_below(e->a.ro.io.rr_below, e->a.ro.sampler);   /* resolved once, for its sampler */
     return 0;
 }
 

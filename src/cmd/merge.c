@@ -1,124 +1,13 @@
-/* merge.c — pathlab merge: check that the inputs are pieces of one render (their sidecars), then
- * combine them one at a time, so that memory holds one input and the sums whatever their number. */
+/* merge.c — pathlab merge: its flags and its checks of the output, then files/render_merge.h. */
 #include "cmd/merge.h"
-#include <inttypes.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
-#include "files/render_files.h"
-#include "stats/combine.h"
-#include "sampler/sampler.h"
+#include "files/render_merge.h"
+#include "image/image.h"
 #include "util/cli.h"
 #include "sys/output_path.h"
 
 #define MAX_INPUTS 4096
-
-typedef struct {
-    const char *path;
-    sidecar meta;
-} input;
-
-static int by_first_sample(const void *a, const void *b)
-{
-    int64_t x = ((const input *)a)->meta.range[0][0], y = ((const input *)b)->meta.range[0][0];
-    return x < y ? -1 : x > y;
-}
-
-/* Reads every sidecar, sorts the inputs by their first sample (the same merge whatever their order
- * on the command line) and checks them against the first; the union of their samples into *all. */
-static int check_inputs(input *in, int n, sidecar *all)
-{
-    int i, warned = 0;
-    for (i = 0; i < n; i++) {
-        int rc = sidecar_read(&in[i].meta, in[i].path);
-        if (rc < 0) fprintf(stderr, "pathlab merge: %s has no sidecar %s.meta: merge needs to know its samples "
-                                    "(was it written by pathlab render? copy the .meta with it)\n", in[i].path, in[i].path);
-        if (rc) return 1;
-        if (sidecar_is_sobol(&in[i].meta)) {
-            fprintf(stderr, "pathlab merge: %s was rendered with --sampler %s: Sobol renders cannot be merged: the file "
-                            "keeps the mean and the variance, not the sums of each scrambling that the variance needs, "
-                            "and pieces of one scrambled sequence are not independent. Render pieces to merge with "
-                            "--sampler independent\n", in[i].path, in[i].meta.sampler);
-            return 1;
-        }
-        if (strcmp(in[i].meta.kind, "mean")) {
-            fprintf(stderr, "pathlab merge: %s is a %s image: give the images, their variances come along\n", in[i].path, in[i].meta.kind);
-            return 1;
-        }
-    }
-    qsort(in, (size_t)n, sizeof *in, by_first_sample);
-    *all = in[0].meta;
-    for (i = 1; i < n; i++) {
-        if (sidecar_check_same(&in[0].meta, &in[i].meta, "merge", in[0].path, in[i].path)) return 1;
-        if (sidecar_add_ranges(all, &in[i].meta, in[0].path, in[i].path)) return 1;
-        if (strcmp(in[0].meta.revision, in[i].meta.revision) && !warned++)
-            fprintf(stderr, "pathlab merge: warning: %s and %s were made by different pathlab revisions (%s, %s): "
-                            "merge them only if the estimator did not change between them\n",
-                    in[0].path, in[i].path, in[0].meta.revision, in[i].meta.revision);
-    }
-    return 0;
-}
-
-/* The layers to merge: those of the first input if every input has the same, else none (said so). */
-static int common_layers(const input *in, int n)
-{
-    int i;
-    for (i = 1; i < n; i++)
-        if (strcmp(in[i].meta.layers, in[0].meta.layers)) {
-            fprintf(stderr, "pathlab merge: note: %s has layers '%s' and %s '%s': merging the totals only\n", in[0].path,
-                    in[0].meta.layers, in[i].path, in[i].meta.layers);
-            return 0;
-        }
-    return in[0].meta.layers[0] != '\0';
-}
-
-/* Adds every input to the sums (one combine_acc per layer), reading one input at a time. */
-static int add_inputs(const input *in, int n, int nlayers, int with_var, combine_acc *acc, render_files *first)
-{
-    int i, k;
-    for (i = 0; i < n; i++) {
-        render_files rf;
-        if (render_files_read(&rf, in[i].path, with_var, "merge")) return 1;
-        if (rf.nlayers < nlayers || rf.mean[0].w != first->mean[0].w || rf.mean[0].h != first->mean[0].h) {
-            fprintf(stderr, "pathlab merge: %s does not have the size or the layers of %s\n", in[i].path, in[0].path);
-            render_files_free(&rf);
-            return 1;
-        }
-        for (k = 0; k < nlayers; k++)
-            combine_add(&acc[k], rf.mean[k].px, with_var ? rf.var[k].px : NULL, (double)sidecar_spp(&in[i].meta));
-        render_files_free(&rf);
-    }
-    return 0;
-}
-
-/* Combines the inputs and writes OUT (and its layers and variances) with the merged sidecar. */
-static int merge(const char *out, const char *var_out, input *in, int n)
-{
-    render_files first;
-    sidecar all;
-    combine_acc acc[1 + 1001];
-    int k, nlayers, err = 0;
-    if (check_inputs(in, n, &all)) return 2;
-    if (render_files_read(&first, in[0].path, var_out != NULL, "merge")) return 2;   /* the size and the layers */
-    nlayers = common_layers(in, n) ? first.nlayers : 1;
-    for (k = 0; k < nlayers && !err; k++) err = combine_init(&acc[k], 3 * (size_t)first.mean[0].w * (size_t)first.mean[0].h);
-    if (err) fprintf(stderr, "pathlab merge: out of memory\n");
-    err = err ? 2 : add_inputs(in, n, nlayers, var_out != NULL, acc, &first) ? 2 : 0;
-    for (k = 0; k < nlayers && !err; k++) combine_result(&acc[k], first.mean[k].px, var_out ? first.var[k].px : NULL);
-    all.stopped[0] = '\0';
-    if (nlayers == 1) all.layers[0] = '\0';
-    if (!err && render_files_write(out, var_out, 0.0f, &all, first.mean, first.var, nlayers, first.bmin)) err = 1;
-    if (!err) {
-        char ranges[8192];
-        sidecar_ranges_text(&all, ranges, sizeof ranges);
-        fprintf(stderr, "pathlab merge: %d renders, samples %s (%" PRId64 " spp) -> %s%s%s\n", n, ranges, sidecar_spp(&all), out,
-                var_out ? " and " : "", var_out ? var_out : "");
-    }
-    for (k = 0; k < nlayers; k++) combine_free(&acc[k]);
-    render_files_free(&first);
-    return err;
-}
-
 
 int merge_main(int argc, char **argv)
 {
@@ -126,11 +15,9 @@ int merge_main(int argc, char **argv)
     const cli_flag flags[] = {{"--variance", CLI_STRING, &var_out, 0, 0, NULL, NULL, NULL},
                               {NULL, CLI_SWITCH, NULL, 0, 0, NULL, NULL, NULL}};
     const cli_flag *tables[] = {flags, NULL};
-    input *in;
-    int i, n, rc;
+    int n, rc;
     words = malloc(sizeof *words * (MAX_INPUTS + 1));
-    in = calloc(MAX_INPUTS, sizeof *in);
-    if (!words || !in) { fprintf(stderr, "pathlab merge: out of memory\n"); free(words); free(in); return 2; }
+    if (!words) { fprintf(stderr, "pathlab merge: out of memory\n"); return 2; }
     rc = cli_parse("merge", argc, argv, tables, NULL, words, MAX_INPUTS + 1, &n) ? 2 : 0;
     if (!rc && n < 2) { fprintf(stderr, "pathlab merge: needs an output and at least one input\nusage:\n" MERGE_USAGE); rc = 2; }
     if (!rc && (img_format_of(words[0]) != IMG_PFM || (var_out && img_format_of(var_out) != IMG_PFM))) {
@@ -139,9 +26,7 @@ int merge_main(int argc, char **argv)
     }
     if (!rc && (output_path_check("merge", "output", words[0], IMG_PFM_EXTENSION) || (var_out && output_path_check("merge", "--variance", var_out, IMG_PFM_EXTENSION))))
         rc = 2;
-    for (i = 1; !rc && i < n; i++) in[i - 1].path = words[i];
-    if (!rc) rc = merge(words[0], var_out, in, n - 1);
+    if (!rc) rc = render_merge(words[0], var_out, words + 1, n - 1);
     free(words);
-    free(in);
     return rc;
 }

@@ -1,9 +1,8 @@
 /* render_adaptive.c — the adaptive flags of pathlab render (render_adaptive.h). */
 #include "cmd/render_adaptive.h"
+#include "files/render_meta.h"
 #include <stdio.h>
 #include <string.h>
-
-#define DEFAULT_CAP 65536   /* --target-error without --spp: the cap of n(x) */
 
 void render_adaptive_flag_table(render_args *a, cli_flag t[RENDER_ADAPTIVE_NFLAGS])
 {
@@ -47,35 +46,14 @@ int render_adaptive_check(render_args *a)
     if (a->target_given) a->adaptive = 1;
     if (check_combinations(a)) return 1;
     if (!a->adaptive) return 0;
-    if (a->target_given && !a->spp_given) a->ro.spp = DEFAULT_CAP;
-    if (a->spp_given && a->ao.min_spp > a->ro.spp) {
-        fprintf(stderr, "pathlab render: --min-spp %d is over the cap --spp %d\n", a->ao.min_spp, a->ro.spp);
+    if (a->spp_given && a->ao.min_spp > a->spp) {
+        fprintf(stderr, "pathlab render: --min-spp %d is over the cap --spp %d\n", a->ao.min_spp, a->spp);
         return 1;
     }
-    a->ao.time_limit = a->ro.time_limit;
     return 0;
 }
 
 void render_adaptive_describe(const render_args *a, sidecar *m)
 {
-    char target[48] = "", time[48] = "";
-    m->adaptive[0] = '\0';
-    if (!a->adaptive) return;
-    if (a->target_given) snprintf(target, sizeof target, " --target-error %.9g", a->ao.target_error);
-    if (a->ro.time_limit > 0) snprintf(time, sizeof time, " --time %.9g", a->ro.time_limit);   /* it shapes n(x) */
-    snprintf(m->adaptive, sizeof m->adaptive, "--adaptive%s%s --pilot %d --min-spp %d", target, time, a->ao.pilot, a->ao.min_spp);
-}
-
-void render_adaptive_print(const adaptive_result *ar, double seconds)
-{
-    size_t npx = (size_t)ar->count.w * (size_t)ar->count.h, p;
-    float lo = npx ? ar->count.px[0] : 0, hi = lo;
-    for (p = 0; p < npx; p++) {
-        float n = ar->count.px[3 * p];
-        lo = n < lo ? n : lo;
-        hi = n > hi ? n : hi;
-    }
-    fprintf(stderr, "adaptive: pilot %d spp in %.2f s (not kept), then %.0f..%.0f spp per pixel, mean %.1f, in %.2f s; "
-                    "%.2f Msamples/s kept\n", ar->pilot_spp, ar->pilot_seconds, lo, hi, ar->mean_spp, seconds,
-            seconds > 0 ? ar->mean_spp * (double)npx / seconds * 1e-6 : 0.0);
+    if (a->adaptive) render_meta_describe_adaptive(m, &a->ao, a->target_given, a->ro.time_limit);
 }

@@ -4,73 +4,21 @@
 #include <inttypes.h>
 #include <stdio.h>
 #include <string.h>
-#include <unistd.h>
 #include "cmd/render_args.h"
 #include "cmd/render_adaptive.h"
-#include "files/render_files.h"
+#include "files/render_meta.h"
+#include "files/resume.h"
+#include "render/plan.h"
 #include "cmd/version.h"
-#include "stats/combine.h"
 #include "sys/interrupt.h"
 #include "sys/output_path.h"
 #include "sys/progress.h"
 
-/* The sampler of a render that names none: sobol1, the least noise for a given time (docs/sampler.md,
- * "Which default"), unless the render needs independent samples: a variance (--variance), more
- * samples added later (--resume) or merged (--samples), or the adaptive allocation. */
-static sampler_kind render_default_sampler(const render_args *a)
+/* 1 if the render needs independent samples: a variance (--variance), more samples added later
+ * (--resume) or merged (--samples), or the adaptive allocation (render_plan_default_sampler). */
+static int needs_independent(const render_args *a)
 {
-    int needs_independent = a->variance || a->resume || a->samples_given || a->adaptive || a->target_given;
-    return needs_independent ? SAMPLER_INDEPENDENT : SAMPLER_SOBOL1;
-}
-
-/* What a Sobol sampler cannot do: 1 after saying why. */
-static int check_sampler_args(const render_args *a)
-{
-    const char *name = SAMPLER_NAMES[a->ro.sampler];
-    if (a->ro.first + a->ro.spp > sampler_max_index(a->ro.sampler)) {
-        fprintf(stderr, "pathlab render: --sampler %s takes sample indices below %lld (2^32 points in each of its %d "
-                "scrambling(s); past that the points would repeat): use --sampler independent\n",
-                name, (long long)sampler_max_index(a->ro.sampler), sampler_groups(a->ro.sampler));
-        return 1;
-    }
-    if (a->ro.sampler == SAMPLER_SOBOL1 && a->variance) {
-        fprintf(stderr, "pathlab render: --variance %s: --sampler sobol1 draws one scrambled sequence per pixel, whose "
-                "samples are not independent: no variance of the mean can be estimated from them. Use --sampler sobol "
-                "(4 independent scramblings a pixel: a variance with 3 degrees of freedom) or independent\n", a->variance);
-        return 1;
-    }
-    return 0;
-}
-
-
-/* Every file the render will write, checked before the scene is read: the folder exists and can be
- * written, the extension is known (the --split layers and their variances go beside -o and
- * --variance, so checking those covers them). 0, or 1 after printing why. */
-static int check_outputs(const render_args *a)
-{
-    char layer[4200];
-    int k;
-    if (output_path_check("render", "-o", a->out, IMG_EXTENSIONS)) return 1;
-    for (k = a->ro.io.bmin; a->ro.split && a->ro.io.bmax != BOUNCES_INF && k <= a->ro.io.bmax; k++) {
-        render_files_layer_path(layer, sizeof layer, a->out, k);
-        if (output_path_check("render", "--split", layer, IMG_EXTENSIONS)) return 1;
-        if (!a->variance) continue;
-        render_files_layer_path(layer, sizeof layer, a->variance, k);
-        if (output_path_check("render", "--split --variance", layer, IMG_PFM_EXTENSION)) return 1;
-    }
-    if (a->variance && img_format_of(a->variance) != IMG_PFM) {
-        fprintf(stderr, "pathlab render: --variance %s: the variance is written as .pfm\n", a->variance);
-        return 1;
-    }
-    if (a->variance && output_path_check("render", "--variance", a->variance, IMG_PFM_EXTENSION)) return 1;
-    if (a->sample_count && output_path_check("render", "--sample-count", a->sample_count, NULL)) return 1;   /* .pfm: render_adaptive_check */
-    if (a->write_view && output_path_check("render", "--write-view", a->write_view, NULL)) return 1;
-    if ((a->variance && !strcmp(a->variance, a->out)) || (a->sample_count && !strcmp(a->sample_count, a->out))
-        || (a->variance && a->sample_count && !strcmp(a->variance, a->sample_count))) {
-        fprintf(stderr, "pathlab render: -o, --variance and --sample-count must be three different files\n");
-        return 1;
-    }
-    return 0;
+    return a->variance || a->resume || a->samples_given || a->adaptive || a->target_given;
 }
 
 /* What render needs beyond valid flag values: a scene, an output it can write, a last bounce for
@@ -79,8 +27,9 @@ static int check_render_args(render_args *a)
 {
     if (!a->scene) { fprintf(stderr, "pathlab render: needs a scene: pathlab render SCENE.obj -o FILE\n"); return 1; }
     if (!a->out) { fprintf(stderr, "pathlab render: needs an output: -o FILE.pfm, -o FILE.ppm or -o FILE.png\n"); return 1; }
-    if (check_outputs(a)) return 1;
-    if (a->ro.split && a->ro.io.bmax == BOUNCES_INF) {
+    if (render_files_check_outputs(a->out, a->variance, a->sample_count, a->cam.write_view, a->ro.split, a->ro.io.bmin, a->ro.io.bmax))
+        return 1;
+    if (a->ro.split && a->ro.io.bmax == BOUNCES_NO_END) {
         fprintf(stderr, "pathlab render: --split needs a last bounce, e.g. --bounces 0:8\n");
         return 1;
     }
@@ -96,13 +45,30 @@ static int check_render_args(render_args *a)
         fprintf(stderr, "pathlab render: --resume needs --spp N (the samples wanted in all) or --time SEC\n");
         return 1;
     }
-    if (render_adaptive_check(a) || render_check_camera_flags(a)) return 1;
-    if (a->ro.time_limit > 0 && !a->spp_given && !a->samples_given && !a->target_given) a->ro.spp = 1 << 30;   /* --time alone: no cap */
-    if (!a->sampler_given) a->ro.sampler = render_default_sampler(a);
-    return check_sampler_args(a);
+    return render_adaptive_check(a) || render_check_camera_flags(a);
 }
 
-static int parse_render_args(render_args *a, int argc, char **argv)
+/* The plan of the render the valid flags a ask for (before --resume adds what the image had). */
+static void make_plan(const render_args *a, render_plan *p)
+{
+    p->ro = a->ro;
+    p->ro.sampler = a->sampler_given ? a->ro.sampler : render_plan_default_sampler(needs_independent(a));
+    p->ro.io.rr_below = render_rr_below(a->ro.io.rr_below, p->ro.sampler);
+    p->ro.first = a->samples_given ? a->samples[0] : 0;
+    if (a->samples_given) p->ro.spp = (int)(a->samples[1] - a->samples[0]);
+    else if (a->spp_given) p->ro.spp = a->spp;
+    else if (a->target_given) p->ro.spp = RENDER_ADAPTIVE_DEFAULT_CAP;
+    else if (a->ro.time_limit > 0) p->ro.spp = RENDER_SPP_UNTIL_TIME;
+    else p->ro.spp = a->spp;
+    p->had = 0;
+    p->total = p->ro.spp;
+    p->adaptive = a->adaptive;
+    p->ao = a->ao;
+    p->ao.time_limit = a->ro.time_limit;
+    p->ao.pilot_rr_below = render_rr_below(a->ro.io.rr_below, SAMPLER_INDEPENDENT);
+}
+
+static int parse_render_args(render_args *a, render_plan *p, int argc, char **argv)
 {
     cli_flag t[RENDER_NFLAGS], ta[RENDER_ADAPTIVE_NFLAGS];
     const cli_flag *tables[3];
@@ -116,131 +82,64 @@ static int parse_render_args(render_args *a, int argc, char **argv)
     tables[2] = NULL;
     if (cli_parse("render", argc, argv, tables, a, words, 1, &nwords)) return 1;
     a->scene = nwords ? words[0] : NULL;
-    return check_render_args(a);
+    if (check_render_args(a)) return 1;
+    make_plan(a, p);
+    return render_plan_check_sampler(p, a->variance);
 }
 
 /* The sidecar of this render, its sample range aside: what must match for pieces to merge. */
-static void describe_render(const render_args *a, const scene *s, sidecar *m)
+static void describe_render(const render_args *a, const render_plan *p, const scene *s, sidecar *m)
 {
-    const render_opts *o = &a->ro;
-    const integrator_opts *io = &o->io;
-    const view *v = &a->vw;
-    char bmax[16], rr[48];
-    float rr_below;
-    memset(m, 0, sizeof *m);
-    strcpy(m->kind, "mean");
-    strcpy(m->layer, "total");
-    m->seed = o->seed;
-    snprintf(m->scene, sizeof m->scene, "%s", a->scene);
-    snprintf(m->scene_id, sizeof m->scene_id, "fnv1a64:%016" PRIx64, mesh_fingerprint(&s->m));
-    snprintf(bmax, sizeof bmax, io->bmax == BOUNCES_INF ? "inf" : "%d", io->bmax);
-    /* --rr-below only when it is not 1 (the classic rule): sidecars written before it stay comparable */
-    rr_below = rr_below_for(io, o->sampler);
-    if (io->rr_depth < 0) snprintf(rr, sizeof rr, "off");
-    else snprintf(rr, sizeof rr, rr_below == 1.0f ? "%d" : "%d --rr-below %.6g", io->rr_depth, (double)rr_below);
-    /* --sampler only when not independent (whatever the default): the sidecars written before it
-     * existed stay comparable, and a sidecar without it is independent */
-    snprintf(m->flags, sizeof m->flags, "--bounces %d:%s --light %s --dir %s --direct %s --rr %s --pixel-offset %.9g%s%s%s",
-             io->bmin, bmax, LIGHT_STRATEGY_NAMES[io->light], DIR_STRATEGY_NAMES[io->dir], DIRECT_STRATEGY_NAMES[io->direct],
-             rr, o->pixel_offset, o->pixel_center ? " --pixel-center" : "", o->sampler != SAMPLER_INDEPENDENT ? " --sampler " : "",
-             o->sampler != SAMPLER_INDEPENDENT ? SAMPLER_NAMES[o->sampler] : "");
-    snprintf(m->camera, sizeof m->camera, "eye %.9g,%.9g,%.9g target %.9g,%.9g,%.9g up %.9g,%.9g,%.9g fov %.9g size %dx%d",
-             v->eye.x, v->eye.y, v->eye.z, v->target.x, v->target.y, v->target.z, v->up.x, v->up.y, v->up.z, v->fov,
-             v->width, v->height);
-    snprintf(m->revision, sizeof m->revision, "%s", pathlab_revision());
+    render_meta_describe(m, &p->ro, a->scene, mesh_fingerprint(&s->m), &a->cam.vw, pathlab_revision());
     render_adaptive_describe(a, m);
-    if (o->sampler != SAMPLER_INDEPENDENT) snprintf(m->sampler, sizeof m->sampler, "%s", SAMPLER_NAMES[o->sampler]);
 }
 
-/* --sampler sobol cannot be resumed: 1 after saying why. */
-static int refuse_sobol_resume(const render_args *a, const sidecar *had)
-{
-    if (!sidecar_is_sobol(had) && a->ro.sampler == SAMPLER_INDEPENDENT) return 0;
-    fprintf(stderr, "pathlab render: --resume: %s%s%s%s: a Sobol render cannot be resumed: its file keeps the mean and the "
-            "variance, not the sums of each scrambling that the variance needs, and more points of the same "
-            "scrambled sequences are not independent of those it has. Render it again with the --spp wanted, "
-            "or use --sampler independent for renders to resume\n", a->out,
-            sidecar_is_sobol(had) ? " was rendered with --sampler " : " (this render: --sampler ",
-            sidecar_is_sobol(had) ? had->sampler : SAMPLER_NAMES[a->ro.sampler], sidecar_is_sobol(had) ? "" : ")");
-    return 1;
-}
-
-/* --resume: reads the render at -o, checks it is this render, and sets the samples still to do
- * (from the end of its samples up to --spp in all). 1 if done already (prints so), 2 on error. */
-static int prepare_resume(render_args *a, const sidecar *now, render_files *prev, char *var_out, size_t cap)
+/* --resume: reads the render at -o, checks it is this render, and sets the plan's samples: those
+ * it had, and the rest up to --spp in all from the end of its samples. 1 if done already (prints
+ * so), 2 on error. */
+static int prepare_resume(render_args *a, render_plan *p, const sidecar *now, render_files *prev, char *var_out, size_t cap)
 {
     sidecar had;
     int64_t have;
-    int rc = sidecar_read(&had, a->out);
-    if (rc < 0 && access(a->out, F_OK) != 0) {
-        fprintf(stderr, "pathlab render: --resume: %s does not exist: there is nothing to resume (leave out --resume)\n", a->out);
-        return 2;
-    }
-    if (rc < 0) render_files_read(prev, a->out, 0, "render");   /* says that it has no sidecar */
-    if (rc || refuse_sobol_resume(a, &had)) return 2;
-    if (render_files_read(prev, a->out, had.variance[0] != '\0', "render")) return 2;
-    if (sidecar_check_same(&prev->meta, now, "render --resume", a->out, "this render")) return 2;
-    if (a->variance && !had.variance[0]) {
-        fprintf(stderr, "pathlab render: %s was rendered without --variance: its variance cannot be resumed\n", a->out);
-        return 2;
-    }
-    if ((prev->nlayers > 1) != (a->ro.split != 0)) {
-        fprintf(stderr, "pathlab render: %s was rendered %s --split: resume it %s --split\n", a->out,
-                prev->nlayers > 1 ? "with" : "without", prev->nlayers > 1 ? "with" : "without");
-        return 2;
-    }
+    if (resume_read(prev, &had, a->out, now, p->ro.sampler, a->variance != NULL, a->ro.split)) return 2;
     if (had.variance[0] && !a->variance) {   /* keep its variance up to date, where it is */
         render_files_variance_path(var_out, cap, a->out, had.variance);
         a->variance = var_out;
     }
     have = sidecar_spp(&had);
-    if (have >= a->ro.spp) {
-        fprintf(stderr, "pathlab render: %s already has %" PRId64 " spp (--spp %d): nothing to add\n", a->out, have, a->ro.spp);
+    if (have >= p->total) {
+        fprintf(stderr, "pathlab render: %s already has %" PRId64 " spp (--spp %" PRId64 "): nothing to add\n", a->out, have, p->total);
         return 1;
     }
-    a->ro.first = had.range[had.nranges - 1][1];
-    a->ro.spp -= (int)have;
-    return 0;
-}
-
-/* r := prev (n samples) combined with r, layer by layer, the variances exactly. */
-static int combine_with(const render_files *prev, int64_t n, render_result *r)
-{
-    int i;
-    for (i = 0; i < r->nlayers; i++) {
-        size_t count = 3 * (size_t)r->mean[i].w * (size_t)r->mean[i].h;
-        combine_acc c;
-        if (combine_init(&c, count)) { fprintf(stderr, "pathlab render: out of memory\n"); return 1; }
-        combine_add(&c, prev->mean[i].px, prev->var ? prev->var[i].px : NULL, (double)n);
-        combine_add(&c, r->mean[i].px, r->var[i].px, r->spp);
-        combine_result(&c, r->mean[i].px, r->var[i].px);
-        combine_free(&c);
-    }
+    p->had = have;
+    p->ro.first = had.range[had.nranges - 1][1];
+    p->ro.spp = (int)(p->total - have);
     return 0;
 }
 
 /* What was rendered, into the sidecar: the samples (with those of the resumed render), and why it
  * stopped; adaptive: the range of the pixels with the most samples, and the counts' cap and mean. */
-static int finish_meta(sidecar *m, const render_args *a, const render_result *r, const render_files *prev, const adaptive_result *ar)
+static int finish_meta(sidecar *m, const render_args *a, const render_plan *p, const render_result *r, const render_files *prev,
+                       const adaptive_result *ar)
 {
     m->nranges = 1;
-    m->range[0][0] = a->ro.first;
-    m->range[0][1] = a->ro.first + r->spp;
-    m->spp_cap = a->ro.spp;
+    m->range[0][0] = p->ro.first;
+    m->range[0][1] = p->ro.first + r->spp;
+    m->spp_cap = p->ro.spp;
     m->spp_mean = ar->mean_spp;
     m->pilot_seed = ar->pilot_seed;
     m->variance_dof = r->variance_dof;
     if (r->interrupted) snprintf(m->stopped, sizeof m->stopped, "%s", interrupt_name(r->interrupted));
-    else if (a->adaptive && a->target_given && r->spp < ar->max_spp) snprintf(m->stopped, sizeof m->stopped, "time");
-    else if (!a->adaptive && r->spp < a->ro.spp && a->ro.time_limit > 0 && a->spp_given) snprintf(m->stopped, sizeof m->stopped, "time");
+    else if (p->adaptive && a->target_given && r->spp < ar->max_spp) snprintf(m->stopped, sizeof m->stopped, "time");
+    else if (!p->adaptive && r->spp < p->ro.spp && p->ro.time_limit > 0 && a->spp_given) snprintf(m->stopped, sizeof m->stopped, "time");
     return prev->nlayers ? sidecar_add_ranges(m, &prev->meta, "this render", a->out) : 0;
 }
 
 /* After a stop by a signal or --time: what was written, and how to go on. */
-static void report_stop(const render_args *a, const render_result *r, const sidecar *m, const adaptive_result *ar)
+static void report_stop(const render_args *a, const render_plan *p, const render_result *r, const sidecar *m, const adaptive_result *ar)
 {
     char el[32];
-    int64_t spp = sidecar_spp(m), asked = spp - r->spp + a->ro.spp;
+    int64_t spp = sidecar_spp(m), asked = p->total;
     progress_duration(el, sizeof el, r->seconds);
     if (r->interrupted && a->adaptive)
         fprintf(stderr, "pathlab render: interrupted (%s) after %s at sample %d of the %d the noisiest pixels wanted "
@@ -254,33 +153,33 @@ static void report_stop(const render_args *a, const render_result *r, const side
         fprintf(stderr, "pathlab render: --time %.9g s: stopped at sample %d of the %d the noisiest pixels wanted: those pixels "
                         "have fewer samples than --target-error asks (see the sample count), written %s\n", a->ro.time_limit, r->spp,
                 ar->max_spp, a->out);
-    else if (!a->adaptive && r->spp < a->ro.spp && a->spp_given)
+    else if (!a->adaptive && r->spp < p->ro.spp && a->spp_given)
         fprintf(stderr, "pathlab render: --time %.9g s: %" PRId64 " of %" PRId64 " spp fitted, written %s\n", a->ro.time_limit, spp, asked, a->out);
 }
 
-static int render_and_write(render_args *a, const scene *s, const camera *cam)
+static int render_and_write(render_args *a, render_plan *p, const scene *s, const camera *cam)
 {
     render_files prev;
     render_result r;
     adaptive_result ar;
     sidecar m;
-    char var_out[4096];
+    char var_out[PATH_CAP];
     int rc = 0, err;
     memset(&prev, 0, sizeof prev);
     memset(&ar, 0, sizeof ar);
-    describe_render(a, s, &m);
-    if (a->resume && (rc = prepare_resume(a, &m, &prev, var_out, sizeof var_out)) != 0) {
+    describe_render(a, p, s, &m);
+    if (a->resume && (rc = prepare_resume(a, p, &m, &prev, var_out, sizeof var_out)) != 0) {
         render_files_free(&prev);
         return rc == 1 ? 0 : 2;
     }
     interrupt_install();   /* from here, a first Ctrl-C stops after the pass and writes what it reached */
-    if (a->adaptive ? adaptive_render(s, cam, &a->ro, &a->ao, &r, &ar) : render(s, cam, &a->ro, &r)) { render_files_free(&prev); return 1; }
-    if (!a->ro.quiet && a->adaptive) render_adaptive_print(&ar, r.seconds);
-    else if (!a->ro.quiet) render_print_stats(&r, r.spp, cam->width * cam->height);
-    err = finish_meta(&m, a, &r, &prev, &ar) || (prev.nlayers && combine_with(&prev, sidecar_spp(&prev.meta), &r));
+    if (p->adaptive ? adaptive_render(s, cam, &p->ro, &p->ao, &r, &ar) : render(s, cam, &p->ro, &r)) { render_files_free(&prev); return 1; }
+    if (!p->ro.quiet && p->adaptive) adaptive_print_summary(&ar, r.seconds);
+    else if (!p->ro.quiet) render_print_stats(&r, r.spp, cam->width * cam->height);
+    err = finish_meta(&m, a, p, &r, &prev, &ar) || (prev.nlayers && resume_combine(&prev, sidecar_spp(&prev.meta), &r));
     err = err || render_files_write_all(a->out, a->variance, a->sample_count, &ar.count, a->exposure, &m, r.mean, r.var,
-                                        r.nlayers, a->ro.io.bmin);
-    if (!err) report_stop(a, &r, &m, &ar);
+                                        r.nlayers, p->ro.io.bmin);
+    if (!err) report_stop(a, p, &r, &m, &ar);
     if (!err && r.interrupted) rc = 128 + r.interrupted;
     render_result_free(&r);
     render_files_free(&prev);
@@ -291,10 +190,11 @@ static int render_and_write(render_args *a, const scene *s, const camera *cam)
 int render_main(int argc, char **argv)
 {
     render_args a;
+    render_plan p;
     scene s;
     camera cam;
     int rc;
-    if (parse_render_args(&a, argc, argv)) return 2;
+    if (parse_render_args(&a, &p, argc, argv)) return 2;
     if (scene_load(&s, a.scene, a.ro.threads, a.ro.quiet)) return 2;
     if (!a.ro.quiet)
         fprintf(stderr, "%s: %d triangles (%d degenerate dropped), %d emitting, %d materials; loaded in %.0f ms, BVH in %.0f ms\n",
@@ -302,7 +202,7 @@ int render_main(int argc, char **argv)
     if (render_make_camera(&a, &s, &cam)) { scene_free(&s); return 2; }
     if (s.lights.n == 0)
         fprintf(stderr, "pathlab render: warning: %s has no emitters (no material with Ke > 0): the image is black\n", a.scene);
-    rc = render_and_write(&a, &s, &cam);
+    rc = render_and_write(&a, &p, &s, &cam);
     scene_free(&s);
     return rc;
 }

@@ -55,7 +55,8 @@ static int read_layers(view_data *d, const char *image0, const char *layers, con
     sidecar m;
     int k, lo = 0, hi = VIEW_MAX_LAYERS - 1;
     char path[PATH_CAP];
-    if (!layers && (sidecar_read(&m, image0) || sscanf(m.layers, "%d:%d", &lo, &hi) != 2)) return 0;
+    if (!layers && (sidecar_read(&m, image0) || m.layers_n == 0)) return 0;
+    if (!layers) lo = m.layers_first, hi = m.layers_first + m.layers_n - 1;
     for (k = lo; k <= hi && k < VIEW_MAX_LAYERS && d->nlayers < VIEW_MAX_LAYERS; k++) {
         html_image *h = &d->strip[d->nlayers];
         if (layers) snprintf(path, sizeof path, "%s_L%d.pfm", layers, k);

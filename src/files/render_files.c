@@ -1,6 +1,8 @@
 /* render_files.c — a render's files and their sidecars, written and read back. */
 #include "files/render_files.h"
+#include "render/render.h"
 #include "sys/interrupt.h"
+#include "sys/output_path.h"
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -12,6 +14,33 @@ void render_files_layer_path(char *dst, size_t cap, const char *out, int k)
 {
     const char *e = img_extension(out);
     snprintf(dst, cap, "%.*s_L%d%s", (int)(strlen(out) - strlen(e)), out, k, e);
+}
+
+int render_files_check_outputs(const char *out, const char *var_out, const char *count_out, const char *view_out, int split,
+                               int bmin, int bmax)
+{
+    char layer[PATH_CAP];
+    int k;
+    if (output_path_check("render", "-o", out, IMG_EXTENSIONS)) return 1;
+    for (k = bmin; split && bmax != BOUNCES_NO_END && k <= bmax; k++) {
+        render_files_layer_path(layer, sizeof layer, out, k);
+        if (output_path_check("render", "--split", layer, IMG_EXTENSIONS)) return 1;
+        if (!var_out) continue;
+        render_files_layer_path(layer, sizeof layer, var_out, k);
+        if (output_path_check("render", "--split --variance", layer, IMG_PFM_EXTENSION)) return 1;
+    }
+    if (var_out && img_format_of(var_out) != IMG_PFM) {
+        fprintf(stderr, "pathlab render: --variance %s: the variance is written as .pfm\n", var_out);
+        return 1;
+    }
+    if (var_out && output_path_check("render", "--variance", var_out, IMG_PFM_EXTENSION)) return 1;
+    if (count_out && output_path_check("render", "--sample-count", count_out, NULL)) return 1;   /* .pfm: render_adaptive_check */
+    if (view_out && output_path_check("render", "--write-view", view_out, NULL)) return 1;
+    if ((var_out && !strcmp(var_out, out)) || (count_out && !strcmp(count_out, out)) || (var_out && count_out && !strcmp(var_out, count_out))) {
+        fprintf(stderr, "pathlab render: -o, --variance and --sample-count must be three different files\n");
+        return 1;
+    }
+    return 0;
 }
 
 static const char *base_name(const char *p)
@@ -30,7 +59,7 @@ static void folder_of(char *dst, size_t cap, const char *p)
  * that the pair can be moved together (to another machine, for merge); else the path as given. */
 static void variance_name(char *dst, size_t cap, const char *image_path, const char *var_path)
 {
-    char a[4096], b[4096];
+    char a[PATH_CAP], b[PATH_CAP];
     folder_of(a, sizeof a, image_path);
     folder_of(b, sizeof b, var_path);
     if (snprintf(dst, cap, "%s", strcmp(a, b) ? var_path : base_name(var_path)) >= (int)cap) dst[0] = '\0';   /* too long to name */
@@ -115,7 +144,7 @@ static int finish(file_set *fs, int commit)
 /* One image file and, for a PFM, its sidecar (an 8-bit PPM or PNG is for viewing: nothing reads it back). */
 static int write_one(file_set *fs, const char *path, const image *im, float exposure, const sidecar *meta)
 {
-    char meta_path[4200];
+    char meta_path[PATH_CAP];
     const char *tmp = stage(fs, path), *mtmp;
     img_format fmt = img_format_of(path);
     int err = !tmp || (fmt == IMG_PFM ? img_write_pfm(im, tmp) : fmt == IMG_PPM ? img_write_ppm(im, tmp, exposure)
@@ -135,26 +164,28 @@ int render_files_write(const char *out, const char *var_out, float exposure, con
 int render_files_write_all(const char *out, const char *var_out, const char *count_out, const image *count,
                            float exposure, const sidecar *meta, const image *mean, const image *var, int nlayers, int bmin)
 {
-    char path[4096], vpath[4096];
+    char path[PATH_CAP], vpath[PATH_CAP];
     sidecar m = *meta;
     file_set fs = {NULL, NULL, 0, 0};
     int i, err = 0;
     if (count_out) variance_name(m.sample_count, sizeof m.sample_count, out, count_out);
     else m.sample_count[0] = '\0';
     for (i = 0; i < nlayers && !err; i++) {
+        int k = render_bounce_of_layer(i, bmin);
         if (i == 0) snprintf(path, sizeof path, "%s", out), snprintf(m.layer, sizeof m.layer, "total");
-        else render_files_layer_path(path, sizeof path, out, bmin + i - 1), snprintf(m.layer, sizeof m.layer, "L%d", bmin + i - 1);
+        else render_files_layer_path(path, sizeof path, out, k), snprintf(m.layer, sizeof m.layer, "L%d", k);
         if (var_out && i == 0) snprintf(vpath, sizeof vpath, "%s", var_out);
-        else if (var_out) render_files_layer_path(vpath, sizeof vpath, var_out, bmin + i - 1);
+        else if (var_out) render_files_layer_path(vpath, sizeof vpath, var_out, k);
         strcpy(m.kind, "mean");
         if (var_out) variance_name(m.variance, sizeof m.variance, path, vpath);
         else m.variance[0] = '\0';
-        if (i > 0) m.layers[0] = '\0';   /* only the total lists the layers */
-        else if (nlayers > 1) snprintf(m.layers, sizeof m.layers, "%d:%d", bmin, bmin + nlayers - 2);
+        m.layers_first = bmin;   /* only the total lists the layers */
+        m.layers_n = i == 0 ? nlayers - 1 : 0;
         err = write_one(&fs, path, &mean[i], exposure, &m);
         if (!err && var_out) {
             strcpy(m.kind, "variance");
-            m.variance[0] = m.layers[0] = '\0';
+            m.variance[0] = '\0';
+            m.layers_n = 0;
             err = write_one(&fs, vpath, &var[i], 0.0f, &m);
         }
         if (i == 0) m.sample_count[0] = '\0';   /* only the total names the counts */
@@ -162,7 +193,8 @@ int render_files_write_all(const char *out, const char *var_out, const char *cou
     if (!err && count_out) {
         strcpy(m.kind, "sample-count");
         strcpy(m.layer, "total");
-        m.variance[0] = m.layers[0] = '\0';
+        m.variance[0] = '\0';
+        m.layers_n = 0;
         err = write_one(&fs, count_out, count, 0.0f, &m);
     }
     return finish(&fs, !err) || err;
@@ -170,7 +202,7 @@ int render_files_write_all(const char *out, const char *var_out, const char *cou
 
 void render_files_variance_path(char *dst, size_t cap, const char *image_path, const char *name)
 {
-    char dir[4096];
+    char dir[PATH_CAP];
     int n;
     folder_of(dir, sizeof dir, image_path);
     n = strchr(name, '/') ? snprintf(dst, cap, "%s", name) : snprintf(dst, cap, "%s%s", dir, name);
@@ -202,23 +234,13 @@ static int read_one(const char *cmd, const char *path, const char *kind, const s
     return img_read_pfm(im, path);
 }
 
-/* Parses the sidecar's "layers A:B"; 0 layers if none. */
-static int layer_count(const sidecar *m, int *bmin)
-{
-    int a, b;
-    *bmin = 0;
-    if (!m->layers[0] || sscanf(m->layers, "%d:%d", &a, &b) != 2 || a < 0 || b < a || b > 1000) return 0;
-    *bmin = a;
-    return b - a + 1;
-}
-
 /* Layer i (0: the total) and, with_var, its variance. */
 static int read_layer(render_files *rf, int i, const char *path, int with_var, const char *cmd)
 {
-    char p[4096], vp[4096];
+    char p[PATH_CAP], vp[PATH_CAP];
     sidecar m, vm;
     if (i == 0) snprintf(p, sizeof p, "%s", path);
-    else render_files_layer_path(p, sizeof p, path, rf->bmin + i - 1);
+    else render_files_layer_path(p, sizeof p, path, render_bounce_of_layer(i, rf->bmin));
     if (read_one(cmd, p, "mean", i ? &rf->meta : NULL, &rf->mean[i], i ? &m : &rf->meta)) return 1;
     if (!with_var) return 0;
     if (!(i ? m.variance : rf->meta.variance)[0]) {
@@ -236,7 +258,8 @@ int render_files_read(render_files *rf, const char *path, int with_var, const ch
     memset(rf, 0, sizeof *rf);
     if ((rc = sidecar_read(&first, path)) < 0) return read_one(cmd, path, "mean", NULL, NULL, &first);   /* prints why */
     if (rc) return 1;
-    n = 1 + layer_count(&first, &rf->bmin);
+    rf->bmin = first.layers_first;
+    n = 1 + first.layers_n;
     rf->mean = calloc((size_t)n, sizeof(image));
     rf->var = with_var ? calloc((size_t)n, sizeof(image)) : NULL;
     if (!rf->mean || (with_var && !rf->var)) {

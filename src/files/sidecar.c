@@ -1,5 +1,7 @@
 /* sidecar.c — reading, writing and comparing the FILE.meta that says what made FILE. */
 #include "files/sidecar.h"
+#include "sys/output_path.h"
+#include "tracer/integrator.h"
 #include "util/textfile.h"
 #include <errno.h>
 #include <inttypes.h>
@@ -28,16 +30,9 @@ void sidecar_ranges_text(const sidecar *m, char *dst, size_t cap)
         len += (size_t)snprintf(dst + len, cap - len, "%s%" PRId64 ":%" PRId64, i ? "," : "", m->range[i][0], m->range[i][1]);
 }
 
-int sidecar_write(const sidecar *m, const char *image_path)
-{
-    char path[4200];
-    sidecar_path(path, sizeof path, image_path);
-    return sidecar_write_to(m, image_path, path);
-}
-
 int sidecar_write_to(const sidecar *m, const char *image_path, const char *path)
 {
-    char tmp[4300], ranges[8192];
+    char tmp[PATH_CAP], ranges[8192];
     FILE *f;
     if (!(f = textfile_open(path, tmp, sizeof tmp))) return 1;
     sidecar_ranges_text(m, ranges, sizeof ranges);
@@ -51,7 +46,7 @@ int sidecar_write_to(const sidecar *m, const char *image_path, const char *path)
     fprintf(f, "seed %" PRIu64 "\n", m->seed);
     fprintf(f, "scene %s\nscene-id %s\nflags %s\ncamera %s\n", m->scene, m->scene_id, m->flags, m->camera);
     if (m->variance[0]) fprintf(f, "variance %s\n", m->variance);
-    if (m->layers[0]) fprintf(f, "layers %s\n", m->layers);
+    if (m->layers_n > 0) fprintf(f, "layers %d:%d\n", m->layers_first, m->layers_first + m->layers_n - 1);
     if (m->stopped[0]) fprintf(f, "stopped %s\n", m->stopped);
     if (m->sampler[0]) fprintf(f, "sampler %s\n", m->sampler);
     if (m->variance_dof > 0) fprintf(f, "variance-dof %d\n", m->variance_dof);
@@ -80,6 +75,20 @@ static int parse_ranges(sidecar *m, const char *s)
     }
 }
 
+/* "A:B", 0 <= A <= B <= BOUNCES_CAP, into m's layers; 0, or 1 if malformed. */
+static int parse_layers(sidecar *m, const char *s)
+{
+    char *end;
+    long a = strtol(s, &end, 10), b;
+    if (end == s || *end != ':') return 1;
+    s = end + 1;
+    b = strtol(s, &end, 10);
+    if (end == s || *end || a < 0 || b < a || b > BOUNCES_CAP) return 1;
+    m->layers_first = (int)a;
+    m->layers_n = (int)(b - a + 1);
+    return 0;
+}
+
 /* Copies the value into a text field; 1 if it does not fit. */
 static int set_text(char *dst, size_t cap, const char *v)
 {
@@ -104,7 +113,7 @@ static int parse_line(sidecar *m, const char *key, const char *v)
     if (!strcmp(key, "flags")) return set_text(m->flags, sizeof m->flags, v);
     if (!strcmp(key, "camera")) return set_text(m->camera, sizeof m->camera, v);
     if (!strcmp(key, "variance")) return set_text(m->variance, sizeof m->variance, v);
-    if (!strcmp(key, "layers")) return set_text(m->layers, sizeof m->layers, v);
+    if (!strcmp(key, "layers")) return parse_layers(m, v);
     if (!strcmp(key, "revision")) return set_text(m->revision, sizeof m->revision, v);
     if (!strcmp(key, "stopped")) return set_text(m->stopped, sizeof m->stopped, v);
     if (!strcmp(key, "adaptive")) return set_text(m->adaptive, sizeof m->adaptive, v);
@@ -147,7 +156,7 @@ static int split_line(char *line, char **key, char **value)
 
 int sidecar_read(sidecar *m, const char *image_path)
 {
-    char path[4200], line[4 * SIDECAR_TEXT + 8192], *key, *value;
+    char path[PATH_CAP], line[4 * SIDECAR_TEXT + 8192], *key, *value;
     int lineno = 0, err = 0;
     FILE *f;
     memset(m, 0, sizeof *m);

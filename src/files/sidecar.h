@@ -28,7 +28,8 @@ typedef struct {
     char flags[SIDECAR_TEXT];      /* every flag that changes the samples, in one canonical form */
     char camera[SIDECAR_TEXT];     /* the camera used, exactly (%.9g) */
     char variance[SIDECAR_TEXT];   /* the variance image's file name, in the same folder ("" if none) */
-    char layers[32];               /* "A:B" when --split wrote FILE_LA.pfm .. FILE_LB.pfm ("" if none) */
+    int layers_first, layers_n;    /* --split wrote the layers L_first .. L_(first + n - 1), FILE_Lk.pfm
+                                    * ("layers A:B" in the file; n = 0: none) */
     char revision[64];             /* pathlab's version (git describe) */
     char stopped[32];              /* "SIGINT", "SIGTERM" or "time" when stopped before the samples asked */
     char adaptive[SIDECAR_TEXT];   /* the adaptive flags ("--target-error 0.01 --pilot 16 ..."); "" if uniform */
@@ -42,9 +43,8 @@ typedef struct {
 
 /* FILE -> FILE.meta */
 void sidecar_path(char *dst, size_t cap, const char *image_path);
-/* Writes the sidecar of image_path (atomically); 0, or 1 after printing why. */
-int sidecar_write(const sidecar *m, const char *image_path);
-/* The same, into the file `file` (a temporary name, renamed later with the image). */
+/* Writes the sidecar of image_path into the file `file` (a temporary name, renamed later with the
+ * image: render_files.h); 0, or 1 after printing why. */
 int sidecar_write_to(const sidecar *m, const char *image_path, const char *file);
 /* Reads the sidecar of image_path. 0; -1 if it does not exist (nothing printed); 1 after printing
  * "FILE.meta:LINE: why" for a malformed one. */

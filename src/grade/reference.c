@@ -30,7 +30,7 @@ static int read_layers(grade_reference *R, const char *path, const char *layers,
     int k;
     if (layers) snprintf(R->layer_prefix, sizeof R->layer_prefix, "%s", layers);
     else snprintf(R->layer_prefix, sizeof R->layer_prefix, "%.*s_split", (int)stem, path);
-    if (!layers && R->has_meta && !strncmp(R->meta.layers, "0:", 2)) {   /* render --split's own REF_L0.pfm ... */
+    if (!layers && R->has_meta && R->meta.layers_n > 0 && R->meta.layers_first == 0) {   /* render --split's own REF_L0.pfm ... */
         if (snprintf(file, sizeof file, "%s_L0.pfm", R->layer_prefix) >= (int)sizeof file || !path_is_readable(file)) snprintf(R->layer_prefix, sizeof R->layer_prefix, "%.*s", (int)stem, path);
     }
     for (k = 0; k < GRADE_MAX_LAYERS; k++) {

@@ -13,6 +13,7 @@ void adaptive_opts_init(adaptive_opts *ao)
     ao->min_spp = 4;
     ao->dark = 0.1;
     ao->spread = 1;
+    ao->pilot_rr_below = 1.0f;
 }
 
 /* A constant of its own ("pilot" in ASCII) hashed with the seed: the pilot's streams are keyed by
@@ -94,7 +95,11 @@ static void counts_for_budget(const double *rel, size_t npx, int min_spp, int ca
     counts_for(rel, npx, lo, min_spp, cap, n);
 }
 
-void adaptive_allocate(const image *m, const image *v, int pilot, const adaptive_opts *ao, int cap, double budget, int *n)
+/* n(x) from a pilot's mean m and variance of the mean v (pilot samples per pixel) into n, each in
+ * [min_spp, cap] and a multiple of ADAPTIVE_GROUP (or cap). With a target error, n(x) =
+ * ceil(s^2 / (E^2 max(|m|, d)^2)); else the counts are proportional to the relative standard
+ * deviation s / max(|m|, d), scaled so that they add up to about `budget` pixel-samples. */
+static void adaptive_allocate(const image *m, const image *v, int pilot, const adaptive_opts *ao, int cap, double budget, int *n)
 {
     size_t npx = (size_t)m->w * (size_t)m->h, p;
     int min_spp = ao->min_spp < cap ? ao->min_spp : cap;
@@ -124,6 +129,7 @@ static int run_pilot(const scene *sc, const camera *cam, const render_opts *o, c
     po.time_limit = 0;
     po.pixel_spp = NULL;
     po.sampler = SAMPLER_INDEPENDENT;   /* its variance per sample must be that of independent samples */
+    po.io.rr_below = ao->pilot_rr_below;
     if (render(sc, cam, &po, pr)) return 1;
     ar->pilot_seconds = pr->seconds;
     ar->pilot_spp = pr->spp;
@@ -180,4 +186,18 @@ void adaptive_result_free(adaptive_result *ar)
     free(ar->pixel_spp);
     ar->pixel_spp = NULL;
     img_free(&ar->count);
+}
+
+void adaptive_print_summary(const adaptive_result *ar, double seconds)
+{
+    size_t npx = (size_t)ar->count.w * (size_t)ar->count.h, p;
+    float lo = npx ? ar->count.px[0] : 0, hi = lo;
+    for (p = 0; p < npx; p++) {
+        float n = ar->count.px[3 * p];
+        lo = n < lo ? n : lo;
+        hi = n > hi ? n : hi;
+    }
+    fprintf(stderr, "adaptive: pilot %d spp in %.2f s (not kept), then %.0f..%.0f spp per pixel, mean %.1f, in %.2f s; "
+                    "%.2f Msamples/s kept\n", ar->pilot_spp, ar->pilot_seconds, lo, hi, ar->mean_spp, seconds,
+            seconds > 0 ? ar->mean_spp * (double)npx / seconds * 1e-6 : 0.0);
 }

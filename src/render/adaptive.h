@@ -15,11 +15,12 @@ typedef struct {
     int min_spp;           /* the fewest samples a pixel gets (>= 2, so that its variance exists) */
     double dark;           /* a pixel darker than dark x the image's mean is held to the error of that level */
     int spread;            /* 1: each pixel's relative variance is the largest of its 3x3 neighbours' */
+    float pilot_rr_below;  /* the roulette's T of the pilot, whose samples are independent (render_rr_below) */
 } adaptive_opts;
 
 #define ADAPTIVE_GROUP 4   /* counts are rounded up to a multiple of this (the stratified sampler's groups) */
 
-/* The defaults: no target, pilot 16, min 4, dark 0.1, spread on. */
+/* The defaults: no target, pilot 16, min 4, dark 0.1, spread on, the pilot's T 1 (no --rr-below). */
 void adaptive_opts_init(adaptive_opts *ao);
 
 typedef struct {
@@ -33,14 +34,12 @@ typedef struct {
 
 /* The seed of the pilot's streams, derived from the render's: unrelated to every kept stream. */
 uint64_t adaptive_pilot_seed(uint64_t seed);
-/* n(x) from a pilot's mean m and variance of the mean v (pilot samples per pixel) into n, each in
- * [min_spp, cap] and a multiple of ADAPTIVE_GROUP (or cap). With a target error, n(x) =
- * ceil(s^2 / (E^2 max(|m|, d)^2)); else the counts are proportional to the relative standard
- * deviation s / max(|m|, d), scaled so that they add up to about `budget` pixel-samples. */
-void adaptive_allocate(const image *m, const image *v, int pilot, const adaptive_opts *ao, int cap, double budget, int *n);
 /* The pilot, the allocation and the render (o->spp is the cap, o->time_limit is ignored: ao's
  * counts). 0, or nonzero (after printing why) if memory ran out; out as render()'s. */
 int adaptive_render(const scene *sc, const camera *cam, const render_opts *o, const adaptive_opts *ao,
                     render_result *out, adaptive_result *ar);
 void adaptive_result_free(adaptive_result *ar);
+/* "adaptive: pilot 16 spp in 0.05 s (not kept), then 4..1024 spp per pixel, mean 87.3, in 2.1 s; ..."
+ * on stderr, for a render that took `seconds` after the pilot. */
+void adaptive_print_summary(const adaptive_result *ar, double seconds);
 #endif

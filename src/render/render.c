@@ -47,7 +47,7 @@ static void add_sample(const job *j, const thread_state *t, double *a, int64_t i
     int k;
     pixel_sums_add(a, j->o->sampler, i, L);
     for (k = io->bmin; t->Lk && k <= io->bmax; k++) {
-        int layer = 1 + k - io->bmin;
+        int layer = render_layer_of(k, io->bmin);
         assert(layer < j->out->nlayers);
         pixel_sums_add(a + j->nsum * layer, j->o->sampler, i, t->Lk[k]);
     }
@@ -67,7 +67,7 @@ static void render_pixel(const job *j, thread_state *t, int px, int py)
         ray r;
         vec3 L;
         sampler_start(&smp, o->sampler, o->seed, (uint64_t)idx, (uint64_t)i);
-        if (!o->pixel_center) sampler_2d(&smp, SAMPLER_DIM_PIXEL, &jx, &jy);
+        if (!o->pixel_center) sampler_pixel(&smp, &jx, &jy);
         /* image rows run top to bottom here, gKit's bottom to top: its (x + o, y + o) is our (x + o, row + 1 - o) */
         r = camera_ray(j->cam, (float)px + (jx + (o->pixel_offset - 0.5f)), (float)py + (jy - (o->pixel_offset - 0.5f)));
         L = integrate(j->sc, &o->io, &r, &smp, t->Lk, &t->st);
@@ -262,7 +262,7 @@ static int tile_counts(job *j)
 static int setup(job *j, int nthreads, render_result *out)
 {
     const render_opts *o = j->o;
-    int nlayers = 1 + (o->split ? o->io.bmax - o->io.bmin + 1 : 0);
+    int nlayers = o->split ? render_layer_of(o->io.bmax, o->io.bmin) + 1 : 1;
     size_t npx = (size_t)j->cam->width * (size_t)j->cam->height;
     j->ts = alloc_thread_states(nthreads, o->split ? o->io.bmax + 1 : 0);
     if (!j->ts || alloc_layers(out, nlayers, j->cam->width, j->cam->height)) return 1;
@@ -273,10 +273,17 @@ static int setup(job *j, int nthreads, render_result *out)
     return j->sums == NULL || (o->pixel_spp && tile_counts(j));
 }
 
+float render_rr_below(float given, sampler_kind kind)
+{
+    if (given > 0.0f) return given;
+    return kind == SAMPLER_INDEPENDENT ? 1.0f : RR_BELOW_STRATIFIED;
+}
+
 int render(const scene *sc, const camera *cam, const render_opts *o, render_result *out)
 {
     job j;
     int t, nthreads = parallel_threads(o->threads);
+    assert(o->io.rr_depth < 0 || o->io.rr_below > 0.0f);   /* resolved by the caller: render_rr_below */
     memset(out, 0, sizeof *out);
     memset(&j, 0, sizeof j);
     j.sc = sc; j.cam = cam; j.o = o; j.out = out;

@@ -12,17 +12,21 @@
 #include "image/image.h"
 #include "tracer/integrator.h"
 
+/* render_opts.spp with --time alone: no count, the time decides when to stop. */
+#define RENDER_SPP_UNTIL_TIME (1 << 30)
+
 typedef struct {
-    int spp;                /* samples per pixel: indices first .. first + spp - 1 */
-    int64_t first;          /* the first sample index (--samples A:B: first A, spp B - A) */
+    int spp;                /* the samples this render draws per pixel (at most: --time or a signal may
+                               stop it sooner): indices first .. first + spp - 1 */
+    int64_t first;          /* the first sample index */
     double time_limit;      /* --time: seconds; passes stop when the next would not fit (0: none) */
     int threads, quiet, pixel_center;
     float pixel_offset;     /* pixel (x, y) is centred at (x + offset, y + offset), y counted from the
                                bottom row as in gKit/OpenGL: 0.5 (pbrt, Mitsuba, gKit's x + .5) or 0 */
     int split;              /* --split: also one image layer per L_k */
     uint64_t seed;
-    sampler_kind sampler;   /* --sampler: independent (the default) or sobol */
-    integrator_opts io;
+    sampler_kind sampler;   /* --sampler: independent, sobol or sobol1 */
+    integrator_opts io;     /* io.rr_below resolved (render_rr_below) */
     const int *pixel_spp;   /* adaptive sampling: pixel p (row-major) gets only the samples first ..
                                first + pixel_spp[p] - 1, each <= spp, chosen before the render
                                (tracer/adaptive.h); NULL: every pixel gets spp */
@@ -39,6 +43,18 @@ typedef struct {
     uint64_t nonfinite;     /* samples that were NaN or infinite (counted, and dropped) */
     double seconds;
 } render_result;
+
+/* The roulette's T (integrator_opts.rr_below) of a render: `given` if > 0 (--rr-below), else 1 with
+ * independent samples (the classic p_survive = max(beta)) and 1/3 with the Sobol samplers, whose
+ * stratified samples leave the roulette's own noise as most of the error (docs/estimators.md,
+ * "Where to stop"). */
+#define RR_BELOW_STRATIFIED (1.0f / 3.0f)
+float render_rr_below(float given, sampler_kind kind);
+
+/* The image layer of L_k in a render whose first bounce is bmin: layer 0 is the total, layer
+ * render_layer_of(k, bmin) = 1 + k - bmin is L_k (--split), and back. */
+static inline int render_layer_of(int k, int bmin) { return 1 + k - bmin; }
+static inline int render_bounce_of_layer(int layer, int bmin) { return bmin + layer - 1; }
 
 /* Renders; 0 on success (also when stopped by a signal or --time: see spp), nonzero (after
  * printing why) if memory ran out. */

@@ -134,11 +134,3 @@ double sampler_2d_32bit(sampler *s, uint32_t dim, float *u2)
     *u2 = to_float(b);
     return (double)a * (1.0 / 4294967296.0);
 }
-
-double sampler_1d_32bit(sampler *s, uint32_t dim)
-{
-    uint32_t u;
-    if (s->kind == SAMPLER_INDEPENDENT) return pcg32_double(&s->rng);
-    sobol_point(s, dim, &u, NULL);
-    return (double)u * (1.0 / 4294967296.0);
-}

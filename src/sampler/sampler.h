@@ -1,16 +1,17 @@
 /* sampler.h — the uniform numbers of one sample, addressed by (seed, pixel, sample index, dimension).
- * sampler_start picks the sample; then sampler_1d, sampler_2d and sampler_1d_32bit give its
- * coordinate at a dimension: one number (or pair) per use at each vertex, named by the SAMPLER_DIM_*
- * below, so that the same use of every path of a pixel reads the same dimension.
+ * sampler_start picks the sample; then sampler_1d, sampler_2d and sampler_2d_32bit give its
+ * coordinates at a dimension, and sampler_vertex with the named draws below (sampler_light,
+ * sampler_lobe, ...) give each use at each path vertex its own dimension, so that the same use of
+ * every path of a pixel reads the same dimension.
  *   independent  one PCG32 stream per sample (pcg32_for_sample), read in the order of the calls:
- *                the dimension argument is ignored, which keeps pathlab's images bit for bit.
+ *                the dimension argument is ignored.
  *   sobol        Owen-scrambled Sobol points (Burley 2020, "Practical Hash-based Owen Scrambling",
  *                JCGT 9(4)), padded: every dimension is its own shuffled, scrambled 1D or 2D Sobol
  *                set, with seeds hashed from (seed, pixel, group, dimension). Sample `index` belongs
  *                to group index mod SAMPLER_GROUPS, whose scrambling is independent of the other
  *                groups', and is point index div SAMPLER_GROUPS of it. Within one group the samples
  *                are NOT independent: their sample variance does not estimate the variance of the
- *                mean; the spread between the group means does (tracer/pixel_sums.h).
+ *                mean; the spread between the group means does (render/pixel_sums.h).
  *   sobol1       the same with a single group: one scrambled sequence per pixel, stratified over
  *                all of its samples (the lowest error), whose variance cannot be estimated. */
 #ifndef PATHLAB_SAMPLER_H
@@ -32,20 +33,8 @@ typedef struct {
     pcg32 rng;              /* independent: the sample's stream */
     uint64_t pixel_seed;    /* sobol: hashed from (seed, pixel, group); each dimension's seeds derive from it */
     uint32_t index_reversed;   /* sobol: the point's index in its group (sample index div SAMPLER_GROUPS), bits reversed */
+    uint32_t vertex_dim;    /* the first dimension of the current path vertex (sampler_vertex) */
 } sampler;
-
-/* The dimensions of a sample: the pixel jitter, then SAMPLER_DIMS_PER_VERTEX per path vertex k >= 1. */
-enum {
-    SAMPLER_DIM_PIXEL = 0,          /* 2D: the jitter inside the pixel */
-    SAMPLER_DIM_LIGHT_CHOICE = 0,   /* 1D, 32 bits: which emitter (offsets inside a vertex) */
-    SAMPLER_DIM_LIGHT_POINT = 1,    /* 2D: the point s on it */
-    SAMPLER_DIM_LOBE = 2,           /* 1D: which BRDF lobe */
-    SAMPLER_DIM_DIRECTION = 3,      /* 2D: the direction wi */
-    SAMPLER_DIM_ROULETTE = 4,       /* 1D: Russian roulette */
-    SAMPLER_DIMS_PER_VERTEX = 5
-};
-/* The dimension of use `what` (SAMPLER_DIM_LIGHT_CHOICE ... SAMPLER_DIM_ROULETTE) at vertex k >= 1. */
-static inline uint32_t sampler_dim(int k, int what) { return 1u + (uint32_t)(k - 1) * SAMPLER_DIMS_PER_VERTEX + (uint32_t)what; }
 
 /* Sample `index` of pixel `pixel` under seed `seed`: depends on nothing else. */
 void sampler_start(sampler *s, sampler_kind kind, uint64_t seed, uint64_t pixel, uint64_t index);
@@ -56,11 +45,33 @@ void sampler_from_stream(sampler *s, const pcg32 *r);
 float sampler_1d(sampler *s, uint32_t dim);
 /* Uniform in [0, 1)^2, both coordinates of one 2D set (independent: two numbers in turn). */
 void sampler_2d(sampler *s, uint32_t dim, float *u1, float *u2);
-/* Uniform in [0, 1) with 32 bits: for discrete choices among millions of items. */
-double sampler_1d_32bit(sampler *s, uint32_t dim);
-/* Both coordinates of a 2D set, the first with 32 bits: a discrete choice whose remainder is reused
- * as a coordinate (light_sample_point_joint), so the pair stays one stratified 2D set. */
+/* Both coordinates of a 2D set, the first with 32 bits: a discrete choice among millions of items
+ * whose remainder is reused as a coordinate (light_sample_point_joint), so the pair stays one
+ * stratified 2D set. */
 double sampler_2d_32bit(sampler *s, uint32_t dim, float *u2);
+
+/* The numbers of a path, by use. A sample's dimensions are the pixel jitter, then
+ * SAMPLER_DIMS_PER_VERTEX per path vertex k >= 1, one per use: the integrator tells the sampler
+ * which vertex it is at, then asks for each use's numbers by name. A use that needs no number at a
+ * vertex (no lobe to choose, a sure survivor of the roulette) skips its dimension, and no other
+ * use's dimension moves. An independent sampler ignores the dimensions: it reads its stream in the
+ * order of the calls. (pbrt-v4's samplers instead count the dimensions as they are drawn.) */
+enum {
+    SAMPLER_DIM_PIXEL = 0,          /* 2D: the jitter inside the pixel */
+    SAMPLER_DIM_LIGHT = 0,          /* 2D, the first coordinate 32 bits: which emitter, and the point s on it */
+    SAMPLER_DIM_LOBE = 1,           /* 1D: which BRDF lobe */
+    SAMPLER_DIM_DIRECTION = 2,      /* 2D: the direction wi */
+    SAMPLER_DIM_ROULETTE = 3,       /* 1D: Russian roulette */
+    SAMPLER_DIMS_PER_VERTEX = 4
+};
+static inline void sampler_pixel(sampler *s, float *jx, float *jy) { sampler_2d(s, SAMPLER_DIM_PIXEL, jx, jy); }
+/* From here on, the numbers are those of path vertex k >= 1. */
+static inline void sampler_vertex(sampler *s, int k) { s->vertex_dim = 1u + (uint32_t)(k - 1) * SAMPLER_DIMS_PER_VERTEX; }
+/* The light's choice (returned, 32 bits) and the point's second coordinate *u2: one 2D set. */
+static inline double sampler_light(sampler *s, float *u2) { return sampler_2d_32bit(s, s->vertex_dim + SAMPLER_DIM_LIGHT, u2); }
+static inline float sampler_lobe(sampler *s) { return sampler_1d(s, s->vertex_dim + SAMPLER_DIM_LOBE); }
+static inline void sampler_direction(sampler *s, float *u1, float *u2) { sampler_2d(s, s->vertex_dim + SAMPLER_DIM_DIRECTION, u1, u2); }
+static inline float sampler_roulette(sampler *s) { return sampler_1d(s, s->vertex_dim + SAMPLER_DIM_ROULETTE); }
 
 /* The building blocks of sobol, for the tests: the first two Sobol dimensions (van der Corput and
  * the one of the polynomial x + 1) as 32-bit fractions, and Owen's nested uniform scrambling. */

@@ -81,13 +81,11 @@ static float dir_pdf2_sa(const integrator_opts *opt, const vertex *p, vec3 wi_lo
 /* The uniform numbers of a vertex for the light and the direction, drawn together as the path
  * reaches it. A Sobol number is a long chain of dependent hashes (sampler.c): drawn before the
  * shadow ray is traced, the direction's is ready when the continuation ray needs it instead of
- * stalling the path (--sampler sobol1: 5% less time on the Cornell boxes). The independent sampler
- * reads its stream in the order it always did, so its images are unchanged. The roulette's number
+ * stalling the path (--sampler sobol1: 5% less time on the Cornell boxes). The roulette's number
  * is drawn where it is used: a path that ends before never pays for it. */
 typedef struct {
-    int joint;                  /* the light's choice and point from one 2D set (Sobol samplers) */
-    double light0;              /* which emitter */
-    float light1, light2;       /* the point s on it */
+    double light_choice;        /* which emitter; where it fell in that emitter's share is the point's u1 */
+    float light_u2;             /* the point s on it: its second coordinate */
     float lobe, dir1, dir2;     /* which BRDF lobe, the direction wi */
 } vertex_numbers;
 
@@ -98,21 +96,14 @@ static int chooses_lobe(const integrator_opts *opt, const vertex *p)
     return ps > 0.0f && ps < 1.0f;
 }
 
-/* The numbers *u of vertex k for light sampling (if light) and direction sampling (if dir). */
-static void draw_numbers(const integrator_opts *opt, const vertex *p, sampler *smp, int k, int light, int dir, vertex_numbers *u)
+/* The numbers *u of vertex p for light sampling (if light) and direction sampling (if dir). The
+ * lobe's number is drawn only when there is a choice: with one lobe, 0 picks it. */
+static void draw_numbers(const integrator_opts *opt, const vertex *p, sampler *smp, int light, int dir, vertex_numbers *u)
 {
-    u->joint = smp->kind != SAMPLER_INDEPENDENT;
-    if (light && !u->joint) {   /* three numbers, in the order of pathlab before the samplers */
-        u->light0 = sampler_1d_32bit(smp, sampler_dim(k, SAMPLER_DIM_LIGHT_CHOICE));
-        sampler_2d(smp, sampler_dim(k, SAMPLER_DIM_LIGHT_POINT), &u->light1, &u->light2);
-    } else if (light) {         /* one stratified 2D set for the choice and the point */
-        u->light0 = sampler_2d_32bit(smp, sampler_dim(k, SAMPLER_DIM_LIGHT_POINT), &u->light2);
-    }
+    if (light) u->light_choice = sampler_light(smp, &u->light_u2);
     if (dir) {
-        /* the lobe's number: independent draws it always (its stream's order); a Sobol sampler only
-         * when there is a choice to make (a dimension costs a hash there) */
-        u->lobe = !u->joint || chooses_lobe(opt, p) ? sampler_1d(smp, sampler_dim(k, SAMPLER_DIM_LOBE)) : 0.0f;
-        sampler_2d(smp, sampler_dim(k, SAMPLER_DIM_DIRECTION), &u->dir1, &u->dir2);
+        u->lobe = chooses_lobe(opt, p) ? sampler_lobe(smp) : 0.0f;
+        sampler_direction(smp, &u->dir1, &u->dir2);
     }
 }
 
@@ -148,8 +139,7 @@ static vec3 direct_from_light(const scene *sc, const integrator_opts *opt, const
     light_sample s;
     vec3 to_s, wi_world, wi_local, f;
     float dist2, dist, cos_p, cos_s, pdf1_sa, w_mis;
-    if (u->joint) light_sample_point_joint(&sc->lights, opt->light, p->pos, u->light0, u->light2, &s);
-    else light_sample_point(&sc->lights, opt->light, p->pos, u->light0, u->light1, u->light2, &s);
+    light_sample_point_joint(&sc->lights, opt->light, p->pos, u->light_choice, u->light_u2, &s);
     to_s = v3_sub(s.pos, p->pos);
     dist2 = v3_dot(to_s, to_s);
     dist = sqrtf(dist2);
@@ -220,23 +210,17 @@ static int survives_roulette(vec3 *beta, sampler *smp, int k, float below)
     vec3 before = *beta;
     float cap = k < RR_CAP_FROM ? 1.0f : RR_SURVIVE_MAX;
     float p_survive = fminf(cap, fmaxf(0.05f, v3_max_comp(before) / below));
-    /* a sure survivor needs no number: a Sobol number costs a chain of hashes (sampler.c), and skipping
-     * it shifts no other use's dimension; the independent sampler still reads it, to keep its
-     * stream's order (and its images) */
-    if (p_survive >= 1.0f && smp->kind != SAMPLER_INDEPENDENT) return 1;
-    if (sampler_1d(smp, sampler_dim(k, SAMPLER_DIM_ROULETTE)) >= p_survive) return 0;
+    assert(below > 0.0f);
+    /* a sure survivor needs no number: a Sobol number costs a chain of hashes (sampler.c), and
+     * skipping it shifts no other use's dimension */
+    if (p_survive >= 1.0f) return 1;
+    if (sampler_roulette(smp) >= p_survive) return 0;
     *beta = v3_scale(before, 1.0f / p_survive);
     /* below the cap, p_survive is >= every channel of beta / below, which thus ends <= below (at
      * the cap, 1 before bounce RR_CAP_FROM and 0.95 after, materials with Kd + Ks > 1 may make beta
      * grow without bound: their image has no limit) */
     assert(p_survive == cap || p_survive == 0.05f || v3_max_comp(*beta) <= below * 1.000001f);
     return 1;
-}
-
-float rr_below_for(const integrator_opts *o, sampler_kind kind)
-{
-    if (o->rr_below > 0.0f) return o->rr_below;
-    return kind == SAMPLER_INDEPENDENT ? 1.0f : RR_BELOW_STRATIFIED;
 }
 
 /* The radiance of one camera ray: L = the sum in path order, and with Lk each L_k on its own. */
@@ -276,7 +260,6 @@ vec3 integrate(const scene *sc, const integrator_opts *opt, const ray *camera, s
      * probability below 0.95^(BOUNCES_CAP - RR_CAP_FROM), never in practice; with --rr off and Kd >= 1
      * it is what ends the path. The paths it cuts are counted: the stats line shows them. */
     int k, has_lights = sc->lights.n > 0, kmax = opt->bmax < BOUNCES_CAP ? opt->bmax : BOUNCES_CAP;
-    float rr_below = rr_below_for(opt, smp->kind);
 
     st->camera_rays++;
     if (!bvh_intersect(sc->accel, &ray_pq, &q)) return sum.L;
@@ -291,7 +274,8 @@ vec3 integrate(const scene *sc, const integrator_opts *opt, const ray *camera, s
         int continues = k < kmax || uses_dir_sampling(opt->direct);
         vertex_numbers u;
         make_vertex(&p, sc, &q, ray_pq.d);              /* the last q is the new p */
-        draw_numbers(opt, &p, smp, k, samples_light, continues, &u);
+        sampler_vertex(smp, k);                         /* the numbers of vertex k */
+        draw_numbers(opt, &p, smp, samples_light, continues, &u);
 
         /* L_k by light sampling: a point s on a light, with pdf1(s) */
         if (samples_light) add_Lk(&sum, k, v3_mul(beta, direct_from_light(sc, opt, &p, &u, st)));
@@ -313,7 +297,7 @@ vec3 integrate(const scene *sc, const integrator_opts *opt, const ray *camera, s
             add_Lk(&sum, k, v3_mul(beta, direct_from_dir(sc, opt, &p, &q, &ray_pq, pdf2_sa)));
 
         /* "et on arrête quand ?" */
-        if (opt->rr_depth >= 0 && k >= opt->rr_depth && k < kmax && !survives_roulette(&beta, smp, k, rr_below)) break;
+        if (opt->rr_depth >= 0 && k >= opt->rr_depth && k < kmax && !survives_roulette(&beta, smp, k, opt->rr_below)) break;
     }
     if (k >= kmax && kmax < opt->bmax) st->paths_cut++;   /* it reached the cap: its next bounces are lost */
     return sum.L;

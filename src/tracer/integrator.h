@@ -17,19 +17,20 @@ typedef enum { DIRECT_LIGHT, DIRECT_BRDF, DIRECT_MIS_BALANCE, DIRECT_MIS_POWER }
 extern const char *const DIR_STRATEGY_NAMES[];
 extern const char *const DIRECT_STRATEGY_NAMES[];
 
-#define BOUNCES_INF 1000000   /* --bounces A:inf */
 /* The hard bounce cap of every path, whatever --bounces says: Kd >= 1 (or Kd + Ks > 1) and
- * --rr off would otherwise never end a path. 1000 is also the largest finite --bounces. */
+ * --rr off would otherwise never end a path. It is also the largest finite last bounce. */
 #define BOUNCES_CAP 1000
+/* bmax of a path with no last bounce (--bounces A:inf): only the roulette or BOUNCES_CAP ends it. */
+#define BOUNCES_NO_END 1000000
 
 typedef struct {
     light_strategy light;
     dir_strategy dir;
     direct_strategy direct;
-    int bmin, bmax;           /* L_bmin + ... + L_bmax, 0 <= bmin <= bmax */
+    int bmin, bmax;           /* L_bmin + ... + L_bmax, 0 <= bmin <= bmax <= BOUNCES_CAP, or bmax = BOUNCES_NO_END */
     int rr_depth;             /* Russian roulette after this many bounces; -1: off */
-    float rr_below;           /* the roulette thins paths whose throughput max(beta) is below this
-                               * (--rr-below); 0: the sampler's default, see rr_below_for() */
+    float rr_below;           /* T > 0: the roulette thins paths whose throughput max(beta) is below T
+                               * (--rr-below, or the sampler's default: render_rr_below) */
 } integrator_opts;
 
 typedef struct {
@@ -38,14 +39,8 @@ typedef struct {
 } trace_stats;
 
 /* Returns the radiance L_bmin + ... + L_bmax along the camera ray, summed in path order, drawing its
- * numbers from smp at the dimensions of sampler.h (SAMPLER_DIM_*, vertex by vertex). If Lk is
- * not NULL it has o->bmax + 1 entries and receives Lk[k] = L_k for k = 0..bmax (0 outside bmin..bmax).
- * Counts the rays it traces in *st. */
-/* The roulette's T of o under sampler `kind`: o->rr_below if given, else 1 with independent samples
- * (the classic p_survive = max(beta)) and 1/3 with the Sobol samplers, whose stratified samples leave
- * the roulette's own noise as most of the error (docs/estimators.md, "Where to stop"). */
-#define RR_BELOW_STRATIFIED (1.0f / 3.0f)
-float rr_below_for(const integrator_opts *o, sampler_kind kind);
-
+ * numbers from smp vertex by vertex, each use by name (sampler.h: sampler_vertex, sampler_light...).
+ * If Lk is not NULL it has o->bmax + 1 entries and receives Lk[k] = L_k for k = 0..bmax (0 outside
+ * bmin..bmax). Counts the rays it traces in *st. */
 vec3 integrate(const scene *sc, const integrator_opts *o, const ray *camera, sampler *smp, vec3 *Lk, trace_stats *st);
 #endif

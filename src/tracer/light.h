@@ -43,13 +43,13 @@ typedef struct {
 int light_build(light_set *ls, const mesh *m, const vec3 *Ng, const float *area);
 void light_free(light_set *ls);
 /* Samples s seen from the shading point p: u0 (32 random bits, see pcg32_double) chooses the
- * emitter, u1, u2 the point on it. */
+ * emitter, u1, u2 the point on it (the form the checks of check/ sample and test). */
 void light_sample_point(const light_set *ls, light_strategy strategy, vec3 p, double u0, float u1, float u2, light_sample *out);
 /* The same from two numbers: u0 chooses the emitter and where it fell in the emitter's share of
  * [0, 1) is the point's first coordinate, u2 its second. Conditional on the choice that remainder
  * is uniform and independent of u2, so it samples the same density; but a stratified (u0, u2) set
  * stays stratified over all the emitters together, where an emitter chosen by a number of its own
- * would receive a random subset of the points. Used with the Sobol samplers. */
+ * would receive a random subset of the points. What the integrator uses, whatever the sampler. */
 void light_sample_point_joint(const light_set *ls, light_strategy strategy, vec3 p, double u0, float u2, light_sample *out);
 /* pdf1(s) per unit area of the point s on emitter i, chosen from p under that strategy. */
 float light_pdf_area(const light_set *ls, light_strategy strategy, int i, vec3 p, vec3 s);

@@ -41,6 +41,7 @@ static void options(render_opts *o, uint8_t pick)
     o->io.bmin = 0;
     o->io.bmax = 8;
     o->io.rr_depth = 3;
+    o->io.rr_below = render_rr_below(0.0f, o->sampler);
 }
 
 static void render_tiny(const scene *sc, view *vw, uint8_t pick)

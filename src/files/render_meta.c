@@ -1,0 +1,41 @@
+/* render_meta.c — a render's options written as its sidecar's keys. */
+#include "files/render_meta.h"
+#include <inttypes.h>
+#include <stdio.h>
+#include <string.h>
+
+void render_meta_describe(sidecar *m, const render_opts *o, const char *scene_path, uint64_t scene_id, const view *v,
+                          const char *revision)
+{
+    const integrator_opts *io = &o->io;
+    char bmax[16], rr[48];
+    memset(m, 0, sizeof *m);
+    strcpy(m->kind, "mean");
+    strcpy(m->layer, "total");
+    m->seed = o->seed;
+    snprintf(m->scene, sizeof m->scene, "%s", scene_path);
+    snprintf(m->scene_id, sizeof m->scene_id, "fnv1a64:%016" PRIx64, scene_id);
+    snprintf(bmax, sizeof bmax, io->bmax == BOUNCES_NO_END ? "inf" : "%d", io->bmax);
+    /* --rr-below only when it is not 1 (the classic rule): sidecars written before it stay comparable */
+    if (io->rr_depth < 0) snprintf(rr, sizeof rr, "off");
+    else snprintf(rr, sizeof rr, io->rr_below == 1.0f ? "%d" : "%d --rr-below %.6g", io->rr_depth, (double)io->rr_below);
+    /* --sampler only when not independent (whatever the default): the sidecars written before it
+     * existed stay comparable, and a sidecar without it is independent */
+    snprintf(m->flags, sizeof m->flags, "--bounces %d:%s --light %s --dir %s --direct %s --rr %s --pixel-offset %.9g%s%s%s",
+             io->bmin, bmax, LIGHT_STRATEGY_NAMES[io->light], DIR_STRATEGY_NAMES[io->dir], DIRECT_STRATEGY_NAMES[io->direct],
+             rr, o->pixel_offset, o->pixel_center ? " --pixel-center" : "", o->sampler != SAMPLER_INDEPENDENT ? " --sampler " : "",
+             o->sampler != SAMPLER_INDEPENDENT ? SAMPLER_NAMES[o->sampler] : "");
+    snprintf(m->camera, sizeof m->camera, "eye %.9g,%.9g,%.9g target %.9g,%.9g,%.9g up %.9g,%.9g,%.9g fov %.9g size %dx%d",
+             v->eye.x, v->eye.y, v->eye.z, v->target.x, v->target.y, v->target.z, v->up.x, v->up.y, v->up.z, v->fov,
+             v->width, v->height);
+    snprintf(m->revision, sizeof m->revision, "%s", revision);
+    if (o->sampler != SAMPLER_INDEPENDENT) snprintf(m->sampler, sizeof m->sampler, "%s", SAMPLER_NAMES[o->sampler]);
+}
+
+void render_meta_describe_adaptive(sidecar *m, const adaptive_opts *ao, int target_given, double time_limit)
+{
+    char target[48] = "", time[48] = "";
+    if (target_given) snprintf(target, sizeof target, " --target-error %.9g", ao->target_error);
+    if (time_limit > 0) snprintf(time, sizeof time, " --time %.9g", time_limit);   /* it shapes n(x) */
+    snprintf(m->adaptive, sizeof m->adaptive, "--adaptive%s%s --pilot %d --min-spp %d", target, time, ao->pilot, ao->min_spp);
+}

@@ -1,0 +1,16 @@
+/* resume.h — render --resume: the render already at -o read back and checked to be this same
+ * render, then combined with the new samples (means and variances exactly). */
+#ifndef PATHLAB_RESUME_H
+#define PATHLAB_RESUME_H
+#include "files/render_files.h"
+#include "render/render.h"
+
+/* Reads the render at `out` into *prev (its sidecar in *had), checking that it exists, that it and
+ * this render (of sampler `sampler`) have independent samples, that it is the render `now`
+ * describes (sidecar_check_same), that it has a variance if with_variance, and that it has layers
+ * if and only if split. 0, or 1 after printing why. */
+int resume_read(render_files *prev, sidecar *had, const char *out, const sidecar *now, sampler_kind sampler,
+                int with_variance, int split);
+/* r := prev (n samples) combined with r, layer by layer; 0, or 1 if out of memory (said so). */
+int resume_combine(const render_files *prev, int64_t n, render_result *r);
+#endif

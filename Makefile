@@ -124,8 +124,13 @@ $(BUILD)/fuzz/replay_%: tests/fuzz/fuzz_%.c tests/fuzz/replay.c $(FUZZ_DEPS)
 FUZZ_REPLAY = $(FUZZ_TARGETS:%=$(BUILD)/fuzz/replay_%)
 TOOLS = $(FUZZ_REPLAY) $(BUILD)/tests/zcheck $(BUILD)/tests/pfmtool $(BUILD)/bench-plot
 
-test: $(PROG) $(TEST_BIN) $(TOOLS) test-deps
-	BUILD=$(BUILD) PATHLAB=./$(PROG) PATHLAB_FAST=$(if $(SAN),1) tests/run.sh
+# make test builds with one compiler per core (JOBS, default: the number of cores) even when make
+# was not given -j (the README's `make test`: a serial build of a fresh clone took as long as a
+# third of the tests); with -jN, the N of the command line.
+JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+test: test-deps
+	$(MAKE) $(if $(filter -j%,$(MAKEFLAGS)),,-j$(JOBS)) $(PROG) $(TEST_BIN) $(TOOLS)
+	BUILD=$(BUILD) PATHLAB=./$(PROG) PATHLAB_FAST=$(if $(SAN),1) TEST_SOURCE_ONLY=$(if $(SAN),skip,run) tests/run.sh
 
 # The numerical stress suite (tests/stress/run.sh): scaled and moved scenes, slivers, z-fighting,
 # sharp lobes, tiny and grazing lights, rays along edges, acne; about 2 minutes on 2 cores.

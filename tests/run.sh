@@ -10,6 +10,11 @@
 # far)" every 30 s (its PASS/FAIL lines counted as they come), so a long file on a loaded machine
 # is never minutes of silence, and its lines stay together at its end. "SKIP" lines (a check that
 # cannot run here, e.g. without OpenImageIO) are counted apart; the last line stays "N passed, N failed".
+# TEST_SOURCE_ONLY=skip (make test SAN=...): the files that read the sources or compile their own
+# build and never run the one under test (test_layout, test_exports, test_bvh_native) are left out,
+# with a line saying so: a sanitizer build cannot change what they find, the default build's
+# make test runs them. TEST_EXCLUDE="test_a.sh test_b.sh": those files are left out too (with a line
+# naming them; .ci/run uses it for gcc's sanitizer run, see there).
 set -u
 cd "$(dirname "$0")/.."
 BUILD=${BUILD:-build}
@@ -32,6 +37,19 @@ for t in "$BUILD"/tests/test_* tests/test_*.sh; do
     case " $slow " in *" $(basename "$t") "*) continue ;; esac
     list+=("$t")
 done
+source_only="test_layout.sh test_exports.sh test_bvh_native.sh"
+if [ "${TEST_SOURCE_ONLY:-run}" = skip ]; then
+    kept=()
+    for t in "${list[@]}"; do case " $source_only " in *" $(basename "$t") "*) ;; *) kept+=("$t") ;; esac; done
+    list=("${kept[@]}")
+    echo "not run on this build (they read the sources or build their own, as in the default build's make test): $source_only"
+fi
+if [ -n "${TEST_EXCLUDE:-}" ]; then
+    kept=()
+    for t in "${list[@]}"; do case " $TEST_EXCLUDE " in *" $(basename "$t") "*) ;; *) kept+=("$t") ;; esac; done
+    list=("${kept[@]}")
+    echo "left out (TEST_EXCLUDE): $TEST_EXCLUDE"
+fi
 
 run_one() {   # FILE: runs it, leaves its output, exit status and milliseconds in $log
     local t=$1 name start rc

@@ -13,7 +13,10 @@
 # rebuilds only what changed), so `make mutants` right after `make` or `make test` builds little.
 #
 # Usage: tests/mutants/run.sh [NAME...]     (only the named mutants)
-# Environment: MUTANTS_KEEP=DIR keeps the copies and logs in DIR; MUTANTS_TIMEOUT (s, default 300).
+# Environment: MUTANTS_KEEP=DIR keeps the copies and logs in DIR; MUTANTS_TIMEOUT (s, default 300);
+# MUTANTS_CONTROLS_DONE=1 (.ci/run, right after a passing make test of the same tree) skips the
+# controls of the tests that run with no environment: make test has just run them, the same files on
+# the same code (the controls of PATHLAB_FAST=1 or PATHLAB_TEST_QUICK=1 runs still run).
 set -u
 . "$(dirname "$0")/lib.sh"
 TIMEOUT=${MUTANTS_TIMEOUT:-300}
@@ -73,6 +76,9 @@ echo "built in $(secs "$t0" "$(now)") s"
 echo "controls: each test on the unbroken copy must pass"
 for key in "${tests[@]}"; do
     t=${key% *}; env=${key#* }
+    if [ "${MUTANTS_CONTROLS_DONE:-0}" = 1 ] && [ "$env" = - ]; then
+        echo "  done  $t: make test ran it on this tree just before and it passed (MUTANTS_CONTROLS_DONE=1)"; continue
+    fi
     t0=$(now)
     f=$(run_test "$W/base" "$t" "$env" "$W/control_$t.log")
     if [ "$f" = 0 ]; then echo "  pass  $t ($env) $(secs "$t0" "$(now)") s"

@@ -34,6 +34,8 @@ only=${1:-}
 # to start among the last and end minutes after the others.
 slow="test_refs.sh test_rr.sh test_sobol.sh test_grade_mistakes.sh test_estimators.sh test_known.sh test_grade.sh
       test_direct test_bvh test_parallel_recipe.sh test_layout.sh"
+# EST_ALL=1 (.ci/run): test_estimators runs all 48 combinations (minutes more), the longest file
+[ "${EST_ALL:-0}" = 1 ] && slow="test_estimators.sh $(echo " $slow " | sed 's/ test_estimators\.sh / /')"
 list=()
 for s in $slow; do
     case $s in *.sh) t=tests/$s ;; *) t=$BUILD/tests/$s ;; esac

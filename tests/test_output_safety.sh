@@ -44,4 +44,14 @@ expect_status "a read-only output (444) is refused, exit 2" 2 $P render "$S" --s
 expect_err "the refusal says it is read-only" "ro.pfm: is read-only"
 if [ "$(cksum < ro.pfm)" = "$sum" ] && [ "$(stat -c %a ro.pfm)" = 444 ]; then pass "the read-only file is left as it was"
 else fail "the read-only file changed: mode $(stat -c %a ro.pfm)"; fi
+$P render "$S" --size 8x8 --spp 1 --bounces 0:2 --split -o pv.pfm --quiet && chmod 600 pv.pfm pv_L1.pfm
+$P render "$S" --size 8x8 --spp 2 --bounces 0:2 --split -o pv.pfm --quiet
+if [ "$(stat -c %a pv.pfm)" = 600 ] && [ "$(stat -c %a pv_L1.pfm)" = 600 ] && [ "$(stat -c %a pv_L0.pfm)" != 600 ]; then
+    pass "a rewritten render keeps each file's mode (600 stays 600, the others as they were)"
+else fail "a rewritten render's modes: pv.pfm $(stat -c %a pv.pfm), pv_L1.pfm $(stat -c %a pv_L1.pfm), pv_L0.pfm $(stat -c %a pv_L0.pfm)"; fi
+chmod 444 pv_L1.pfm; before=$(cat pv.pfm pv_L0.pfm pv_L1.pfm pv_L2.pfm | cksum)
+expect_status "a read-only layer of a --split set: exit 2" 2 $P render "$S" --size 8x8 --spp 3 --bounces 0:2 --split -o pv.pfm --quiet
+expect_err "the refusal names the read-only layer" "pv_L1.pfm: is read-only"
+if [ "$(cat pv.pfm pv_L0.pfm pv_L1.pfm pv_L2.pfm | cksum)" = "$before" ]; then pass "none of the set's files was replaced"
+else fail "files of the set were replaced despite the read-only layer"; fi
 exit 0

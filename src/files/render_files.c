@@ -109,13 +109,26 @@ static int renamable(const file_set *fs)
 {
     struct stat st;
     int i;
-    for (i = 0; i < fs->n; i++)
+    for (i = 0; i < fs->n; i++) {
         if (stat(fs->final[i], &st) == 0 && S_ISDIR(st.st_mode)) {
             fprintf(stderr, "%s: cannot write: a folder has that name (none of the %d files of this render was written)\n",
                     fs->final[i], fs->n);
             return 1;
         }
+        if (lstat(fs->final[i], &st) == 0 && S_ISREG(st.st_mode) && !(st.st_mode & S_IWUSR)) {
+            fprintf(stderr, "%s: is read-only: not replaced (none of the %d files of this render was written)\n",
+                    fs->final[i], fs->n);
+            return 1;
+        }
+    }
     return 0;
+}
+
+/* A rewritten file keeps the mode of the one it replaces (a private image stays private). */
+static void keep_mode(const char *pending, const char *final)
+{
+    struct stat st;
+    if (lstat(final, &st) == 0 && S_ISREG(st.st_mode)) (void)chmod(pending, st.st_mode & 07777);
 }
 
 /* Renames every staged file over its final name (commit), or removes them all; frees the set. */
@@ -124,6 +137,7 @@ static int finish(file_set *fs, int commit)
     int i, err = commit && renamable(fs);
     interrupt_hold();
     for (i = 0; i < fs->n; i++) {
+        if (commit && !err) keep_mode(fs->pending[i], fs->final[i]);
         if (commit && !err && rename(fs->pending[i], fs->final[i]) != 0) {
             fprintf(stderr, "%s: cannot write: %s\n", fs->final[i], strerror(errno));
             err = 1;

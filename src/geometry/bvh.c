@@ -563,7 +563,7 @@ static int cpu_runs(const bvh_traversal *t)
     return 1;
 }
 
-const bvh_traversal *bvh_isa_traversal(void)
+static const bvh_traversal *bvh_isa_traversal(void)
 {
     const bvh_traversal *const *t = traversals();
     if (forced) return forced;

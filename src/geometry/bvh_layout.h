@@ -76,6 +76,4 @@ struct bvh {
     const bvh_traversal *trav;   /* the copy of the traversal chosen at build time (bvh_isa) */
 };
 
-/* The copy the next tree built will use (bvh.c). */
-const bvh_traversal *bvh_isa_traversal(void);
 #endif

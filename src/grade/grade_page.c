@@ -62,7 +62,10 @@ static void finest_marks(grade_marks *out, const grade_report *r, const grade_bl
         }
 }
 
-void grade_make_marks(grade_marks *out, const grade_report *r)
+/* The regions that failed: the finest significant blocks, adjacent ones of one sign merged (runs
+ * along a row, then runs of equal extent in consecutive rows), each labelled with its largest t;
+ * the coarser scales' significant blocks that overlap none of those; the missed exact pixels. */
+static void grade_make_marks(grade_marks *out, const grade_report *r)
 {
     static const grade_block *worst[GRADE_MAX_MARKS];
     int s, k, j, side, free_of_marks;

@@ -18,10 +18,6 @@ typedef struct {
     int n;
 } grade_marks;
 
-/* The regions that failed: the finest significant blocks, adjacent ones of one sign merged (runs
- * along a row, then runs of equal extent in consecutive rows), each labelled with its largest t;
- * the coarser scales' significant blocks that overlap none of those; the missed exact pixels. */
-void grade_make_marks(grade_marks *out, const grade_report *r);
 
 typedef struct {
     const char *path;                     /* the page to write */

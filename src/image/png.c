@@ -24,7 +24,8 @@
 #define STORED_MAX 65535u                          /* the most a stored block can hold */
 #define ADLER_MOD 65521u                            /* the largest prime below 2^16 */
 
-uint32_t png_crc32(uint32_t crc, const unsigned char *b, size_t n)
+/* CRC-32 of ISO 3309 / PNG (polynomial 0xEDB88320, reflected), continued from crc: start at 0. */
+static uint32_t png_crc32(uint32_t crc, const unsigned char *b, size_t n)
 {
     size_t i;
     int k;
@@ -36,7 +37,8 @@ uint32_t png_crc32(uint32_t crc, const unsigned char *b, size_t n)
     return ~crc;
 }
 
-uint32_t png_adler32(uint32_t adler, const unsigned char *b, size_t n)
+/* Adler-32 of RFC 1950, continued from adler: start at 1. */
+static uint32_t png_adler32(uint32_t adler, const unsigned char *b, size_t n)
 {
     uint32_t s1 = adler & 0xffff, s2 = adler >> 16;
     size_t i;

@@ -18,7 +18,7 @@ void adaptive_opts_init(adaptive_opts *ao)
 
 /* A constant of its own ("pilot" in ASCII) hashed with the seed: the pilot's streams are keyed by
  * another seed than any kept stream of this render (pcg32_for_sample hashes (seed, p, i)). */
-uint64_t adaptive_pilot_seed(uint64_t seed) { return splitmix64_mix(seed ^ 0x70696c6f74ULL) + SPLITMIX64_GAMMA; }
+static uint64_t adaptive_pilot_seed(uint64_t seed) { return splitmix64_mix(seed ^ 0x70696c6f74ULL) + SPLITMIX64_GAMMA; }
 
 /* The level d below which a pixel's error is held to d instead of its own mean: dark x the
  * image's mean (of the channels' absolute values), so that black corners do not take every sample. */

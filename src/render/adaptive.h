@@ -32,8 +32,6 @@ typedef struct {
     uint64_t pilot_seed;
 } adaptive_result;
 
-/* The seed of the pilot's streams, derived from the render's: unrelated to every kept stream. */
-uint64_t adaptive_pilot_seed(uint64_t seed);
 /* The pilot, the allocation and the render (o->spp is the cap, o->time_limit is ignored: ao's
  * counts). 0, or nonzero (after printing why) if memory ran out; out as render()'s. */
 int adaptive_render(const scene *sc, const camera *cam, const render_opts *o, const adaptive_opts *ao,

@@ -19,7 +19,8 @@ void pixel_sums_add(double *a, sampler_kind kind, int64_t index, vec3 c)
 /* Indices i in [0, x) with i mod K = g. */
 static int64_t count_below(int64_t x, int g, int K) { return (x + K - 1 - g) / K; }
 
-int64_t pixel_sums_group_count(int64_t first, int64_t n, int g, int K) { return count_below(first + n, g, K) - count_below(first, g, K); }
+/* The samples of group g (of K) among the indices first .. first + n - 1. */
+static int64_t pixel_sums_group_count(int64_t first, int64_t n, int g, int K) { return count_below(first + n, g, K) - count_below(first, g, K); }
 
 int pixel_sums_dof(sampler_kind kind, int n)
 {

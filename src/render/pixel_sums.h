@@ -22,6 +22,4 @@ void pixel_sums_store(const double *a, sampler_kind kind, int64_t first, int n, 
 /* The degrees of freedom of that variance: 0 for "many" (independent), -1 for none (sobol1: one
  * scrambling), else groups with samples - 1. */
 int pixel_sums_dof(sampler_kind kind, int n);
-/* The samples of group g (of K) among the indices first .. first + n - 1. */
-int64_t pixel_sums_group_count(int64_t first, int64_t n, int g, int K);
 #endif

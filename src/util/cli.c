@@ -142,7 +142,8 @@ int cli_parse_value(const char *cmd, const cli_flag *f, const char *v, void *ctx
 
 /* ---- did you mean: the closest name by edit distance ---- */
 
-int cli_distance(const char *a, const char *b)
+/* The edit distance of a and b (insert, delete, substitute, swap two neighbours). */
+static int cli_distance(const char *a, const char *b)
 {
     /* optimal string alignment: insertions, deletions, substitutions and swaps of two neighbours
      * ("rendr", "--sp", "--sapmler"); three rows suffice, the words are cut at 63 characters */
@@ -204,7 +205,8 @@ static int unknown_flag(const char *cmd, const cli_flag *const *tables, const ch
     return 1;
 }
 
-size_t cli_flag_length(const char *arg)
+/* The length of the flag's name in arg: up to the '=' of --flag=value, else all of it. */
+static size_t cli_flag_length(const char *arg)
 {
     const char *eq = strchr(arg, '=');
     return arg[0] == '-' && arg[1] == '-' && eq ? (size_t)(eq - arg) : strlen(arg);

@@ -38,12 +38,8 @@ int cli_parse(const char *cmd, int argc, char **argv, const cli_flag *const *tab
 int cli_parse_flag(const char *cmd, int argc, char **argv, int *i, const cli_flag *const *tables, void *ctx);
 /* The value of flag f, stored as f says (CLI_CUSTOM gets ctx); 0, or 1 after printing why. */
 int cli_parse_value(const char *cmd, const cli_flag *f, const char *value, void *ctx);
-/* The length of the flag's name in arg: up to the '=' of --flag=value, else all of it. */
-size_t cli_flag_length(const char *arg);
 /* 1 if arg is the flag `name`, alone or as name=value. */
 int cli_flag_is(const char *arg, const char *name);
-/* The edit distance of a and b (insert, delete, substitute, swap two neighbours). */
-int cli_distance(const char *a, const char *b);
 /* For "did you mean": if name is close enough to what the user typed (word, leading dashes aside) and
  * closer than *best (NULL at first), sets *best = name and *best_d to its distance. */
 void cli_consider(const char *word, const char *name, const char **best, int *best_d);

@@ -14,7 +14,8 @@ static const char *palette[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E6
                                 "#8C564B", "#999999"};
 #define NPAL (int)(sizeof palette / sizeof *palette)
 
-const char *svg_colour(int k) { return palette[k % NPAL]; }
+/* The k-th curve's colour. */
+static const char *svg_colour(int k) { return palette[k % NPAL]; }
 
 void svg_text(FILE *o, const char *s)
 {
@@ -28,7 +29,8 @@ void svg_text(FILE *o, const char *s)
         }
 }
 
-void svg_marker(FILE *o, int k, double x, double y, const char *colour)
+/* Marker k (circle, square, triangle, diamond, again) at (x, y). */
+static void svg_marker(FILE *o, int k, double x, double y, const char *colour)
 {
     switch (k % 4) {
     case 0: fprintf(o, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"2.8\" fill=\"%s\"/>", x, y, colour); break;

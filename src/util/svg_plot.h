@@ -27,12 +27,8 @@ typedef struct {
     int id;                  /* unique in the figure: names its clip path */
 } svg_panel;
 
-/* The k-th curve's colour. */
-const char *svg_colour(int k);
 /* s with < > & " escaped. */
 void svg_text(FILE *o, const char *s);
-/* Marker k (circle, square, triangle, diamond, again) at (x, y). */
-void svg_marker(FILE *o, int k, double x, double y, const char *colour);
 /* One panel of SVG_PANEL_W x SVG_PANEL_H: axes over the curves' range (decades), then the curves. */
 void svg_loglog_panel(FILE *o, const svg_panel *p, const svg_curve *c, int n);
 /* The legend at (x, y): per_row entries a row over width, one per curve with points, then the guide's

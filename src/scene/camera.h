@@ -6,6 +6,7 @@
 #define PATHLAB_CAMERA_H
 #include <stdio.h>
 #include "geometry/ray.h"
+#include "sys/output_path.h"
 
 #define VIEW_SIZE_MAX 65536    /* pixels on a side */
 #define VIEW_PIXELS_MAX 1e9     /* pixels in all */
@@ -17,7 +18,7 @@ typedef struct {
     int has_eye, has_target;   /* set by a view file or a flag */
     /* where each key came from, for camera_init's errors: the view file's line, 0 for a default or
      * a flag (whoever overrides a key from a file sets its line to 0) */
-    char file[1024];
+    char file[PATH_CAP];       /* the view file read, for messages */
     int line_eye, line_target, line_up, line_fov, line_size;
 } view;
 

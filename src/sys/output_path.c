@@ -84,7 +84,7 @@ int output_path_check(const char *cmd, const char *flag, const char *path, const
 int output_dir_check(const char *cmd, const char *flag, const char *dir)
 {
     struct stat st;
-    char name[4096], parent[4096];
+    char name[PATH_CAP], parent[PATH_CAP];
     size_t n = strlen(dir);
     if (!n) return say(cmd, flag, "''", "an empty folder name");
     if (stat(dir, &st) == 0) {

@@ -205,7 +205,7 @@ bench-portable:
 	$(MAKE) NATIVE=1 build-native/pathlab
 	bench/portable.sh ./pathlab build-native/pathlab $(BENCH_MESHES)
 
-# Efficiency against Blender Cycles 3.4 (bench/cycles.sh, issue 12): MSE x time at equal time on the
+# Efficiency against Blender Cycles 3.4 (bench/cycles.sh): MSE x time at equal time on the
 # diffuse Cornell boxes (scenes/cornell and ../shared's CornellBox-Original), 200x200, 2 threads, 64
 # and 256 spp; writes the table into docs/performance.md. Optional: installs Debian's blender and
 # python3-openimageio if missing (not needed by anything else). Runs the NATIVE=1 build like `make

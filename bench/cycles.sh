@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# bench/cycles.sh [--doc] — pathlab's efficiency against Blender Cycles 3.4 at equal time (issue 12).
+# bench/cycles.sh [--doc] — pathlab's efficiency against Blender Cycles 3.4 at equal time.
 #
 # On diffuse scenes (SCENES: scenes/cornell and McGuire's CornellBox-Original), SIZE pixels, THREADS
 # threads, for each LEVEL of spp (64 256), in one run and back to back so that the shared machine's
@@ -16,7 +16,7 @@
 #     every MSE. Against its own renderer's reference an MSE is that renderer's variance alone; against
 #     the other's it also holds the systematic difference of the two renderers (bias^2).
 #  4. efficiency = MSE x time; the ratio pathlab / Cycles (below 1: pathlab reaches the error sooner;
-#     issue 12's bar is 0.5), with both images measured against the same reference: the Cycles one
+#     pathlab's target is at most 0.5), with both images measured against the same reference: the Cycles one
 #     (charges pathlab with any difference from Cycles) and the pathlab one (the reverse).
 # The scenes' exact duplicate faces (same corner positions; CornellBox-Original has two) are removed
 # for both renderers (into a temporary copy): Cycles skips self-hits by primitive id and renders
@@ -186,7 +186,7 @@ CPU=$(lscpu 2>/dev/null | sed -n 's/^Model name:[[:space:]]*//p' | head -n 1)
     echo "Each Cycles render (T = its CYCLES_DONE time) is followed at once by every pathlab column with \`--time T\`."
     echo "MSE: over pixels and RGB, the reference's own noise taken off (references: $REF_SPP spp each, two halves,"
     echo "pathlab's rendered by \`$REF_PATHLAB $REF_PATHLAB_FLAGS\` at $(rev "$REF_PATHLAB")). Efficiency ratio = (MSE x time of pathlab) / (MSE x time of Cycles),"
-    echo "both against the Cycles reference (C) or both against the pathlab reference (P); below 1 pathlab is ahead, issue 12 asks <= 0.5."
+    echo "both against the Cycles reference (C) or both against the pathlab reference (P); below 1 pathlab is ahead; pathlab's target is at most 0.5 (the same error in at most half Cycles' time)."
     echo
     echo "Columns:"
     for i in "${!COL_BIN[@]}"; do echo "$((i + 1)). \`${COL_BIN[$i]} ${COL_FLAGS[$i]}\` (revision $(rev "${COL_BIN[$i]}"))"; done

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Adaptive sampling (docs/adaptive.md, issue 12 item 2):
+# Adaptive sampling (docs/adaptive.md): pixels get samples where the error is, without bias:
 #  1. bad flag values and combinations are refused with a clear message, and write nothing;
 #  2. exactness: with a small cap (--spp 64) every pixel of an adaptive render is byte for byte
 #     (mean and variance) the same pixel of a uniform --spp n(x) render, for every count n(x) the
@@ -14,7 +14,7 @@
 #     correction, 99.5% must pass; 8x8 blocks and the whole image at alpha 0.005 each); negative
 #     check: the same render times 1.02 is told apart;
 #  5. merge and --resume refuse adaptive renders, saying why.
-# The pilot kept in the image (the mutant adaptive-pilot-kept of tests/mutants/list.sh) must fail 4.
+# The pilot kept in the image (the mutant tests/mutants/adaptive-pilot-kept.patch) must fail 4.
 . "$(dirname "$0")/lib.sh"
 ZCHECK=$BUILD/tests/zcheck
 R="$PATHLAB render scenes/cornell.obj --quiet --threads 2"
@@ -89,7 +89,7 @@ EOF
 # the mean of |m| over the pixels and channels, its 3x3 max, n = ceil(rel / E^2) up to a multiple
 # of 4 in [4, 64]. Among the pixels with 4 < n < 64 (neither the minimum nor the cap), the pilot's
 # allocation must agree on 99% (measured: all), the kept samples' on at most half (measured 0.11;
-# the mutant adaptive-pilot-kept of tests/mutants/list.sh: all).
+# the mutant tests/mutants/adaptive-pilot-kept.patch: all).
 ps=$(sed -n 's/^pilot-seed //p' "$TMP/x.pfm.meta")
 $R $A --spp 16 --seed "$ps" -o "$TMP/p.pfm" --variance "$TMP/p_var.pfm" && $R $A --spp 16 -o "$TMP/k.pfm" --variance "$TMP/k_var.pfm" ||
     fail "the --spp 16 renders failed"

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The BVH as `make bench` builds it: tests/test_bvh compiled with -march=native (asserts on). On a CPU
 # with AVX-512 that build tests nodes and triangle blocks with intrinsics (node_hits_v, block_hits_v
-# in src/geometry/bvh_traverse.c), a code path the portable build of `make test` never compiles; the same
+# in src/geometry/bvh_traverse.c) in the whole traversal, as NATIVE=1 builds it (the `make` build has
+# them only in its AVX-512 copy, which test_bvh's isa checks compare with the SSE2 copy); the same
 # hits are expected of it. Without -march=native support the file says SKIP.
 . "$(dirname "$0")/lib.sh"
 CC=${CC:-cc}

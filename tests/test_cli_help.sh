@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The command line a student expects (issue 13, part 5): every command's --help and -h (status 0,
+# The command line a student expects: every command's --help and -h (status 0,
 # its own usage on stdout, nothing on stderr), `pathlab help COMMAND`, --version; a typo gets a
 # short error with "did you mean" and status 2, never the whole help; --flag=value everywhere
 # --flag value is; camera flags checked (naming the flag) before the scene is loaded.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Outputs checked before any work (issue 13, part 4): a missing folder, a folder given as a file, an
+# Outputs checked before any work: a missing folder, a folder given as a file, an
 # unknown extension, for every file a command writes, is refused with status 2 and a message naming
 # the flag and the path, before the scene is read or a pixel rendered (the scene here is missing or
 # the render is big: a check done after the work would show in the message or the time); and a

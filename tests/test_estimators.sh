@@ -14,7 +14,7 @@
 #  - per 8x8 block and over the whole image: the same Z-test on means, where averaging shrinks the
 #    noise but not a bias. These run at alpha = 1 - 0.99^(1/n), n the number of comparisons of this
 #    file (about 6e-5), so that the whole file has a 1% false-alarm rate; the per-pixel test keeps
-#    the alpha = 0.01, its bar absorbs the few heavy-tailed pixels.
+#    alpha = 0.01 (as the other per-pixel tests), its bar absorbs the few heavy-tailed pixels.
 #
 # Pixels are sampled at their centre (--pixel-center), here and in the references: every estimator
 # then starts from the same camera hit in each pixel and what is compared is light transport alone.

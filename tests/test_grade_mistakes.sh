@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# pathlab grade and the everyday mistakes of a class (issue 10): every mistake a student makes with
+# pathlab grade and the everyday mistakes of a class: every mistake a student makes with
 # an honest renderer must fail (exit 1) or be refused (exit 2); honest images must pass.
 #
 # Honest: the Cornell box at 64x64 (against ref/cornell.pfm) and 128x128 (ref/cornell-128.pfm),

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Hostile inputs (issue 13; ../shared/data/hostile/README.md): each one found a bug by fuzzing or by
+# Hostile inputs (../shared/data/hostile/README.md: fuzzed and hand-made files): each one found a bug by fuzzing or by
 # hand. Whatever the input, pathlab ends in bounded time and memory with either a correct render or
 # a clear error naming the file and line (exit 2), and writes no partial output.
 # The small inputs are in tests/hostile/; the big ones (4096- and 100000-corner faces, a 100 MB face line, a

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Renders in passes, addressable samples, merge and resume (issue 11):
+# Renders in passes, addressable samples, merge and resume:
 #  - a render stopped by SIGINT or SIGTERM writes the uniform-spp image it reached, byte for byte
 #    the --spp N render of the spp it says; a second signal writes nothing and leaves no temporary file;
 #  - --time writes as many spp as fit, byte for byte the --spp N render;

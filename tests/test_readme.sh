@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The README's commands work as written in a fresh clone (issue 13, part 5). What it checks:
+# The README's commands work as written in a fresh clone. What it checks:
 #  - every line of the README's ```sh blocks that runs ./pathlab (or awk, mkdir, cp before it) is
 #    run verbatim, in order, in a copy of the tracked files (git ls-files) with this ./pathlab, except
 #    that --spp N becomes --spp 2, a render without --size gets --size 64x64 and check-sampling's

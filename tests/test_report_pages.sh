@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Reports as pages (issue 14, part 2): compare's DIR/index.html (the table's rows, the plot as inline
+# Reports as pages: compare's DIR/index.html (the table's rows, the plot as inline
 # SVG, links to DIR's files), grade's page per image (the verdict, the likely mistake, the failing
 # blocks as marks by their labels "too bright: ...", none for an honest image) and the class reports
 # (Markdown, CSV, HTML) whose links reach the pages. Checks only what compare and grade put into the

@@ -276,9 +276,9 @@ static inline int push_near_first(const wnode *n, unsigned mask, const float dis
  * in the same order as node_hits (so the same children are entered at the same distances and every
  * hit is the same), but the hit mask comes out of one compare into a mask register instead of eight
  * bits ORed together, and closest-hit rays pack the children hit with one compress instead of a
- * branch per lane, which mispredicts on incoherent rays. Measured (docs/performance.md, issue 12
- * item 4): dragon diffuse rays 1.2x faster, shadow 1.1x. Shadow rays keep the branch per lane:
- * with the compress they were 0.91x. */
+ * branch per lane, which mispredicts on incoherent rays. Measured (bench/log.md, "Nodes and blocks
+ * tested with AVX-512 intrinsics"): dragon diffuse rays 1.2x faster, shadow 1.1x. Shadow rays keep
+ * the branch per lane: with the compress they were 0.91x. */
 typedef struct { __m256 o[3], inv[3], inv_far[3]; } ray_vec;
 
 static inline ray_vec ray_vectors(const ray_pre *p)

@@ -25,7 +25,7 @@ rows=$(wc -l < "$TMP/rows"); passed=$(awk '$NF == "pass"' "$TMP/rows" | wc -l)
 if [ -z "$bad" ] && [ "$rows" -ge 50 ] && [ "$passed" -eq "$rows" ]; then pass "$rows rows, all 'pass', each with chi2, dof, p in [0, 1], integral, want, pdf err"
 else fail "rows: $rows, $passed pass; malformed: $(echo "$bad" | head -3)"; fi
 
-# a row for every routine of the issue: warps, Blinn, BRDF mixture, triangles, spherical triangle, light choice
+# a row for every sampling routine of the course: warps, Blinn, BRDF mixture, triangles, spherical triangle, light choice
 missing=""
 for r in uniform_hemisphere cosine_hemisphere "cos_power m=1 " "cos_power m=10000" "brdf_sample diffuse" \
          "brdf_sample glossy Ns=10, wo 89 deg" "brdf_sample mixed Kd .5 Ks .3 Ns=10, wo 60 deg" sample_uniform_triangle \

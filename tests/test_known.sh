@@ -54,8 +54,8 @@ zcheck_expect "furnace at 64 spp: --precision 1e-3 refuses a too coarse check" 3
 # variance grows as 2^k with the bounce (plain 3-sigma test). Sphere furnace (Le = 0.5): MIS and BRDF-only
 # to 1e-3; light-only with the whole-image test only: a point s on the sphere seen from a point
 # next to it gives cos cos / d^2 without bound, an infinite variance again, so the precision its
-# sample variance promises changes from seed to seed (1.1e-3 at L6 with the per-sample streams of
-# issue 11, 1.7e-3 at L3 with 1024 spp).
+# sample variance promises changes from seed to seed (1.1e-3 at L6 with per-sample streams,
+# 1.7e-3 at L3 with 1024 spp).
 # BRDF sampling with cosine directions is exact in a diffuse furnace (f cos / pdf = a at every
 # bounce): zcheck's rounding floor is then the only tolerance.
 # The last field is zcheck's alpha: 0.01, but 1e-4 (critical |z| 4.15) for light sampling alone in

@@ -6,7 +6,7 @@
  * and the two Sobol dimensions by their definition (loops over the index bits, not sampler.c's).
  * sobol_point computes the same numbers with fewer bit reversals (on reversed fractions): any
  * change to its shortcuts that changes a number, and thus every Sobol image, fails here. Exact
- * comparisons, no statistics: sobol and sobol1, 2000 (seed, pixel, index, dimension) each, 4 calls. */
+ * comparisons, no statistics: sobol and sobol1, 2000 (seed, pixel, index, dimension) each, 3 calls. */
 #include "check.h"
 #include "sampler/sampler.h"
 

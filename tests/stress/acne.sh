@@ -46,9 +46,10 @@ $PROTO
 EOF
     local flags="-std=c99 -O2 -D_POSIX_C_SOURCE=200809L -Isrc"
     for f in src/*/*.c; do
+        o=$d/$(echo "${f#src/}" | tr / _); o=${o%.c}.o   # LAYER_NAME.o: cmd/grade.c and grade/grade.c both exist
         case $f in
-            "src/$ORIGIN_C") echo "$CC $flags -Doffset_ray_origin=offset_ray_origin_robust -c -o $d/$(basename "$f" .c).o $f" ;;
-            *) echo "$CC $flags -c -o $d/$(basename "$f" .c).o $f" ;;
+            "src/$ORIGIN_C") echo "$CC $flags -Doffset_ray_origin=offset_ray_origin_robust -c -o $o $f" ;;
+            *) echo "$CC $flags -c -o $o $f" ;;
         esac
     done > "$d/cmds"
     echo "$CC $flags -c -o $d/origin_variant.o $d/origin.c" >> "$d/cmds"

@@ -13,8 +13,12 @@
 . "$(dirname "$0")/lib.sh"
 if [ "${PATHLAB_FAST:-0}" != 0 ]; then
     SIZE=48x48 REF_SPP=512 SEEDS4="1 2" SEEDS64="1 2"        # the sanitizer build is ~15x slower
+    # at 48x48 the whole image's error bar at 64 spp is 0.3-0.4% per channel: seed 1's own noise
+    # (-0.5%) left 1.5% of a 2% bias, under the limit; 3% is found at |z| 7.5 to 11.4 (seeds 1-6)
+    BRIGHT=1.03 BRIGHT_PCT=3
 else
     SIZE=64x64 REF_SPP=1024 SEEDS4="1 2 3 4 5" SEEDS64="1 2 3"
+    BRIGHT=1.02 BRIGHT_PCT=2
 fi
 # --sampler independent: grade's false-alarm rate (alpha) and power are those of independent samples
 SCENE="scenes/cornell.obj --quiet --size $SIZE --bounces 0:3 --sampler independent"
@@ -52,10 +56,10 @@ grade_expect "unbiased, another estimator (--direct brdf), 64 spp: pass" 0 "" "$
 grade_expect "unbiased, 64 spp, with --var: pass, per-pixel test printed" 0 "^pixels \(information only" \
     "$TMP/u64_1.pfm" --spp 64 --var "$TMP/ref_var.pfm" --ref-spp "$REF_SPP"
 
-# 2. 2% too bright: every 64-spp image above, scaled by 1.02
+# 2. 2% too bright (3% on the sanitizer run's smaller images): every 64-spp image above, scaled
 for s in $SEEDS64; do
-    $PFMTOOL scale "$TMP/u64_$s.pfm" 1.02 "$TMP/b64_$s.pfm"
-    grade_expect "2% too bright, 64 spp, seed $s: fail, brighter" 1 "^  brighter over the whole image: \+[12]\.[0-9]+%" "$TMP/b64_$s.pfm" --spp 64
+    $PFMTOOL scale "$TMP/u64_$s.pfm" $BRIGHT "$TMP/b64_$s.pfm"
+    grade_expect "$BRIGHT_PCT% too bright, 64 spp, seed $s: fail, brighter" 1 "^  brighter over the whole image: \+[1-3]\.[0-9]+%" "$TMP/b64_$s.pfm" --spp 64
 done
 
 # 3. L2 missing: L0 + L1 + L3 of a split render, against L0..L3

@@ -41,8 +41,13 @@ done
 
 # 2. two signals: stop at once, nothing written, no temporary file
 rm -f "$TMP"/two*
-$PATHLAB render scenes/cornell.obj --size 96x64 --spp 1000000 -o "$TMP/two.pfm" --variance "$TMP/two_var.pfm" 2> "$TMP/err" & pid=$!
-sleep 1; kill -INT $pid; sleep 0.05; kill -INT $pid; wait $pid; rc=$?
+# the second signal must come while the pass is still running: the image is large (a pass of one
+# sample at 640x480 is 0.3 s or more in every build), and it is sent as soon as the render has said
+# that it took the first (a fixed 50 ms let the sanitizer build, now faster, write its image first)
+$PATHLAB render scenes/cornell.obj --size 640x480 --spp 1000000 -o "$TMP/two.pfm" --variance "$TMP/two_var.pfm" 2> "$TMP/err" & pid=$!
+sleep 1; kill -INT $pid
+for _ in $(seq 1 500); do grep -q 'finishing the current pass' "$TMP/err" && break; sleep 0.005; done
+kill -INT $pid; wait $pid; rc=$?
 if [ $rc -eq 130 ]; then pass "two SIGINTs: exit status 130"; else fail "two SIGINTs: exit status $rc"; fi
 if [ -z "$(ls "$TMP" | grep '^two')" ]; then pass "two SIGINTs: no image, no sidecar, no temporary file"
 else fail "two SIGINTs left: $(ls "$TMP" | grep '^two' | tr '\n' ' ')"; fi

@@ -102,8 +102,8 @@ static int prepare_resume(render_args *a, render_plan *p, const sidecar *now, re
     sidecar had;
     int64_t have;
     if (resume_read(prev, &had, a->out, now, p->ro.sampler, a->variance != NULL, a->ro.split)) return 2;
-    if (had.variance[0] && !a->variance) {   /* keep its variance up to date, where it is */
-        render_files_variance_path(var_out, cap, a->out, had.variance);
+    if (had.variance[0] && !a->variance) {   /* keep its variance up to date: STEM_var.pfm beside -o */
+        if (resume_variance_out(var_out, cap, a->out, &had)) return 2;
         a->variance = var_out;
     }
     have = sidecar_spp(&had);
@@ -114,6 +114,11 @@ static int prepare_resume(render_args *a, render_plan *p, const sidecar *now, re
     p->had = have;
     p->ro.first = had.range[had.nranges - 1][1];
     p->ro.spp = (int)(p->total - have);
+    if (p->ro.first > SIDECAR_INDEX_MAX - p->ro.spp) {   /* the sidecar's bound, that of --samples: no index overflows */
+        fprintf(stderr, "pathlab render: --resume: %s holds samples up to index %" PRId64 ": %d more would pass 2^62, the limit "
+                "of a sample index\n", a->out, p->ro.first, p->ro.spp);
+        return 2;
+    }
     return 0;
 }
 

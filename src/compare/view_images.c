@@ -22,16 +22,20 @@ static int read_sized(image *im, const char *path, const char **first, const ima
     return 2;
 }
 
-/* The variance of the image at path: STEM_var.pfm beside it, else the one its sidecar names. 1 if found. */
+/* The variance of the image at path: STEM_var.pfm beside it, else the one its sidecar names (an
+ * input confined to the image's folder, whose own sidecar says it is this image's variance:
+ * render_files_named_variance). 1 if found, 0 if none, 2 after printing why it is refused. */
 static int variance_of(const char *path, char *out, size_t cap)
 {
     size_t n = strlen(path), stem = n > 4 && !strcmp(path + n - 4, ".pfm") ? n - 4 : n;
     sidecar m;
+    int rc;
     snprintf(out, cap, "%.*s_var.pfm", (int)stem, path);
     if (exists(out)) return 1;
-    if (sidecar_read(&m, path) || !m.variance[0]) return 0;
-    render_files_variance_path(out, cap, path, m.variance);
-    return out[0] && exists(out);
+    if ((rc = sidecar_read(&m, path)) > 0) return 2;
+    if (rc < 0) return 0;
+    rc = render_files_named_variance(out, cap, path, &m, "view");
+    return rc < 0 ? 0 : rc ? 2 : 1;
 }
 
 /* Reads one image (and its variance, given or found) into slot i of the page. 0 or 2. */
@@ -39,10 +43,12 @@ static int read_image(view_data *d, html_image *h, image *im, image *var, const 
                       const char **first)
 {
     char found[PATH_CAP];
+    int rc = 0;
     h->name = path_file_name(path);
     h->img = im;
     if (read_sized(im, path, first, &d->img[0])) return 2;
-    if (!var_path && variance_of(path, found, sizeof found)) var_path = found;
+    if (!var_path && (rc = variance_of(path, found, sizeof found)) == 2) return 2;
+    if (!var_path && rc == 1) var_path = found;
     if (!var_path) return 0;
     if (read_sized(var, var_path, first, &d->img[0])) return 2;
     h->var = var;

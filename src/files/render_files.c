@@ -1,6 +1,7 @@
 /* render_files.c — a render's files and their sidecars, written and read back. */
 #include "files/render_files.h"
 #include "render/render.h"
+#include "sys/input_file.h"
 #include "sys/interrupt.h"
 #include "sys/output_path.h"
 #include <errno.h>
@@ -214,19 +215,37 @@ int render_files_write_all(const char *out, const char *var_out, const char *cou
     return finish(&fs, !err) || err;
 }
 
-void render_files_variance_path(char *dst, size_t cap, const char *image_path, const char *name)
+const char *render_files_variance_path(char *dst, size_t cap, const char *image_path, const char *name)
 {
-    char dir[PATH_CAP];
-    int n;
-    folder_of(dir, sizeof dir, image_path);
-    n = strchr(name, '/') ? snprintf(dst, cap, "%s", name) : snprintf(dst, cap, "%s%s", dir, name);
-    if (n >= (int)cap) dst[0] = '\0';
+    return input_file_beside(dst, cap, image_path, name);
 }
 
-/* Reads image `path` and its sidecar into *im and *m, checking it is what `kind` and `ranges_of` say. */
-static int read_one(const char *cmd, const char *path, const char *kind, const sidecar *ranges_of, image *im, sidecar *m)
+/* The size a sidecar's camera line gives ("... size WxH"); 0 if it has none. */
+static int camera_size(const sidecar *m, int *w, int *h)
+{
+    const char *s = strstr(m->camera, "size ");
+    return s && sscanf(s, "size %dx%d", w, h) == 2 && *w > 0 && *h > 0;
+}
+
+/* A file that goes with the image whose sidecar is `of` (its layer, its variance) must be of that
+ * same render: scene, seed, flags, camera. 0, or 1 after printing why. */
+static int same_render(const char *cmd, const char *path, const sidecar *m, const sidecar *of)
+{
+    const char *key = strcmp(m->scene_id, of->scene_id) ? "scene-id" : m->seed != of->seed ? "seed" : strcmp(m->flags, of->flags) ? "flags"
+                      : strcmp(m->camera, of->camera) ? "camera" : NULL;
+    if (!key) return 0;
+    fprintf(stderr, "pathlab %s: %s is not of the render it goes with: its sidecar's %s differs: files of two renders mixed up\n",
+            cmd, path, key);
+    return 1;
+}
+
+/* Reads image `path` and its sidecar into *im and *m, checking it is what `kind` and `of` (the
+ * sidecar of the render's total, NULL for the total itself) say, and from its header before any
+ * pixel is read that it is w x h (0: the size of the camera line). */
+static int check_one(const char *cmd, const char *path, const char *kind, const sidecar *of, sidecar *m, int w, int h)
 {
     char a[8192], b[8192];
+    img_pfm_info info;
     int rc = sidecar_read(m, path);
     if (rc < 0) fprintf(stderr, "pathlab %s: %s has no sidecar %s.meta: it was not written by pathlab render "
                                 "(or the .meta was not copied with it), so its samples are unknown\n", cmd, path, path);
@@ -236,16 +255,54 @@ static int read_one(const char *cmd, const char *path, const char *kind, const s
         return 1;
     }
     sidecar_ranges_text(m, a, sizeof a);
-    sidecar_ranges_text(ranges_of ? ranges_of : m, b, sizeof b);
+    sidecar_ranges_text(of ? of : m, b, sizeof b);
     if (strcmp(a, b)) {
         fprintf(stderr, "pathlab %s: %s holds samples %s, but its image holds %s: files of two renders mixed up\n", cmd, path, a, b);
         return 1;
     }
+    if (of && same_render(cmd, path, m, of)) return 1;
     if (img_format_of(path) != IMG_PFM) {
         fprintf(stderr, "pathlab %s: %s: need the .pfm (linear float) image, not an 8-bit one\n", cmd, path);
         return 1;
     }
-    return img_read_pfm(im, path);
+    if (img_read_pfm_header(path, &info)) return 1;
+    if ((w > 0 || camera_size(m, &w, &h)) && (info.w != w || info.h != h)) {
+        fprintf(stderr, "pathlab %s: %s is %dx%d, but its render is %dx%d: files of two renders mixed up\n", cmd, path, info.w,
+                info.h, w, h);
+        return 1;
+    }
+    return 0;
+}
+
+static int read_one(const char *cmd, const char *path, const char *kind, const sidecar *of, image *im, sidecar *m, int w, int h)
+{
+    return check_one(cmd, path, kind, of, m, w, h) || img_read_pfm(im, path);
+}
+
+/* The variance of layer p (named `name` by its sidecar) into vp[cap]: 0, or 1 after printing why. */
+static int variance_file(char *vp, size_t cap, const char *p, const char *name, const char *cmd)
+{
+    const char *why;
+    if (!name[0]) {
+        fprintf(stderr, "pathlab %s: %s was rendered without --variance: its variance is unknown\n", cmd, p);
+        return 1;
+    }
+    if (!(why = render_files_variance_path(vp, cap, p, name))) return 0;
+    fprintf(stderr, "pathlab %s: %s.meta names its variance '%s': %s\n", cmd, p, name, why);
+    return 1;
+}
+
+int render_files_named_variance(char *dst, size_t cap, const char *image_path, const sidecar *m, const char *cmd)
+{
+    img_pfm_info info;
+    sidecar vm;
+    if (!m->variance[0]) return -1;
+    if (render_files_variance_path(dst, cap, image_path, m->variance)) {
+        if (errno == ENOENT) return -1;
+        return variance_file(dst, cap, image_path, m->variance, cmd);
+    }
+    if (img_read_pfm_header(image_path, &info)) return 1;
+    return check_one(cmd, dst, "variance", m, &vm, info.w, info.h);
 }
 
 /* Layer i (0: the total) and, with_var, its variance. */
@@ -253,16 +310,13 @@ static int read_layer(render_files *rf, int i, const char *path, int with_var, c
 {
     char p[PATH_CAP], vp[PATH_CAP];
     sidecar m, vm;
+    int w = i ? rf->mean[0].w : 0, h = i ? rf->mean[0].h : 0;
     if (i == 0) snprintf(p, sizeof p, "%s", path);
     else render_files_layer_path(p, sizeof p, path, render_bounce_of_layer(i, rf->bmin));
-    if (read_one(cmd, p, "mean", i ? &rf->meta : NULL, &rf->mean[i], i ? &m : &rf->meta)) return 1;
+    if (read_one(cmd, p, "mean", i ? &rf->meta : NULL, &rf->mean[i], i ? &m : &rf->meta, w, h)) return 1;
     if (!with_var) return 0;
-    if (!(i ? m.variance : rf->meta.variance)[0]) {
-        fprintf(stderr, "pathlab %s: %s was rendered without --variance: its variance is unknown\n", cmd, p);
-        return 1;
-    }
-    render_files_variance_path(vp, sizeof vp, p, i ? m.variance : rf->meta.variance);
-    return read_one(cmd, vp, "variance", &rf->meta, &rf->var[i], &vm);
+    if (variance_file(vp, sizeof vp, p, (i ? m.variance : rf->meta.variance), cmd)) return 1;
+    return read_one(cmd, vp, "variance", &rf->meta, &rf->var[i], &vm, rf->mean[0].w, rf->mean[0].h);
 }
 
 int render_files_read(render_files *rf, const char *path, int with_var, const char *cmd)
@@ -270,7 +324,7 @@ int render_files_read(render_files *rf, const char *path, int with_var, const ch
     sidecar first;
     int i, n, rc;
     memset(rf, 0, sizeof *rf);
-    if ((rc = sidecar_read(&first, path)) < 0) return read_one(cmd, path, "mean", NULL, NULL, &first);   /* prints why */
+    if ((rc = sidecar_read(&first, path)) < 0) return read_one(cmd, path, "mean", NULL, NULL, &first, 0, 0);   /* prints why */
     if (rc) return 1;
     rf->bmin = first.layers_first;
     n = 1 + first.layers_n;

@@ -22,9 +22,16 @@ int render_files_check_outputs(const char *out, const char *var_out, const char 
                                int bmin, int bmax);
 /* out.pfm, layer k -> out_Lk.pfm */
 void render_files_layer_path(char *dst, size_t cap, const char *out, int k);
-/* The variance file that the sidecar of image_path names (name): beside the image if a bare name,
- * else the path as written ("" if too long). */
-void render_files_variance_path(char *dst, size_t cap, const char *image_path, const char *name);
+/* The variance file that the sidecar of image_path names (name), into dst[cap]: an input, resolved
+ * against the image's folder and confined to it (sys/input_file.h, input_file_beside: no absolute
+ * path, no "..", no link leading out, a regular file). NULL, or the reason it is refused (errno
+ * ENOENT if it does not exist). Never a file to write: an output is named on the command line. */
+const char *render_files_variance_path(char *dst, size_t cap, const char *image_path, const char *name);
+/* The variance that the sidecar m of image_path names, found as render_files_variance_path says and
+ * checked as render_files_read checks one (its own sidecar of this render, its header of the image's
+ * size), without reading its pixels: 0 (its path in dst); -1 if m names none or it does not exist;
+ * 1 after printing why ("pathlab CMD: ..."). */
+int render_files_named_variance(char *dst, size_t cap, const char *image_path, const sidecar *m, const char *cmd);
 /* Writes mean[0..nlayers-1] to out (layer i >= 1 to out_L{bmin+i-1}) and, if var_out, var[] the same
  * way, each with its sidecar: meta with kind, layer and variance filled in per file. All files are
  * written under temporary names first and renamed together: a failure or a second Ctrl-C leaves
@@ -36,7 +43,10 @@ int render_files_write(const char *out, const char *var_out, float exposure, con
 int render_files_write_all(const char *out, const char *var_out, const char *count_out, const image *count,
                            float exposure, const sidecar *meta, const image *mean, const image *var, int nlayers, int bmin);
 /* Reads the render at path (a .pfm with its sidecar), its layers if its sidecar lists some, and its
- * variance files if with_var. 0, or 1 after printing why (messages start with "pathlab CMD: "). */
+ * variance files if with_var (render_files_variance_path). Each layer and variance must say in its
+ * own sidecar that it is of this render (kind, samples, scene-id, seed, flags, camera) and be of its
+ * size (from its header, before its pixels are read). 0, or 1 after printing why (messages start
+ * with "pathlab CMD: "). */
 int render_files_read(render_files *rf, const char *path, int with_var, const char *cmd);
 void render_files_free(render_files *rf);
 #endif

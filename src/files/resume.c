@@ -1,7 +1,10 @@
 /* resume.c — the checks of render --resume, and the sums of the old and the new samples. */
 #include "files/resume.h"
 #include "stats/combine.h"
+#include "sys/output_path.h"
+#include "util/path.h"
 #include <stdio.h>
+#include <string.h>
 #include <unistd.h>
 
 /* A Sobol render cannot be resumed: 1 after saying why. */
@@ -39,6 +42,25 @@ int resume_read(render_files *prev, sidecar *had, const char *out, const sidecar
         return 1;
     }
     return 0;
+}
+
+int resume_variance_out(char *dst, size_t cap, const char *out, const sidecar *had)
+{
+    char named[PATH_CAP];
+    const char *ext = strrchr(out, '.');
+    size_t stem = ext && !strchr(ext, '/') ? (size_t)(ext - out) : strlen(out);
+    static const char *const pfm[] = {".pfm", NULL};
+    if (snprintf(dst, cap, "%.*s_var.pfm", (int)stem, out) >= (int)cap) {
+        fprintf(stderr, "pathlab render: --resume: %s: the name of its variance is too long\n", out);
+        return 1;
+    }
+    if (render_files_variance_path(named, sizeof named, out, had->variance) || !path_same_file(named, dst)) {
+        fprintf(stderr, "pathlab render: --resume: %s.meta names its variance '%s', but the variance --resume rewrites is the one "
+                "the command line names: %s beside -o, or --variance FILE (a name read from a file is never written)\n",
+                out, had->variance, dst);
+        return 1;
+    }
+    return output_path_check("render", "--resume (its variance)", dst, pfm);
 }
 
 int resume_combine(const render_files *prev, int64_t n, render_result *r)

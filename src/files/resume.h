@@ -11,6 +11,10 @@
  * if and only if split. 0, or 1 after printing why. */
 int resume_read(render_files *prev, sidecar *had, const char *out, const sidecar *now, sampler_kind sampler,
                 int with_variance, int split);
+/* The variance that --resume rewrites when no --variance is given: the one the command line implies,
+ * STEM_var.pfm beside -o out (into dst[cap]), and only when the sidecar `had` of out names that very
+ * file: a name read from a sidecar is never a file to write. 0, or 1 after printing why. */
+int resume_variance_out(char *dst, size_t cap, const char *out, const sidecar *had);
 /* r := prev (n samples) combined with r, layer by layer; 0, or 1 if out of memory (said so). */
 int resume_combine(const render_files *prev, int64_t n, render_result *r);
 #endif

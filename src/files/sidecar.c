@@ -1,5 +1,6 @@
 /* sidecar.c — reading, writing and comparing the FILE.meta that says what made FILE. */
 #include "files/sidecar.h"
+#include "sys/input_file.h"
 #include "sys/output_path.h"
 #include "tracer/integrator.h"
 #include "util/textfile.h"
@@ -65,6 +66,7 @@ static int parse_ranges(sidecar *m, const char *s)
         s = end + 1;
         b = strtoll(s, &end, 10);
         if (end == s || b <= a || m->nranges == SIDECAR_MAX_RANGES) return 1;
+        if (b > SIDECAR_INDEX_MAX) return 3;
         if (m->nranges > 0 && a < m->range[m->nranges - 1][1]) return 1;
         m->range[m->nranges][0] = a;
         m->range[m->nranges][1] = b;
@@ -89,6 +91,18 @@ static int parse_layers(sidecar *m, const char *s)
     return 0;
 }
 
+/* A seed: digits only (strtoull would take "-1" as 2^64 - 1); 1 if malformed or beyond 2^64 - 1. */
+static int parse_u64(uint64_t *x, const char *v)
+{
+    char *end;
+    unsigned long long n;
+    if (*v < '0' || *v > '9') return 1;
+    errno = 0;
+    n = strtoull(v, &end, 10);
+    *x = n;
+    return *end != '\0' || errno == ERANGE;
+}
+
 /* Copies the value into a text field; 1 if it does not fit. */
 static int set_text(char *dst, size_t cap, const char *v)
 {
@@ -104,10 +118,7 @@ static int parse_line(sidecar *m, const char *key, const char *v)
     if (!strcmp(key, "kind")) return set_text(m->kind, sizeof m->kind, v);
     if (!strcmp(key, "layer")) return set_text(m->layer, sizeof m->layer, v);
     if (!strcmp(key, "samples")) return parse_ranges(m, v);
-    if (!strcmp(key, "seed")) {
-        m->seed = strtoull(v, &end, 10);
-        return end == v || *end != '\0';
-    }
+    if (!strcmp(key, "seed")) return parse_u64(&m->seed, v);
     if (!strcmp(key, "scene")) return set_text(m->scene, sizeof m->scene, v);
     if (!strcmp(key, "scene-id")) return set_text(m->scene_id, sizeof m->scene_id, v);
     if (!strcmp(key, "flags")) return set_text(m->flags, sizeof m->flags, v);
@@ -120,15 +131,12 @@ static int parse_line(sidecar *m, const char *key, const char *v)
     if (!strcmp(key, "sample-count")) return set_text(m->sample_count, sizeof m->sample_count, v);
     if (!strcmp(key, "spp-mean")) {
         m->spp_mean = strtod(v, &end);
-        return end == v || *end != '\0';
+        return end == v || *end != '\0' ? 1 : !(m->spp_mean >= 0.0 && m->spp_mean <= (double)SIDECAR_SPP_MAX) ? 4 : 0;
     }
-    if (!strcmp(key, "pilot-seed")) {
-        m->pilot_seed = strtoull(v, &end, 10);
-        return end == v || *end != '\0';
-    }
+    if (!strcmp(key, "pilot-seed")) return parse_u64(&m->pilot_seed, v);
     if (!strcmp(key, "spp-cap")) {
         m->spp_cap = strtoll(v, &end, 10);
-        return end == v || *end != '\0';
+        return end == v || *end != '\0' ? 1 : m->spp_cap < 1 || m->spp_cap > SIDECAR_SPP_MAX ? 4 : 0;
     }
     if (!strcmp(key, "sampler")) return set_text(m->sampler, sizeof m->sampler, v);
     if (!strcmp(key, "variance-dof")) {
@@ -161,9 +169,9 @@ int sidecar_read(sidecar *m, const char *image_path)
     FILE *f;
     memset(m, 0, sizeof *m);
     sidecar_path(path, sizeof path, image_path);
-    if (!(f = fopen(path, "r"))) {
+    if (!(f = input_file_open(path, 1))) {   /* a FIFO named FILE.meta must not hang grade or view */
         if (errno == ENOENT) return -1;
-        fprintf(stderr, "%s: cannot read: %s\n", path, strerror(errno));
+        fprintf(stderr, "%s: cannot read: %s\n", path, input_file_why(errno));
         return 1;
     }
     while (!err && fgets(line, sizeof line, f)) {
@@ -172,7 +180,9 @@ int sidecar_read(sidecar *m, const char *image_path)
         else if (split_line(line, &key, &value)) err = parse_line(m, key, value);
     }
     fclose(f);
-    if (err) fprintf(stderr, "%s:%d: %s\n", path, lineno, err == 2 ? "line too long" : "bad value");
+    if (err) fprintf(stderr, "%s:%d: %s\n", path, lineno, err == 2 ? "line too long"
+                     : err == 3 ? "a sample index beyond 2^62, the limit of --samples"
+                     : err == 4 ? "a count of samples out of 1 .. 2^30, the limits of --spp" : "bad value");
     else if (!m->kind[0] || !m->nranges) fprintf(stderr, "%s: no %s line: not a pathlab sidecar\n", path, m->kind[0] ? "samples" : "kind");
     return err || !m->kind[0] || !m->nranges;
 }

@@ -16,6 +16,11 @@
 
 #define SIDECAR_MAX_RANGES 256
 #define SIDECAR_TEXT 1024
+/* The bounds of a sidecar's numbers, those of the command line: a sample index at most 2^62 (as
+ * --samples), a count of samples (the adaptive cap, its mean) at most 2^30 (as --spp), so that no sum
+ * of them overflows. A sidecar beyond them is refused as malformed. */
+#define SIDECAR_INDEX_MAX (1LL << 62)
+#define SIDECAR_SPP_MAX (1LL << 30)
 
 typedef struct {
     char kind[16];                 /* "mean", or "variance" (of the mean) */

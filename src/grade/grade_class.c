@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "image/radiance.h"
+#include "sys/input_file.h"
 #include "sys/output_path.h"
 #include "util/textfile.h"
 
@@ -48,7 +49,7 @@ static int manifest_command(char *cmd, size_t cap, const char *ref_path)
     int found = 0;
     snprintf(path, sizeof path, "%.*sMANIFEST.md", slash ? (int)(slash - ref_path + 1) : 0, ref_path);
     snprintf(key, sizeof key, "| %s |", name);
-    if (!(f = fopen(path, "r"))) return 0;
+    if (!(f = input_file_open(path, 1))) return 0;   /* a FIFO must not hang the grading */
     while (!found && fgets(line, sizeof line, f)) {
         char *a = strchr(line, '`'), *b = a ? strchr(a + 1, '`') : NULL;
         if (strncmp(line, key, strlen(key)) || !b) continue;
@@ -92,10 +93,10 @@ static int sidecar_command(char *out, size_t cap, const char *ref_path, int w, i
 }
 
 /* A wrong size: a fail, with the command that renders a reference at the image's size. */
-static int wrong_size(grade_row *row, const image *img, const grade_refs *refs, const char *ref_path)
+static int wrong_size(grade_row *row, int w, int h, const grade_refs *refs, const char *ref_path)
 {
     char cmd[COMMAND_CAP] = "", fixed[640];   /* a command longer than 639 characters is cut */
-    int w = img->w, h = img->h, rw = refs->ref->w, rh = refs->ref->h;
+    int rw = refs->ref->w, rh = refs->ref->h;
     int same_aspect = (long)w * rh == (long)h * rw;
     if (sidecar_command(fixed, sizeof fixed, ref_path, w, h)) cmd[0] = '\0';
     else if (manifest_command(cmd, sizeof cmd, ref_path)) resize_command(fixed, sizeof fixed, cmd, ref_path, w, h);
@@ -108,28 +109,30 @@ static int wrong_size(grade_row *row, const image *img, const grade_refs *refs, 
     return row->status = 1;
 }
 
+static int unreadable(grade_row *row)
+{
+    snprintf(row->mistake, sizeof row->mistake, "not a readable PFM: missing, byte order, header line ends, truncated or "
+             "trailing bytes (pathlab's message on stderr says which)");
+    return row->status = 2;
+}
+
 int grade_read_image(image *img, grade_row *row, const grade_refs *refs, const char *ref_path)
 {
     img_pfm_info info;
-    if (img_read_pfm_info(img, row->path, &info)) {
-        snprintf(row->mistake, sizeof row->mistake, "not a readable PFM: missing, byte order, header line ends, truncated or "
-                 "trailing bytes (pathlab's message on stderr says which)");
-        return row->status = 2;
-    }
+    img->w = img->h = 0;
+    img->px = NULL;
+    /* the header first: a file claiming gigabytes of the wrong kind or size is refused unread */
+    if (img_read_pfm_header(row->path, &info)) return unreadable(row);
     if (info.channels != refs->channels) {
         snprintf(row->mistake, sizeof row->mistake, "%s (\"%s\", %d channel%s) against a %s reference: write %s",
                  info.channels == 1 ? "greyscale" : "colour", info.channels == 1 ? "Pf" : "PF", info.channels,
                  info.channels == 1 ? "" : "s", refs->channels == 1 ? "greyscale" : "colour",
                  refs->channels == 1 ? "one channel (Pf)" : "the three channels R, G, B (PF)");
         fprintf(stderr, "pathlab grade: %s: %s\n", row->path, row->mistake);
-        img_free(img);
         return row->status = 2;
     }
-    if (img->w != refs->ref->w || img->h != refs->ref->h) {
-        wrong_size(row, img, refs, ref_path);
-        img_free(img);
-        return 1;
-    }
+    if (info.w != refs->ref->w || info.h != refs->ref->h) return wrong_size(row, info.w, info.h, refs, ref_path);
+    if (img_read_pfm_info(img, row->path, &info)) return unreadable(row);
     if (img_check_radiance(img, row->path, 4)) {
         snprintf(row->mistake, sizeof row->mistake, "NaN, infinite or negative values (positions on stderr): radiance is finite and >= 0");
         img_free(img);

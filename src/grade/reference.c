@@ -9,10 +9,11 @@
 /* The variance: --var, else STEM_var.pfm beside the reference, else the one its sidecar names. 0 or 2. */
 static int read_variance(grade_reference *R, const char *path, const char *var, size_t stem)
 {
+    int rc = -1;
     snprintf(R->var_found, sizeof R->var_found, "%.*s_var.pfm", (int)stem, path);
-    if (!var && !path_is_readable(R->var_found) && R->has_meta && R->meta.variance[0])   /* the variance its sidecar names */
-        render_files_variance_path(R->var_found, sizeof R->var_found, path, R->meta.variance);
-    R->var_path = var ? var : (path_is_readable(R->var_found) ? R->var_found : NULL);
+    if (!var && !path_is_readable(R->var_found) && R->has_meta)   /* the variance its sidecar names, confined and checked */
+        if ((rc = render_files_named_variance(R->var_found, sizeof R->var_found, path, &R->meta, "grade")) > 0) return 2;
+    R->var_path = var ? var : (rc == 0 || path_is_readable(R->var_found) ? R->var_found : NULL);
     if (!R->var_path) return 0;
     if (img_read_pfm(&R->var, R->var_path)) return 2;
     if (R->var.w != R->ref.w || R->var.h != R->ref.h) {

@@ -444,6 +444,8 @@ int img_read_pfm_info(image *im, const char *path, img_pfm_info *info)
     if (read_pixels(f, path, &hd, need, left, data) || check_byte_order(data, need / 4, &hd, path)) goto out;
     decode_pfm(im, data, &hd);
     if (info) {
+        info->w = (int)hd.w;
+        info->h = (int)hd.h;
         info->channels = hd.channels;
         info->big_endian = hd.big_endian;
         info->scale = hd.scale;
@@ -452,6 +454,35 @@ int img_read_pfm_info(image *im, const char *path, img_pfm_info *info)
 out:
     if (err) img_free(im);
     free(data);
+    fclose(f);
+    return err;
+}
+
+int img_read_pfm_header(const char *path, img_pfm_info *info)
+{
+    pfm_header hd;
+    size_t need;
+    long left;
+    int err = 1;
+    FILE *f = input_file_open(path, 1);
+    if (!f) {
+        fprintf(stderr, "%s: cannot open: %s\n", path, input_file_why(errno));
+        return 1;
+    }
+    if (read_pfm_header(f, path, &hd)) goto out;
+    need = (size_t)hd.w * (size_t)hd.h * (size_t)hd.channels * 4;
+    left = bytes_left(f);
+    if (left >= 0 && (size_t)left < need) truncated_error(path, &hd, need, (size_t)left);
+    else if (left >= 0 && (size_t)left > need) trailing_error(path, &hd, need, left - (long)need, 0);
+    else {
+        info->w = (int)hd.w;
+        info->h = (int)hd.h;
+        info->channels = hd.channels;
+        info->big_endian = hd.big_endian;
+        info->scale = hd.scale;
+        err = 0;
+    }
+out:
     fclose(f);
     return err;
 }

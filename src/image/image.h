@@ -35,8 +35,13 @@ typedef struct {
     int channels;     /* 3 for "PF" (colour), 1 for "Pf" (greyscale) */
     int big_endian;   /* the scale is positive */
     double scale;     /* as written in the header */
+    int w, h;         /* the header's size */
 } img_pfm_info;
 int img_read_pfm_info(image *im, const char *path, img_pfm_info *info);
+/* The header only, and the file's length checked against it (no pixel read, nothing allocated): what
+ * a caller compares with what it expects (a reference's size and channels) before reading a file
+ * that may claim gigabytes. 0, or 1 after printing "path: reason" as img_read_pfm would. */
+int img_read_pfm_header(const char *path, img_pfm_info *info);
 int img_read_pfm(image *im, const char *path);   /* img_read_pfm_info(im, path, NULL) */
 /* Linear [0,1] -> sRGB-encoded [0,1]. */
 float srgb_encode(float linear);

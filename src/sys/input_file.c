@@ -1,8 +1,11 @@
 /* input_file.c — see input_file.h. O_NONBLOCK: opening a FIFO without a writer returns at once;
  * the flag is cleared after the checks, so that a pipe given on purpose (regular_only = 0) is read. */
+/* realpath is POSIX 2008 but glibc declares it only for X/Open */
+#define _XOPEN_SOURCE 700
 #include "sys/input_file.h"
 #include <errno.h>
 #include <fcntl.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -27,4 +30,55 @@ const char *input_file_why(int err)
     if (err == EISDIR) return "a folder, not a file";
     if (err == ENODEV) return "not a regular file (a FIFO or a device)";
     return strerror(err);
+}
+
+/* 1 if name has a ".." part ("..", "../x", "x/..", "x/../y"). */
+static int climbs(const char *name)
+{
+    const char *p = name;
+    for (;;) {
+        size_t n = strcspn(p, "/");
+        if (n == 2 && p[0] == '.' && p[1] == '.') return 1;
+        if (!p[n]) return 0;
+        p += n + 1;
+    }
+}
+
+/* Whether real (resolved) is folder dir (resolved) or below it. */
+static int below(const char *dir, const char *real)
+{
+    size_t n = strlen(dir);
+    return (n == 1 && dir[0] == '/') || (strncmp(real, dir, n) == 0 && real[n] == '/');
+}
+
+const char *input_file_beside(char *dst, size_t cap, const char *owner, const char *name)
+{
+    const char *slash = strrchr(owner, '/');
+    int dir = slash ? (int)(slash - owner + 1) : 0;
+    char *folder, *real;
+    const char *why = NULL;
+    struct stat st;
+    int err = 0;
+    errno = 0;
+    if (!name[0]) return "an empty name";
+    if (name[0] == '/') return "an absolute path: only a file in the image's folder (or below) may be named";
+    if (climbs(name)) return "a path with '..': only a file in the image's folder (or below) may be named";
+    if (snprintf(dst, cap, "%.*s%s", dir, owner, name) >= (int)cap) return "a path too long";
+    folder = dir ? malloc((size_t)dir + 1) : NULL;
+    if (folder) memcpy(folder, owner, (size_t)dir), folder[dir] = '\0';
+    if (dir && !folder) return strerror(ENOMEM);
+    real = realpath(dst, NULL);
+    if (!real) err = errno, why = strerror(err);
+    if (!why) {
+        char *top = realpath(dir ? folder : ".", NULL);
+        if (!top) why = strerror(errno);
+        else if (!below(top, real)) why = "outside the image's folder (a symbolic link leads out): only a file in the image's folder (or below) may be named";
+        free(top);
+    }
+    if (!why && stat(real, &st) != 0) why = strerror(errno);
+    else if (!why && !S_ISREG(st.st_mode)) why = input_file_why(S_ISDIR(st.st_mode) ? EISDIR : ENODEV);
+    free(real);
+    free(folder);
+    errno = err;   /* ENOENT: the file does not exist */
+    return why;
 }

@@ -10,4 +10,11 @@ FILE *input_file_open(const char *path, int regular_only);
 /* The reason for errno after a failed input_file_open, for messages: "a folder, not a file",
  * "not a regular file (a FIFO or a device)", or strerror's. */
 const char *input_file_why(int err);
+/* A file that another file names (the variance an image's sidecar names): an input, never a place
+ * to write, and confined to the folder of `owner` (the image) as a scene's mtllib is. name is joined
+ * to owner's folder into dst[cap]; it must not be absolute nor hold a ".." part, its real path
+ * (symlinks followed, of the file and of any folder on the way) must lie in owner's folder or below,
+ * and it must be a regular file. NULL if so, else the reason, for "NAME: reason" (errno ENOENT when
+ * the file does not exist, so that a caller may treat a missing file apart). */
+const char *input_file_beside(char *dst, size_t cap, const char *owner, const char *name);
 #endif

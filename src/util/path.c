@@ -1,5 +1,6 @@
 /* path.c — a path's parts and what it names on disk (path.h). */
 #include "util/path.h"
+#include "sys/input_file.h"
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -20,7 +21,7 @@ int path_is_dir(const char *path)
 
 int path_is_readable(const char *path)
 {
-    FILE *f = fopen(path, "rb");
+    FILE *f = input_file_open(path, 0);   /* never blocks on a FIFO: the reader that follows refuses it */
     if (f) fclose(f);
     return f != NULL && !path_is_dir(path);
 }

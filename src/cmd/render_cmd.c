@@ -107,18 +107,13 @@ static int prepare_resume(render_args *a, render_plan *p, const sidecar *now, re
         a->variance = var_out;
     }
     have = sidecar_spp(&had);
-    if (have >= p->total) {
+    switch (resume_samples(&had, p->total, a->out, &p->ro.first, &p->ro.spp)) {
+    case 1:
         fprintf(stderr, "pathlab render: %s already has %" PRId64 " spp (--spp %" PRId64 "): nothing to add\n", a->out, have, p->total);
         return 1;
+    case 2: return 2;
     }
     p->had = have;
-    p->ro.first = had.range[had.nranges - 1][1];
-    p->ro.spp = (int)(p->total - have);
-    if (p->ro.first > SIDECAR_INDEX_MAX - p->ro.spp) {   /* the sidecar's bound, that of --samples: no index overflows */
-        fprintf(stderr, "pathlab render: --resume: %s holds samples up to index %" PRId64 ": %d more would pass 2^62, the limit "
-                "of a sample index\n", a->out, p->ro.first, p->ro.spp);
-        return 2;
-    }
     return 0;
 }
 

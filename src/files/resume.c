@@ -3,6 +3,7 @@
 #include "stats/combine.h"
 #include "sys/output_path.h"
 #include "util/path.h"
+#include <inttypes.h>
 #include <stdio.h>
 #include <string.h>
 #include <unistd.h>
@@ -61,6 +62,18 @@ int resume_variance_out(char *dst, size_t cap, const char *out, const sidecar *h
         return 1;
     }
     return output_path_check("render", "--resume (its variance)", dst, pfm);
+}
+
+int resume_samples(const sidecar *had, int64_t total, const char *out, int64_t *first, int *spp)
+{
+    int64_t have = sidecar_spp(had);
+    if (have >= total) return 1;
+    *first = had->range[had->nranges - 1][1];
+    *spp = (int)(total - have);
+    if (*first <= SIDECAR_INDEX_MAX - *spp) return 0;   /* the sidecar's bound, that of --samples: no index overflows */
+    fprintf(stderr, "pathlab render: --resume: %s holds samples up to index %" PRId64 ": %d more would pass 2^62, the limit of "
+            "a sample index\n", out, *first, *spp);
+    return 2;
 }
 
 int resume_combine(const render_files *prev, int64_t n, render_result *r)

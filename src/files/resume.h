@@ -15,6 +15,10 @@ int resume_read(render_files *prev, sidecar *had, const char *out, const sidecar
  * STEM_var.pfm beside -o out (into dst[cap]), and only when the sidecar `had` of out names that very
  * file: a name read from a sidecar is never a file to write. 0, or 1 after printing why. */
 int resume_variance_out(char *dst, size_t cap, const char *out, const sidecar *had);
+/* The samples --resume adds to the render whose sidecar is `had` (of -o out) to hold `total` (1 ..
+ * 2^30, --spp) in all: from *first, the index after its last, *spp of them. 0; 1 if it holds `total`
+ * already (nothing printed); 2 after printing why: the new indices would pass SIDECAR_INDEX_MAX. */
+int resume_samples(const sidecar *had, int64_t total, const char *out, int64_t *first, int *spp);
 /* r := prev (n samples) combined with r, layer by layer; 0, or 1 if out of memory (said so). */
 int resume_combine(const render_files *prev, int64_t n, render_result *r);
 #endif

@@ -7,7 +7,7 @@ set -eu
 cd "$(dirname "$0")/../.."
 C=tests/fuzz/corpus
 H=../shared/data/hostile
-rm -rf "$C"; mkdir -p "$C"/scene "$C"/mtl "$C"/view "$C"/orbiter "$C"/pfm
+rm -rf "$C"; mkdir -p "$C"/scene "$C"/mtl "$C"/view "$C"/orbiter "$C"/pfm "$C"/sidecar
 combine() {   # OBJ MTL VIEW: the three as one input, the OBJ's mtllib renamed m.mtl
     sed 's/^mtllib .*/mtllib m.mtl/' "$1"
     if [ -n "$2" ]; then printf '\n@@MTL@@\n'; cat "$2"; fi
@@ -53,4 +53,24 @@ pfm Pf 2 2 -1.0 '\x00\x00\x80\x3f\x00\x00\x00\x3f\x00\x00\x00\x00\x00\x00\x20\x4
 pfm PF 2 2 -1.0 '\x00\x00\x80\x3f' > "$C/pfm/truncated.pfm"
 pfm PF 2147483647 2147483647 -1.0 '' > "$C/pfm/huge-size.pfm"
 pfm PF 1 1 -1.0 '\x00\x00\xc0\x7f\x00\x00\x80\x7f\x00\x00\x80\xff' > "$C/pfm/nan-inf.pfm"
-for t in scene mtl view orbiter pfm; do echo "$t: $(ls "$C/$t" | wc -l) seeds, $(cat "$C/$t"/* | wc -c) bytes"; done
+# sidecars: as render writes them (mean, variance, layers, adaptive, sobol), and hostile ones: ranges
+# near INT64_MAX (they overflowed the resume's arithmetic), a variance named by an absolute path,
+# through "..", or as a device
+side() {   # NAME LINES...: a mean's sidecar of a 16x16 render with the lines given after it
+    local n=$1; shift
+    { printf 'kind mean\nlayer total\nseed 1\nscene scenes/cornell.obj\nscene-id fnv1a64:5df60ac8842923b7\n'
+      printf 'flags --bounces 0:inf --light area --dir brdf --direct mis-power --rr 3 --pixel-offset 0.5\n'
+      printf 'camera eye 278,273,-800 target 278,273,0 up 0,1,0 fov 39.3076477 size 1x1\nrevision 9d77892\n'
+      printf '%s\n' "$@"; } > "$C/sidecar/$n"
+}
+side mean 'samples 0:4' 'spp 4' 'variance x_var.pfm'
+side variance 'samples 0:4' 'spp 4' && sed -i 's/^kind mean/kind variance/' "$C/sidecar/variance"
+side pieces 'samples 0:4,8:16,1000:1200' 'variance x_var.pfm' 'layers 0:3' 'stopped SIGINT'
+side adaptive 'samples 0:64' 'spp-mean 12.5' 'spp-cap 64' 'adaptive --target-error 0.01 --pilot 16' 'pilot-seed 7' 'sample-count x_n.pfm'
+side sobol 'samples 0:4' 'sampler sobol' 'variance-dof 3' 'variance x_var.pfm'
+side near-int64-max 'samples 0:2,9223372036854775805:9223372036854775807' 'variance x_var.pfm'
+side near-limit 'samples 0:2,4611686018427387000:4611686018427387904' 'variance x_var.pfm'
+side absolute 'samples 0:4' 'variance /dev/zero'
+side climbs 'samples 0:4' 'variance ../x_var.pfm'
+side negative-seed 'samples 0:4' 'seed -1' 'spp-cap -5'
+for t in scene mtl view orbiter pfm sidecar; do echo "$t: $(ls "$C/$t" | wc -l) seeds, $(cat "$C/$t"/* | wc -c) bytes"; done

@@ -51,7 +51,7 @@ int view_main(int argc, char **argv)
         page.ref = a.ref ? &d->refim : NULL;
         page.strip = d->strip;
         page.nstrip = d->nlayers;
-        rc = html_page_write(a.out, &page) ? 1 : 0;
+        rc = html_page_write(a.out, &page) ? 2 : 0;   /* said why: "PAGE: cannot write: No space left on device" */
     }
     view_data_free(d);
     return rc;

@@ -1,5 +1,6 @@
 /* class_run.c — one grading run: the reference, then each image in turn, then the class (class_run.h). */
 #include "grade/class_run.h"
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -101,7 +102,12 @@ static int grade_one(grade_row *row, const run *s, const char *path, int same_na
     grade_fill_row(row, &r);
     row->status = grade_failed(&r);
     if (row->status == 1 && diagnose(row, &img, s, grade_excess(&r), h, &nh)) row->status = 2;
-    if (write_heatmap(&r, s, row->path) || write_page(row, &r, &img, s, h, nh, same_name)) row->status = 2;
+    if (write_heatmap(&r, s, row->path) || write_page(row, &r, &img, s, h, nh, same_name)) {   /* the row says why */
+        int why = errno;
+        snprintf(row->mistake, sizeof row->mistake, "graded %s, but its %s could not be written: %s (pathlab's message on stderr "
+                 "names the file)", row->status ? "FAIL" : "PASS", s->job.heatmap ? "heatmap or page" : "page", strerror(why));
+        row->status = 2;
+    }
     grade_free(&r);
     if (keep && row->status < 2) { *keep = img; img.px = NULL; }
     img_free(&img);

@@ -191,7 +191,7 @@ static void write_page(FILE *f, const html_page *p, const html_image **all, int 
 
 int html_page_write(const char *path, const html_page *page)
 {
-    int n = 0, err;
+    int n = 0;
     char *tmp;
     FILE *f;
     const html_image **all;
@@ -202,9 +202,8 @@ int html_page_write(const char *path, const html_page *page)
     f = atomic_file_open(path, &tmp);
     if (!f) { free(all); return 1; }
     write_page(f, page, all, n);
-    err = ferror(f);
     free(all);
-    return atomic_file_close(f, tmp, path, !err);
+    return atomic_file_close(f, tmp, path, 1);   /* a failed write (a full disk) is found there and said, with its reason */
 }
 
 char *html_escape(const char *text)

@@ -78,7 +78,7 @@ int atomic_file_commit(FILE *f, const char *tmp, const char *path, int ok)
 {
     int err = 0;
     if (ok && fflush(f) != 0) err = errno;
-    if (ok && !err && ferror(f)) err = EIO;
+    if (ok && !err && ferror(f)) err = errno ? errno : EIO;   /* the failed write's reason (ENOSPC), when still there */
     if (fclose(f) != 0 && ok && !err) err = errno;
     interrupt_hold();
     if (ok && !err && rename(tmp, path) != 0) err = errno;
@@ -86,6 +86,7 @@ int atomic_file_commit(FILE *f, const char *tmp, const char *path, int ok)
     interrupt_temp_remove(tmp);
     interrupt_release();
     if (ok && err) fprintf(stderr, "%s: cannot write: %s\n", path, strerror(err));
+    if (ok && err) errno = err;   /* for the caller's own words (a report's row) */
     return (ok && !err) ? 0 : 1;
 }
 

@@ -20,10 +20,10 @@
 static int parse_alpha(void *ctx, const char *flag, const char *v)
 {
     float *alpha = ctx;
-    const cli_flag f = {flag, CLI_FLOAT, alpha, 0, 0, NULL, NULL, NULL};
-    if (cli_parse_value("grade", &f, v, NULL)) return 1;
-    if (*alpha > 0.0f && *alpha < 0.5f) return 0;
-    return cli_fail("grade", flag, "a level in (0, 0.5)", v);
+    char *end;
+    double a = strtod(v, &end);   /* nan, inf and 1e99 get this message too, not a float's range */
+    if (end != v && !*end && a > 0.0 && a < 0.5 && (float)a > 0.0f && (float)a < 0.5f) { *alpha = (float)a; return 0; }
+    return cli_fail("grade", flag, "a level in (0, 0.5), e.g. 0.01", v);
 }
 
 /* The outputs' names, then where they go: the folder exists and can be written. */

@@ -173,7 +173,7 @@ static int render_and_write(render_args *a, render_plan *p, const scene *s, cons
         return rc == 1 ? 0 : 2;
     }
     interrupt_install();   /* from here, a first Ctrl-C stops after the pass and writes what it reached */
-    if (p->adaptive ? adaptive_render(s, cam, &p->ro, &p->ao, &r, &ar) : render(s, cam, &p->ro, &r)) { render_files_free(&prev); return 1; }
+    if (p->adaptive ? adaptive_render(s, cam, &p->ro, &p->ao, &r, &ar) : render(s, cam, &p->ro, &r)) { render_files_free(&prev); return 2; }   /* out of memory: said */
     if (!p->ro.quiet && p->adaptive) adaptive_print_summary(&ar, r.seconds);
     else if (!p->ro.quiet) render_print_stats(&r, r.spp, cam->width * cam->height);
     err = finish_meta(&m, a, p, &r, &prev, &ar) || (prev.nlayers && resume_combine(&prev, sidecar_spp(&prev.meta), &r));
@@ -184,7 +184,7 @@ static int render_and_write(render_args *a, render_plan *p, const scene *s, cons
     render_result_free(&r);
     render_files_free(&prev);
     adaptive_result_free(&ar);
-    return err ? 1 : rc;
+    return err ? 2 : rc;   /* a write failed: said, with the file and the system's reason */
 }
 
 int render_main(int argc, char **argv)

@@ -62,9 +62,9 @@ int view_setup_check(const view_setup *v, const char *cmd)
 {
     const view *f = &v->flags;
     char value[64];
-    if (v->fov && !(f->fov > 0.0f && f->fov < 180.0f)) {
+    if (v->fov && !(f->fov >= (float)VIEW_FOV_MIN && f->fov < 180.0f)) {
         snprintf(value, sizeof value, "%g", f->fov);
-        return cli_fail(cmd, "--fov", "a vertical field of view in degrees, more than 0 and less than 180 (e.g. 40)", value);
+        return cli_fail(cmd, "--fov", "a vertical field of view in degrees, from 0.01 to less than 180 (e.g. 40)", value);
     }
     if (v->up && !(v3_length(f->up) > 0.0f)) return cli_fail(cmd, "--up", "a direction, not 0,0,0", "0,0,0");
     if (v->eye && v->target && !(v3_length(v3_sub(f->target, f->eye)) > 0.0f)) {

@@ -59,7 +59,7 @@ static int parse_view_line(view *vw, char *line, int lineno)
         else { vw->up = v3((float)f[0], (float)f[1], (float)f[2]); vw->line_up = lineno; }
     } else if (!strcmp(key, "fov")) {
         if ((rc = read_floats(line, f, 1))) return rc;
-        if (!(f[0] > 0 && f[0] < 180)) return 4;
+        if (!(f[0] >= VIEW_FOV_MIN && f[0] < 180)) return 4;
         vw->fov = (float)f[0];
         vw->line_fov = lineno;
     } else if (!strcmp(key, "size")) {
@@ -105,7 +105,8 @@ static void view_error(const char *path, int lineno, int rc, const char *line)
         "", "bad values (eye/target/up take 3 numbers, fov 1, size 2 whole numbers)",
         "unknown key (expected eye, target, up, fov or size)",
         "a number too large for a float (the largest is 3.4e38)",
-        "fov must be between 0 and 180 degrees (exclusive)", "", "a NUL byte: not a text file", "",
+        "fov must be from 0.01 (below it, neighbouring pixels' rays are one float direction) to 180 degrees (exclusive)", "",
+        "a NUL byte: not a text file", "",
         "out of memory"};
     fprintf(stderr, "%s:%d: ", path, lineno);
     if (rc == 5) {   /* the numbers as written, after the key (at most 40 characters of them) */
@@ -185,7 +186,7 @@ static int say(const view *vw, int line, const char *fmt, ...)
 static const char *origin(int line, char *buf, size_t cap)
 {
     if (line > 0) snprintf(buf, cap, "line %d", line);
-    else snprintf(buf, cap, "not from the view file");
+    else snprintf(buf, cap, "flag, orbiter or default");
     return buf;
 }
 
@@ -207,7 +208,12 @@ static int check_directions(const view *vw)
     if (!(lf <= FLT_MAX))
         return say(vw, line, "eye (%s) and target (%s) are too far apart for float arithmetic (%.3g)",
                    origin(vw->line_eye, a, sizeof a), origin(vw->line_target, b, sizeof b), lf);
+    if (lf < 1e-18)   /* its square, in the float normalisation, would be 0 */
+        return say(vw, line, "eye (%s) and target (%s) are too close for float arithmetic (%.3g apart; at least 1e-18)",
+                   origin(vw->line_eye, a, sizeof a), origin(vw->line_target, b, sizeof b), lf);
     if (!(lu > 0)) return say(vw, vw->line_up, "up is (0, 0, 0)");
+    if (lu < 1e-18 || !(lu <= FLT_MAX)) return say(vw, vw->line_up, "up %g %g %g: too short or too long for float arithmetic (a length "
+                                                   "from 1e-18 to 3.4e38)", u[0], u[1], u[2]);
     if (!(lx > 1e-6 * lf * lu))
         return say(vw, vw->line_up > line ? vw->line_up : line, "up %g %g %g (%s) is parallel to the view direction, from "
                    "eye (%s) to target (%s)", u[0], u[1], u[2], origin(vw->line_up, c, sizeof c),
@@ -219,8 +225,9 @@ int camera_init(camera *c, const view *vw)
 {
     float th;
     vec3 fwd, side;
-    if (!(vw->fov > 0.0f && vw->fov < 180.0f))
-        return say(vw, vw->line_fov, "fov %g: must be between 0 and 180 degrees (exclusive)", vw->fov);
+    if (!(vw->fov >= (float)VIEW_FOV_MIN && vw->fov < 180.0f))
+        return say(vw, vw->line_fov, "fov %g: must be from %g (below it, neighbouring pixels' rays are one float direction) to "
+                   "180 degrees (exclusive)", vw->fov, VIEW_FOV_MIN);
     if (vw->width < 1 || vw->height < 1 || vw->width > VIEW_SIZE_MAX || vw->height > VIEW_SIZE_MAX ||
         (double)vw->width * vw->height > VIEW_PIXELS_MAX)
         return say(vw, vw->line_size, "image size %dx%d is out of range (1 to %d pixels a side, at most %.0e pixels)",

@@ -10,6 +10,7 @@
 
 #define VIEW_SIZE_MAX 65536    /* pixels on a side */
 #define VIEW_PIXELS_MAX 1e9     /* pixels in all */
+#define VIEW_FOV_MIN 0.01       /* degrees: below it, neighbouring pixels' rays are one float direction */
 
 typedef struct {
     vec3 eye, target, up;

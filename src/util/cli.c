@@ -50,7 +50,8 @@ static const char *float_of(const char *s, float *out)
     char *end;
     double v = strtod(s, &end);
     if (end == s || *end) return "a number";
-    if (!(fabs(v) <= FLT_MAX)) return "a number between -3.4e38 and 3.4e38";   /* not nan, inf or beyond a float */
+    if (isnan(v)) return "a number, not nan";
+    if (!(fabs(v) <= FLT_MAX)) return "a number between -3.4e38 and 3.4e38";   /* not inf or beyond a float */
     *out = (float)v;
     return NULL;
 }

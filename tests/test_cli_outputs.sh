@@ -54,6 +54,6 @@ pid=$!
 sleep 0.3; mkdir "$TMP/set/b_var_L2.pfm"
 wait $pid; rc=$?
 left=$(cd "$TMP/set" && ls | grep -v '^b_var_L2.pfm$' | tr '\n' ' ')
-if [ "$rc" -eq 1 ] && [ -z "$left" ]; then pass "a layer that cannot be written: status 1 and none of the 20 files written"
+if [ "$rc" -eq 2 ] && [ -z "$left" ]; then pass "a layer that cannot be written: status 2 and none of the 20 files written"
 else fail "a layer that cannot be written: status $rc, written: $left"; fi
 exit 0

@@ -1,11 +1,13 @@
 /* view_images.c — the images of a viewer page read with what lies beside them (view_images.h). */
 #include "compare/view_images.h"
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 #include "files/render_files.h"
 #include "files/sidecar.h"
+#include "sys/input_file.h"
 #include "sys/output_path.h"
 #include "util/path.h"
 
@@ -22,7 +24,8 @@ static int read_sized(image *im, const char *path, const char **first, const ima
     return 2;
 }
 
-/* The variance of the image at path: STEM_var.pfm beside it, else the one its sidecar names (an
+/* The variance of the image at path: STEM_var.pfm beside it (a regular file in its folder: a link
+ * planted there to a teacher's file is refused), else the one its sidecar names (an
  * input confined to the image's folder, whose own sidecar says it is this image's variance:
  * render_files_named_variance). 1 if found, 0 if none, 2 after printing why it is refused. */
 static int variance_of(const char *path, char *out, size_t cap)
@@ -30,8 +33,14 @@ static int variance_of(const char *path, char *out, size_t cap)
     size_t n = strlen(path), stem = n > 4 && !strcmp(path + n - 4, ".pfm") ? n - 4 : n;
     sidecar m;
     int rc;
-    snprintf(out, cap, "%.*s_var.pfm", (int)stem, path);
-    if (exists(out)) return 1;
+    const char *name = path_file_name(path), *why;
+    char beside[PATH_CAP];
+    snprintf(beside, sizeof beside, "%.*s_var.pfm", (int)(stem - (size_t)(name - path)), name);
+    if (!(why = input_file_beside(out, cap, path, beside))) return 1;   /* in the image's folder: no link leading out */
+    if (errno != ENOENT) {
+        fprintf(stderr, "pathlab view: %s: %s\n", out, why);
+        return 2;
+    }
     if ((rc = sidecar_read(&m, path)) > 0) return 2;
     if (rc < 0) return 0;
     rc = render_files_named_variance(out, cap, path, &m, "view");

@@ -5,7 +5,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#define NSLOTS 4
+#define NSLOTS 6
 static char dir[4096];
 static char paths[NSLOTS][4096 + 64];
 static const char *names[NSLOTS];   /* what each slot last held, to be removed at exit */

@@ -10,7 +10,7 @@
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 /* Writes n bytes to the file name (no '/') of the private folder and returns its path (static
- * storage, one per name slot 0..3); aborts if the folder or the file cannot be written, since a
+ * storage, one per name slot 0..5); aborts if the folder or the file cannot be written, since a
  * harness that silently tests nothing would look like a clean run. */
 const char *fuzz_write(int slot, const char *name, const uint8_t *data, size_t n);
 /* The path that name would have in the private folder (slot as above), without writing it;

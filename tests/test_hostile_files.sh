@@ -1,0 +1,107 @@
+#!/usr/bin/env bash
+# A class's files cannot attack the teacher who grades them:
+#  - a name read from a sidecar (the variance of FILE.pfm.meta) is an input: resolved against the
+#    image's folder and confined to it (no absolute path, no "..", no link leading out), a regular
+#    file whose own sidecar says it is this image's variance (samples, seed, scene, size), and it is
+#    never written: view, merge and render --resume refuse it (exit 2, saying why) and leave the
+#    teacher's files as they were; --resume rewrites only STEM_var.pfm beside -o or --variance;
+#  - a sidecar that lies about the size of its image, or a FIFO named FILE.pfm.meta, is refused at once;
+#  - grade compares a PFM's header (channels, size) with the reference's before reading its pixels:
+#    a sparse 1 GiB greyscale file is refused in a blink, without gigabytes of memory;
+#  - sidecar numbers are bounded as the command line bounds them (indices 2^62, counts 2^30): the
+#    resume arithmetic never overflows, and the sidecar it writes reads back;
+#  - a page that cannot be written says why, exit 2; odd camera numbers get messages that say what is wrong.
+. "$(dirname "$0")/lib.sh"
+S=$PWD/scenes/cornell.obj
+P=$PATHLAB; case $P in /*) ;; *) P=$PWD/$PATHLAB ;; esac
+cd "$TMP" || exit 0
+r() { $P render "$S" --size 16x16 --sampler independent --quiet "$@"; }
+mkdir teacher stu other
+r --spp 4 -o teacher/ref.pfm --variance teacher/ref_var.pfm || { fail "hostile files: the first render failed"; exit 0; }
+r --spp 4 --seed 3 -o stu/a.pfm --variance stu/a_var.pfm
+r --spp 4 --seed 9 -o stu/c.pfm --variance stu/c_var.pfm
+sums() { md5sum teacher/* | md5sum; }
+before=$(sums)
+# forge NAME VARIANCE: stu/NAME.pfm, a copy of stu/a.pfm whose sidecar names VARIANCE
+forge() { cp stu/a.pfm "stu/$1.pfm"; sed "s|^variance .*|variance $2|" stu/a.pfm.meta > "stu/$1.pfm.meta"; }
+ln -s ../teacher/ref_var.pfm stu/link_var.pfm
+ln -s ../teacher/ref_var.pfm stu/planted_var.pfm; cp stu/a.pfm stu/planted.pfm
+ln -s ../teacher stu/sub
+mkfifo stu/f.pfm stu/fifo2.pfm.meta
+mkdir stu/dir.pfm
+forge abs "$TMP/teacher/ref_var.pfm"; forge up ../teacher/ref_var.pfm; forge link link_var.pfm; forge sub sub/ref_var.pfm
+forge fifo f.pfm; forge dir dir.pfm; forge dev /dev/zero; forge seed c_var.pfm; forge mean a.pfm
+for c in "abs:an absolute path" "up:a path with '..'" "link:outside the image's folder" "sub:outside the image's folder" \
+         "fifo:not a regular file" "dir:a folder, not a file" "dev:an absolute path" "seed:seed differs" "mean:expected a variance"; do
+    n=${c%%:*}; why=${c#*:}
+    expect_status "view: a sidecar naming its variance '$n': refused, exit 2, no hang" 2 timeout 10 $P view stu/$n.pfm -o $n.html
+    expect_err "view: a sidecar naming its variance '$n': says why" "$why"
+    expect_no_file "view: a sidecar naming its variance '$n': no page" $n.html
+done
+expect_status "view: a link STEM_var.pfm beside the image leading to the teacher's variance: refused" 2 $P view stu/planted.pfm -o p.html
+expect_err "view: says the link leads out" "planted_var.pfm: outside the image's folder"
+cp stu/a.pfm stu/fifo2.pfm
+expect_status "view: a FIFO named FILE.pfm.meta: refused at once" 2 timeout 10 $P view stu/fifo2.pfm -o f2.html
+expect_status "view: a sidecar naming its own variance by its bare name: shown" 0 $P view stu/a.pfm -o a.html
+cp stu/a.pfm stu/renamed.pfm; cp stu/a.pfm.meta stu/renamed.pfm.meta
+expect_status "view: the variance found through the sidecar of a renamed image" 0 $P view stu/renamed.pfm -o r.html
+if grep -q '"sd":"pathlab-sd-0"' r.html; then pass "view: that variance is on the page"; else fail "view: the variance named by the sidecar is missing"; fi
+ln -s "$TMP/stu" linked
+expect_status "view: an image in a symlinked folder finds its own variance" 0 $P view linked/renamed.pfm -o l.html
+# render --resume: the variance rewritten is the one the command line names
+cp teacher/ref.pfm stu/s.pfm; sed "s|^variance .*|variance $TMP/teacher/ref_var.pfm|" teacher/ref.pfm.meta > stu/s.pfm.meta
+expect_status "resume: a sidecar naming the teacher's variance by its path: refused" 2 r --spp 8 --resume -o stu/s.pfm
+expect_err "resume: says the name is refused" "s.pfm.meta names its variance .*an absolute path"
+forge t "a_var.pfm"
+expect_status "resume: a sidecar naming another file of its folder as the variance to update: refused" 2 r --spp 8 --seed 3 --resume -o stu/t.pfm
+expect_err "resume: says which variance --resume rewrites" "rewrites is the one the command line names: stu/t_var.pfm beside -o, or --variance"
+[ "$(sums)" = "$before" ] && pass "resume and view: the teacher's files untouched" || fail "resume and view: the teacher's files changed"
+r --spp 4 -o other/y.pfm --variance other/yv.pfm
+expect_status "resume: a variance of another name, given with --variance: updated" 0 r --spp 8 --resume -o other/y.pfm --variance other/yv.pfm
+grep -q "^samples 0:8" other/yv.pfm.meta && pass "resume: --variance holds the 8 samples" || fail "resume: --variance not updated"
+r --spp 4 -o other/x.pfm --variance other/x_var.pfm
+expect_status "resume: STEM_var.pfm beside -o updated without naming it" 0 r --spp 8 --resume -o other/x.pfm
+grep -q "^samples 0:8" other/x_var.pfm.meta && pass "resume: STEM_var.pfm holds the 8 samples" || fail "resume: STEM_var.pfm not updated"
+# a sidecar that lies about its image's size (an 8x8 image said to be 16x16): refused before combining
+$P render "$S" --size 8x8 --spp 4 --sampler independent --quiet -o other/w.pfm --variance other/w_var.pfm
+sed -i 's|size 8x8|size 16x16|' other/w.pfm.meta other/w_var.pfm.meta
+expect_status "resume: an 8x8 image whose sidecar says 16x16: refused" 2 r --spp 8 --resume -o other/w.pfm
+expect_err "resume: says the sizes differ" "other/w.pfm is 8x8, but its render is 16x16"
+# numbers near INT64_MAX: refused as the command line refuses them; at the bound, no overflow
+r --samples 0:4 -o other/n.pfm --variance other/n_var.pfm
+sed -i 's|^samples .*|samples 0:2,9223372036854775805:9223372036854775807|' other/n.pfm.meta other/n_var.pfm.meta
+expect_status "resume: sample ranges near INT64_MAX: refused" 2 r --spp 10 --resume -o other/n.pfm
+expect_err "resume: says the index is beyond 2^62" "n.pfm.meta:[0-9]+: a sample index beyond 2\^62"
+sed -i 's|^samples .*|samples 0:2,4611686018427387900:4611686018427387902|' other/n.pfm.meta other/n_var.pfm.meta
+expect_status "resume: samples up to 2^62 - 2, 6 more: refused (they would pass 2^62)" 2 r --spp 10 --resume -o other/n.pfm
+expect_err "resume: says the new indices would pass 2^62" "6 more would pass 2\^62"
+sed -i 's|^samples .*|samples 0:2,4611686018427387896:4611686018427387898|' other/n.pfm.meta other/n_var.pfm.meta
+expect_status "resume: samples up to 2^62 - 6, 6 more: done" 0 r --spp 10 --resume -o other/n.pfm
+expect_status "merge: the resumed sidecar reads back" 0 $P merge other/m.pfm other/n.pfm
+# grade: the header first
+printf 'Pf\n16384 16384\n-1\n' > big.pfm && truncate -s $((18 + 16384 * 16384 * 4)) big.pfm
+start=$(date +%s%N)
+expect_status "grade: a sparse 1 GiB greyscale PFM against a colour reference: refused" 2 \
+    bash -c "ulimit -v 400000; exec $P grade big.pfm --ref teacher/ref.pfm"
+ms=$(( ($(date +%s%N) - start) / 1000000 ))
+expect_err "grade: says greyscale against colour" 'greyscale \("Pf", 1 channel\) against a colour reference'
+[ "$ms" -lt 5000 ] && pass "grade: the sparse PFM refused in $ms ms under a 400 MB memory limit" || fail "grade: the sparse PFM took $ms ms"
+printf 'PF\n16384 16384\n-1\n' > big3.pfm && truncate -s $((18 + 16384 * 16384 * 12)) big3.pfm
+expect_status "grade: a sparse 3 GiB colour PFM of another size: a fail, unread" 1 \
+    bash -c "ulimit -v 400000; exec $P grade big3.pfm --ref teacher/ref.pfm"
+mkfifo ref_fifo.pfm.meta; cp teacher/ref.pfm ref_fifo.pfm
+expect_status "grade: a FIFO as the reference's sidecar: no hang" 0 timeout 10 $P grade stu/a.pfm --ref ref_fifo.pfm
+# errors that say what is wrong
+printf 'eye 278 273 -800\ntarget 278 273 0\nup 0 1 0\nfov 1e-40\nsize 8 8\n' > tiny.view
+expect_status "view file fov 1e-40: refused" 2 r --spp 1 --view tiny.view -o v.pfm
+expect_err "view file fov 1e-40: says the fov's range" "tiny.view:4: fov must be from 0.01"
+expect_status "--fov 1e-40: refused" 2 r --spp 1 --fov 1e-40 -o v.pfm
+expect_err "--fov 1e-40: says the fov's range" "fov expects a vertical field of view in degrees, from 0.01"
+printf 'c 0 0 0\np 0 0\nr 0 0\ns 1e-30 1e-30\nf 45 8 8\n' > tiny.txt
+expect_status "orbiter s 1e-30: refused" 2 r --spp 1 --orbiter tiny.txt -o v.pfm
+expect_err "orbiter s 1e-30: says eye and target are too close" "too close for float arithmetic"
+expect_status "--alpha nan: refused" 2 $P grade stu/a.pfm --ref teacher/ref.pfm --alpha nan
+expect_err "--alpha nan: says what a level is" "a level in \(0, 0.5\)"
+expect_status "render out of memory: exit 2" 2 bash -c "ulimit -v 1000000; exec $P render $S --size 31622x31622 --spp 1 --quiet -o big.pfm"
+expect_err "render out of memory: says so" "out of memory for a 31622x31622 image"
+exit 0

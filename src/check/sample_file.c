@@ -1,5 +1,7 @@
 /* sample_file.c — reading a student's `x y z [pdf]` file (sample_file.h). */
 #include "check/sample_file.h"
+#include "sys/input_file.h"
+#include <errno.h>
 #include <ctype.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -89,10 +91,10 @@ int sample_file_read(const char *path, sample_file *s, char *err, int errlen)
     double v[6];
     long ln = 0, cap = 0, first = 0;
     int ncols = 0, rc = 0;
-    FILE *f = fopen(path, "r");
+    FILE *f = input_file_open(path, 1);   /* a FIFO, a device or a folder: refused at once, never a hang */
     memset(s, 0, sizeof *s);
     if (!f) {
-        snprintf(err, (size_t)errlen, "%s: cannot open it", path);
+        snprintf(err, (size_t)errlen, "%s: cannot open it: %s", path, input_file_why(errno));
         return 1;
     }
     while (!rc && fgets(buf, sizeof buf, f)) {

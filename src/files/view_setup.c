@@ -3,11 +3,14 @@
 #include "files/view_setup.h"
 #include "image/image.h"
 #include "scene/orbiter.h"
+#include "sys/input_file.h"
 #include "sys/output_path.h"
 #include "util/cli.h"
 #include "util/textfile.h"
 #include <stdio.h>
 #include <string.h>
+#include <errno.h>
+#include <sys/stat.h>
 
 /* --orbiter FILE into v->vw; 0, or 1 after printing why. An old file without an f line leaves fov
  * and size to the flags or the defaults, which may not be what the student's program used. */
@@ -28,6 +31,7 @@ static int read_orbiter(view_setup *v, const char *cmd)
 static int base_view(view_setup *v, const char *cmd, const char *scene_path)
 {
     char path[PATH_CAP];
+    struct stat st;
     size_t n = strlen(scene_path) - strlen(img_extension(scene_path));
     int rc;
     view_defaults(&v->vw);
@@ -40,6 +44,10 @@ static int base_view(view_setup *v, const char *cmd, const char *scene_path)
     if (n + 6 < sizeof path) {
         memcpy(path, scene_path, n);
         strcpy(path + n, ".view");
+        if (!stat(path, &st) && !S_ISREG(st.st_mode)) {   /* found beside a student's scene: a FIFO there reads as empty */
+            fprintf(stderr, "%s: cannot open: %s\n", path, input_file_why(S_ISDIR(st.st_mode) ? EISDIR : ENODEV));
+            return 1;
+        }
         if (view_read(&v->vw, path) > 0) return 1;
     }
     return 0;

@@ -7,6 +7,7 @@
 #include "scene/obj.h"
 #include "scene/mtl.h"
 #include "scene/objtext.h"
+#include "sys/input_file.h"
 #include <errno.h>
 #include <limits.h>
 #include <stdint.h>
@@ -452,7 +453,7 @@ int obj_load(const char *path, mesh *m, int quiet)
     L.m = m;
     L.obj = &t;
     if ((err = objtext_open(&t, path, quiet)))
-        fprintf(stderr, "%s: cannot open: %s\n", path, strerror(err));
+        fprintf(stderr, "%s: cannot open: %s\n", path, input_file_why(err));
     else
         ok = objtext_check(&t) && parse(&L);
     objtext_close(&t);

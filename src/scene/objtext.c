@@ -19,8 +19,8 @@ static int is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == 
  * Reading stops after a chunk with a NUL byte: objtext_check refuses the file anyway, and
  * /dev/zero or a binary would otherwise be read whole (or forever). With max > 0 the file must be
  * a regular one of at most max bytes: opened without blocking (a FIFO swapped in after the
- * caller's checks must not hang the reader) and read no further than max + 1 bytes. Any file is
- * opened without blocking: a FIFO with no writer reads as empty instead of hanging. */
+ * caller's checks must not hang the reader) and read no further than max + 1 bytes. Any file must
+ * be a regular one (ENODEV, EISDIR otherwise): a scene is a file, never a FIFO or a device. */
 int objtext_open_bounded(objtext *t, const char *path, int quiet, size_t max)
 {
     FILE *f;
@@ -30,7 +30,7 @@ int objtext_open_bounded(objtext *t, const char *path, int quiet, size_t max)
     memset(t, 0, sizeof *t);
     t->path = path;
     t->quiet = quiet;
-    if (!(f = input_file_open(path, max > 0))) return errno;
+    if (!(f = input_file_open(path, 1))) return errno;   /* a FIFO, a device or a folder: refused at once */
     for (;;) {
         if (!(bigger = realloc(buf, cap + 1))) { err = ENOMEM; break; } /* +1: the final NUL */
         buf = bigger;

@@ -56,5 +56,5 @@ int convert_main(int argc, char **argv)
     print_figures(&im, path[0]);
     err = img_write(&im, path[1], exposure);
     img_free(&im);
-    return err ? 1 : 0;
+    return err ? 2 : 0;   /* a failed write: said, with the file and the system's reason */
 }

@@ -41,8 +41,8 @@ static int read_pair(image im[2], const char *const path[2])
     return 1;
 }
 
-/* One image against the reference: the metrics and, if asked, the heatmap; 0, 1 (heatmap not
- * written) or 2 (bad input). */
+/* One image against the reference: the metrics and, if asked, the heatmap; 0, or 2 (bad input, or
+ * the heatmap not written: said why). */
 static int diff_one(const char *image_path, const char *ref_path, const char *heat, float scale)
 {
     const char *path[2];
@@ -57,9 +57,9 @@ static int diff_one(const char *image_path, const char *ref_path, const char *he
         rc = 2;
     } else {
         print_stats(&s);
-        if (heat && img_heatmap(&hm, &im[0], &im[1], scale)) rc = 1;
+        if (heat && img_heatmap(&hm, &im[0], &im[1], scale)) rc = 2;
         else if (heat) {
-            if (img_write(&hm, heat, 0.0f)) rc = 1;
+            if (img_write(&hm, heat, 0.0f)) rc = 2;
             img_free(&hm);
         }
     }

@@ -1,6 +1,7 @@
 /* render_files.c — a render's files and their sidecars, written and read back. */
 #include "files/render_files.h"
 #include "render/render.h"
+#include "sys/atomic_file.h"
 #include "sys/input_file.h"
 #include "sys/interrupt.h"
 #include "sys/output_path.h"
@@ -88,7 +89,7 @@ static const char *stage(file_set *fs, const char *final)
         fs->cap = cap;
     }
     fs->final[fs->n] = malloc(len + 1);
-    fs->pending[fs->n] = malloc(len + sizeof ".pending");
+    fs->pending[fs->n] = malloc(len + sizeof ATOMIC_FILE_STAGED);
     if (!fs->final[fs->n] || !fs->pending[fs->n]) {
         free(fs->final[fs->n]);
         free(fs->pending[fs->n]);
@@ -97,7 +98,7 @@ static const char *stage(file_set *fs, const char *final)
     }
     memcpy(fs->final[fs->n], final, len + 1);
     memcpy(fs->pending[fs->n], final, len);
-    memcpy(fs->pending[fs->n] + len, ".pending", sizeof ".pending");
+    memcpy(fs->pending[fs->n] + len, ATOMIC_FILE_STAGED, sizeof ATOMIC_FILE_STAGED);   /* messages name the final file */
     interrupt_hold();
     interrupt_temp_add(fs->pending[fs->n]);
     interrupt_release();

@@ -2,9 +2,11 @@
 #include "grade/grade_class.h"
 #include "grade/grade_page.h"
 #include "files/sidecar.h"
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 #include "image/radiance.h"
 #include "sys/input_file.h"
 #include "sys/output_path.h"
@@ -111,8 +113,12 @@ static int wrong_size(grade_row *row, int w, int h, const grade_refs *refs, cons
 
 static int unreadable(grade_row *row)
 {
-    snprintf(row->mistake, sizeof row->mistake, "not a readable PFM: missing, byte order, header line ends, truncated or "
-             "trailing bytes (pathlab's message on stderr says which)");
+    struct stat st;
+    if (stat(row->path, &st) == 0 && !S_ISREG(st.st_mode))   /* a FIFO, a device, a folder: said in the row too */
+        snprintf(row->mistake, sizeof row->mistake, "%s: not a PFM", input_file_why(S_ISDIR(st.st_mode) ? EISDIR : ENODEV));
+    else
+        snprintf(row->mistake, sizeof row->mistake, "not a readable PFM: missing, byte order, header line ends, truncated or "
+                 "trailing bytes (pathlab's message on stderr says which)");
     return row->status = 2;
 }
 

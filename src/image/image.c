@@ -104,7 +104,7 @@ static int write_rows(const image *im, const char *path, const char *header, siz
         encode(im->px + (size_t)src_y * im->w * 3, im->w, row, gain);
         ok = fwrite(row, 1, row_bytes, f) == row_bytes;
     }
-    if (!ok) fprintf(stderr, "%s: cannot write: %s\n", path, strerror(errno));
+    if (!ok) fprintf(stderr, "%s: cannot write: %s\n", atomic_file_shown(path), strerror(errno));
     free(row);
     return atomic_file_close(f, tmp, path, ok);
 }
@@ -533,7 +533,7 @@ int img_write_png(const image *im, const char *path, float exposure)
         return 1;
     }
     ok = png_write_rgb8(f, rgb, im->w, im->h) == 0;
-    if (!ok) fprintf(stderr, "%s: cannot write: %s\n", path, strerror(errno));
+    if (!ok) fprintf(stderr, "%s: cannot write: %s\n", atomic_file_shown(path), strerror(errno));
     free(rgb);
     return atomic_file_close(f, tmp, path, ok);
 }

@@ -5,6 +5,7 @@
  * signal. */
 #include "sys/atomic_file.h"
 #include "sys/interrupt.h"
+#include "sys/output_path.h"
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -13,6 +14,16 @@
 #include <unistd.h>
 
 #define TMP_SUFFIX ".tmp.XXXXXX"
+
+const char *atomic_file_shown(const char *path)
+{
+    static char shown[PATH_CAP];
+    size_t n = strlen(path), k = strlen(ATOMIC_FILE_STAGED);
+    if (n <= k || strcmp(path + n - k, ATOMIC_FILE_STAGED) || n - k >= sizeof shown) return path;
+    memcpy(shown, path, n - k);
+    shown[n - k] = '\0';
+    return shown;
+}
 
 /* The permissions fopen would have given the file: 0666 minus the umask. mkstemp creates files
  * 0600, which would make every image private. umask can only be read by setting it, so this is
@@ -33,11 +44,11 @@ static int target_mode(const char *path, mode_t *mode)
     if (lstat(path, &st) != 0) return 1;              /* a new file */
     if (S_ISLNK(st.st_mode)) return 1;                /* the rename replaces the link itself */
     if (!S_ISREG(st.st_mode)) {
-        fprintf(stderr, "%s: exists and is not a regular file: not replaced\n", path);
+        fprintf(stderr, "%s: exists and is not a regular file: not replaced\n", atomic_file_shown(path));
         return 0;
     }
     if (!(st.st_mode & S_IWUSR)) {
-        fprintf(stderr, "%s: is read-only: not replaced (chmod u+w it, or write elsewhere)\n", path);
+        fprintf(stderr, "%s: is read-only: not replaced (chmod u+w it, or write elsewhere)\n", atomic_file_shown(path));
         return 0;
     }
     *mode = st.st_mode & 07777;
@@ -50,7 +61,7 @@ FILE *atomic_file_create(const char *path, char *tmp, size_t cap)
     int fd;
     FILE *f;
     if (snprintf(tmp, cap, "%s" TMP_SUFFIX, path) >= (int)cap) {
-        fprintf(stderr, "%s: name too long\n", path);
+        fprintf(stderr, "%s: name too long\n", atomic_file_shown(path));
         return NULL;
     }
     if (!target_mode(path, &mode)) return NULL;
@@ -59,11 +70,11 @@ FILE *atomic_file_create(const char *path, char *tmp, size_t cap)
     if (fd >= 0) interrupt_temp_add(tmp);
     interrupt_release();
     if (fd < 0) {
-        fprintf(stderr, "%s: cannot create a temporary file beside it: %s\n", path, strerror(errno));
+        fprintf(stderr, "%s: cannot create a temporary file beside it: %s\n", atomic_file_shown(path), strerror(errno));
         return NULL;
     }
     if (fchmod(fd, mode) != 0 || !(f = fdopen(fd, "wb"))) {
-        fprintf(stderr, "%s: cannot write: %s\n", path, strerror(errno));
+        fprintf(stderr, "%s: cannot write: %s\n", atomic_file_shown(path), strerror(errno));
         close(fd);
         interrupt_hold();
         unlink(tmp);
@@ -85,7 +96,7 @@ int atomic_file_commit(FILE *f, const char *tmp, const char *path, int ok)
     if (!ok || err) unlink(tmp);
     interrupt_temp_remove(tmp);
     interrupt_release();
-    if (ok && err) fprintf(stderr, "%s: cannot write: %s\n", path, strerror(err));
+    if (ok && err) fprintf(stderr, "%s: cannot write: %s\n", atomic_file_shown(path), strerror(err));
     if (ok && err) errno = err;   /* for the caller's own words (a report's row) */
     return (ok && !err) ? 0 : 1;
 }
@@ -95,7 +106,7 @@ FILE *atomic_file_open(const char *path, char **tmp)
     size_t cap = strlen(path) + sizeof TMP_SUFFIX;
     FILE *f;
     if (!(*tmp = malloc(cap))) {
-        fprintf(stderr, "%s: out of memory\n", path);
+        fprintf(stderr, "%s: out of memory\n", atomic_file_shown(path));
         return NULL;
     }
     if (!(f = atomic_file_create(path, *tmp, cap))) {

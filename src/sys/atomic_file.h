@@ -15,6 +15,11 @@
 #include <stddef.h>
 #include <stdio.h>
 
+/* A set of files renamed together (a render's image, variance, layers and sidecars: render_files.c)
+ * is first written to "FINAL" ATOMIC_FILE_STAGED; a message about such a file names FINAL, the file
+ * the user asked for: atomic_file_shown(path) is path without that suffix (static storage). */
+#define ATOMIC_FILE_STAGED ".pending"
+const char *atomic_file_shown(const char *path);
 FILE *atomic_file_create(const char *path, char *tmp, size_t cap);
 int atomic_file_commit(FILE *f, const char *tmp, const char *path, int ok);
 FILE *atomic_file_open(const char *path, char **tmp);

@@ -400,23 +400,30 @@ static int check_byte_order(const unsigned char *data, size_t n, const pfm_heade
     return 0;
 }
 
-static void decode_pfm(image *im, const unsigned char *data, const pfm_header *hd)
+/* The pixel data, read into the image's own buffer (data == im->px), made the image in place: rows
+ * turned top to bottom, values to native floats, and Pf's one channel spread to R, G and B from the
+ * last pixel back (pixel i's three floats start at 12 i, past the 4 i of every value not yet
+ * spread). No second buffer: a reader allocates only the image it returns. */
+static void decode_pfm(image *im, unsigned char *data, const pfm_header *hd)
 {
-    size_t x, y, c, w = (size_t)hd->w, h = (size_t)hd->h;
-    for (y = 0; y < h; y++) {
-        const unsigned char *src = data + (h - 1 - y) * w * hd->channels * 4;  /* bottom row first */
-        float *dst = im->px + y * w * 3;
-        for (x = 0; x < w; x++)
-            for (c = 0; c < 3; c++)
-                dst[3 * x + c] = get_f32(src + 4 * (x * hd->channels + (hd->channels == 3 ? c : 0)),
-                                         hd->big_endian);
+    size_t x, y, i, w = (size_t)hd->w, h = (size_t)hd->h, row = w * (size_t)hd->channels * 4, n = w * h;
+    for (y = 0; y < h / 2; y++) {   /* bottom row first in the file */
+        unsigned char *a = data + y * row, *b = data + (h - 1 - y) * row, t;
+        for (x = 0; x < row; x++) t = a[x], a[x] = b[x], b[x] = t;
     }
+    if (hd->channels == 3)
+        for (i = 0; i < 3 * n; i++) im->px[i] = get_f32(data + 4 * i, hd->big_endian);
+    else
+        for (i = n; i-- > 0;) {
+            float v = get_f32(data + 4 * i, hd->big_endian);
+            im->px[3 * i] = im->px[3 * i + 1] = im->px[3 * i + 2] = v;
+        }
 }
 
 int img_read_pfm_info(image *im, const char *path, img_pfm_info *info)
 {
     pfm_header hd;
-    unsigned char *data = NULL;
+    unsigned char *data;
     size_t need;
     long left;
     int err = 1;
@@ -436,11 +443,11 @@ int img_read_pfm_info(image *im, const char *path, img_pfm_info *info)
         truncated_error(path, &hd, need, (size_t)left);
         goto out;
     }
-    data = malloc(need);
-    if (!data || img_alloc(im, (int)hd.w, (int)hd.h)) {
+    if (img_alloc(im, (int)hd.w, (int)hd.h)) {
         fprintf(stderr, "%s: out of memory\n", path);
         goto out;
     }
+    data = (unsigned char *)im->px;   /* need <= its size: 4 bytes a value, 1 or 3 values a pixel */
     if (read_pixels(f, path, &hd, need, left, data) || check_byte_order(data, need / 4, &hd, path)) goto out;
     decode_pfm(im, data, &hd);
     if (info) {
@@ -452,8 +459,7 @@ int img_read_pfm_info(image *im, const char *path, img_pfm_info *info)
     }
     err = 0;
 out:
-    if (err) img_free(im);
-    free(data);
+    if (err) img_free(im);   /* data is its buffer */
     fclose(f);
     return err;
 }

@@ -62,8 +62,9 @@ expect_err "view: NUL byte: file:line" "v2.view:2: a NUL byte"
 render_t "view: /dev/zero as a view file ends at once" 10 2 $D/quad-light.obj --view /dev/zero -o "$OUT"
 F=$TMP/fifo; mkdir -p "$F"; cp $D/quad-light.obj $D/quad-light.mtl "$F/"
 if mkfifo "$F/quad-light.view" 2>/dev/null; then
-    render_t "view: a FIFO named SCENE.view (no writer) reads as empty instead of hanging" 10 0 "$F/quad-light.obj" \
+    render_t "view: a FIFO named SCENE.view (no writer) refused at once, not read as an empty view" 10 2 "$F/quad-light.obj" \
         --size 4x4 --spp 1 -o "$OUT"
+    expect_err "view: a FIFO named SCENE.view: says it is no regular file" "quad-light.view: cannot open: not a regular file"
 fi
 printf 'size 6 6\n' | render_t "view: --view reads a pipe" 30 0 $D/quad-light.obj --view /dev/stdin --spp 1 -o "$OUT" \
     --write-view "$TMP/w.view"
@@ -164,7 +165,7 @@ mtllib "a symlink inside the folder accepted" 0 in.mtl
 mtllib "an absolute path inside the folder accepted" 0 "$S/quad-light.mtl"
 mtllib "sub/../quad-light.mtl accepted" 0 sub/../quad-light.mtl
 render_t "OBJ: /dev/zero as the scene ends at once" 10 2 /dev/zero -o "$OUT"
-expect_err "OBJ: /dev/zero: not a text file" "/dev/zero:1: not a text file"
+expect_err "OBJ: /dev/zero: not a regular file" "/dev/zero: cannot open: not a regular file"
 
 # ---- ignored MTL keys: one line per file ----
 printf 'newmtl glass\nKd 0.1 0.1 0.1\nKa 0 0 0\nTf 1 1 1\nNi 1.5\nd 0.2\nillum 7\nnewmtl plane\nKd 0.5\nKa 0 0 0\nillum 2\nnewmtl light\nKe 10 10 10\n' > "$S/quad-light.mtl"

@@ -57,14 +57,18 @@ static void folder_of(char *dst, size_t cap, const char *p)
     snprintf(dst, cap, "%.*s", (int)(base_name(p) - p), p);
 }
 
-/* How a sidecar names the variance file: its bare name when it sits in the image's folder, so
- * that the pair can be moved together (to another machine, for merge); else the path as given. */
+/* How a sidecar names the variance file: its path from the image's folder when it sits in that
+ * folder or below ("ref_var.pfm", "vars/ref_var.pfm"), so that the pair can be moved together (to
+ * another machine, for merge) and the readers find it (they look nowhere else:
+ * render_files_variance_path); else the path as given, which the readers refuse, saying why. */
 static void variance_name(char *dst, size_t cap, const char *image_path, const char *var_path)
 {
-    char a[PATH_CAP], b[PATH_CAP];
+    char a[PATH_CAP];
+    size_t n;
     folder_of(a, sizeof a, image_path);
-    folder_of(b, sizeof b, var_path);
-    if (snprintf(dst, cap, "%s", strcmp(a, b) ? var_path : base_name(var_path)) >= (int)cap) dst[0] = '\0';   /* too long to name */
+    n = strlen(a);
+    if (strncmp(var_path, a, n) || strstr(var_path + n, "..")) n = 0;   /* not below the image's folder: as given */
+    if (snprintf(dst, cap, "%s", var_path + n) >= (int)cap) dst[0] = '\0';   /* too long to name */
 }
 
 /* The files of a render are written under temporary names (FILE.pending), then renamed together

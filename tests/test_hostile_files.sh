@@ -40,6 +40,10 @@ for c in "abs:an absolute path" "up:a path with '..'" "link:outside the image's 
 done
 expect_status "view: a link STEM_var.pfm beside the image leading to the teacher's variance: refused" 2 $P view stu/planted.pfm -o p.html
 expect_err "view: says the link leads out" "planted_var.pfm: outside the image's folder"
+cp stu/a.pfm stu/lay.pfm; sed 's|^variance .*|variance a_var.pfm|; $a layers 1:1' stu/a.pfm.meta > stu/lay.pfm.meta
+ln -s ../teacher/ref.pfm stu/lay_L1.pfm
+expect_status "view: a layer beside the image that links to the teacher's reference: refused" 2 $P view stu/lay.pfm -o lay.html
+expect_err "view: says the layer leads out" "lay_L1.pfm: outside the image's folder"
 cp stu/a.pfm stu/fifo2.pfm
 expect_status "view: a FIFO named FILE.pfm.meta: refused at once" 2 timeout 10 $P view stu/fifo2.pfm -o f2.html
 expect_status "view: a sidecar naming its own variance by its bare name: shown" 0 $P view stu/a.pfm -o a.html

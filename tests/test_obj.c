@@ -432,7 +432,7 @@ static void test_errors(void)
         {"tests/obj/err_before_newmtl.obj", "tests/obj/err_before_newmtl.mtl:2: 'Kd' before the first newmtl"},
         {"tests/obj/err_mtl_number.obj", "tests/obj/err_mtl_number.mtl:3: bad number 'x0.1'"},
         {"tests/obj/does_not_exist.obj", "tests/obj/does_not_exist.obj: cannot open: No such file or directory"},
-        {"tests/obj", "tests/obj: cannot open: Is a directory"},
+        {"tests/obj", "tests/obj: cannot open: a folder, not a file"},
     };
     size_t i;
     for (i = 0; i < sizeof cases / sizeof cases[0]; i++) expect_error(cases[i][0], cases[i][1]);

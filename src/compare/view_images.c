@@ -64,6 +64,16 @@ static int read_image(view_data *d, html_image *h, image *im, image *var, const 
     return 0;
 }
 
+/* 1 (said) if a layer found beside image0 through its sidecar is not a regular file of its folder
+ * (a link planted there to a teacher's file): a page may go back to the student who made image0. */
+static int layer_leads_out(const char *image0, const char *path)
+{
+    char found[PATH_CAP];
+    const char *why = input_file_beside(found, sizeof found, image0, path_file_name(path));
+    if (why) fprintf(stderr, "pathlab view: %s: %s\n", path, why);
+    return why != NULL;
+}
+
 /* The strip: PREFIX_Lk.pfm as far as they exist, or the first image's layers A:B (its sidecar). 0 or 2. */
 static int read_layers(view_data *d, const char *image0, const char *layers, const char **first)
 {
@@ -77,6 +87,7 @@ static int read_layers(view_data *d, const char *image0, const char *layers, con
         if (layers) snprintf(path, sizeof path, "%s_L%d.pfm", layers, k);
         else render_files_layer_path(path, sizeof path, image0, k);
         if (!exists(path)) continue;   /* a layer deleted since, or a gap in PREFIX_Lk: the others are shown */
+        if (!layers && layer_leads_out(image0, path)) return 2;
         if (read_sized(&d->layer[d->nlayers], path, first, &d->img[0])) return 2;
         snprintf(d->layer_name[d->nlayers], sizeof d->layer_name[0], "L%d", k);
         h->name = d->layer_name[d->nlayers];

@@ -184,7 +184,8 @@ int sidecar_read(sidecar *m, const char *image_path)
                      : err == 3 ? "a sample index beyond 2^62, the limit of --samples"
                      : err == 4 ? "a count of samples out of 1 .. 2^30, the limits of --spp" : "bad value");
     else if (!m->kind[0] || !m->nranges) fprintf(stderr, "%s: no %s line: not a pathlab sidecar\n", path, m->kind[0] ? "samples" : "kind");
-    return err || !m->kind[0] || !m->nranges;
+    else if (m->adaptive[0] && m->spp_cap < 1) fprintf(stderr, "%s: an adaptive render without its spp-cap line\n", path);
+    return err || !m->kind[0] || !m->nranges || (m->adaptive[0] && m->spp_cap < 1);
 }
 
 /* The ranges of a and b together, sorted; adjacent ranges joined. */

@@ -73,4 +73,5 @@ side near-limit 'samples 0:2,4611686018427387000:4611686018427387904' 'variance 
 side absolute 'samples 0:4' 'variance /dev/zero'
 side climbs 'samples 0:4' 'variance ../x_var.pfm'
 side negative-seed 'samples 0:4' 'seed -1' 'spp-cap -5'
+side adaptive-no-cap 'samples 0:64' 'spp-mean 12.5' 'adaptive --target-error 0.01 --pilot 16'   # found by make fuzz
 for t in scene mtl view orbiter pfm sidecar; do echo "$t: $(ls "$C/$t" | wc -l) seeds, $(cat "$C/$t"/* | wc -c) bytes"; done

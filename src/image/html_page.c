@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "math/sha256.h"
 #include "sys/atomic_file.h"
 
 extern const unsigned char pathlab_viewer_js[], pathlab_viewer_css[];   /* $(BUILD)/gen/web_assets.c */
@@ -162,15 +163,35 @@ static void write_settings(FILE *f, const html_page *p)
     fputs("]}</script>\n", f);
 }
 
-/* The page itself, into f. */
+/* The text of the page's one script element, "\n" + web/viewer.js, as its Content-Security-Policy
+ * hashes it: 'sha256-' and the base64 of its SHA-256, into out[64]. */
+static void script_hash(char out[64])
+{
+    unsigned char d[33];
+    sha256_ctx c;
+    int i;
+    sha256_init(&c);
+    sha256_update(&c, "\n", 1);
+    sha256_update(&c, pathlab_viewer_js, strlen((const char *)pathlab_viewer_js));
+    sha256_final(&c, d);
+    d[32] = 0;
+    memcpy(out, "'sha256-", 8);
+    for (i = 0; i < 33; i += 3) b64_group(out + 8 + 4 * i / 3, d + i, i + 3 <= 32 ? 3 : 32 - i);
+    memcpy(out + 52, "'", 2);
+}
+
+/* The page itself, into f. Its Content-Security-Policy runs no script but the viewer's (by its
+ * hash: nothing a name or a title could inject runs), loads nothing from anywhere, and allows no
+ * <base> and no form. */
 static void write_page(FILE *f, const html_page *p, const html_image **all, int n)
 {
-    char *title = html_escape(p->title ? p->title : "pathlab");
+    char *title = html_escape(p->title ? p->title : "pathlab"), hash[64];
     int i;
+    script_hash(hash);
     fprintf(f, "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
-               "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; script-src 'unsafe-inline'; "
-               "style-src 'unsafe-inline'; img-src data: blob:\">\n<title>%s</title>\n<style>\n%s</style>\n</head><body>\n",
-            title ? title : "pathlab", (const char *)pathlab_viewer_css);
+               "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; script-src %s; "
+               "style-src 'unsafe-inline'; img-src data: blob:; base-uri 'none'; form-action 'none'\">\n<title>%s</title>\n"
+               "<style>\n%s</style>\n</head><body>\n", hash, title ? title : "pathlab", (const char *)pathlab_viewer_css);
     free(title);
     if (p->before_html) fprintf(f, "%s\n", p->before_html);
     fputs("<div id=\"pathlab-viewer\"></div>\n", f);

@@ -7,6 +7,7 @@
 #include "grade/grade_diagnose.h"
 #include "grade/grade_page.h"
 #include "grade/grade_print.h"
+#include "grade/integrity.h"
 #include "grade/page_paths.h"
 #include "grade/reference.h"
 #include "util/path.h"
@@ -21,13 +22,14 @@ typedef struct {
     int loud;              /* each image's tests in full: one image, or --details */
 } run;
 
-/* The heatmap's path for an image: the --heatmap file itself, or FOLDER/NAME.png with several. */
-static void heatmap_path(char *out, size_t cap, const grade_job *j, const char *image)
+/* The heatmap's path for an image: the --heatmap file itself, or FOLDER/NAME.png with several (NAME
+ * as its page's, page_paths.h: one-to-one with the image's name). */
+static void heatmap_path(char *out, size_t cap, const grade_job *j, const char *image, int same_name)
 {
-    const char *base = path_file_name(image);
-    size_t stem = path_ends_with(base, ".pfm") ? strlen(base) - 4 : strlen(base);
+    char name[GRADE_NAME_CAP];
+    grade_output_name(name, image, same_name);
     if (j->nimages == 1) snprintf(out, cap, "%s", j->heatmap);
-    else snprintf(out, cap, "%s/%.*s.png", j->heatmap, (int)stem, base);
+    else snprintf(out, cap, "%s/%s.png", j->heatmap, name);
 }
 
 /* The likely mistakes of a failing image: printed in full (one image, or --details) and joined into
@@ -49,13 +51,13 @@ static int diagnose(grade_row *row, const image *img, const run *s, double exces
 }
 
 /* The heatmap of one graded image, if asked: 0, or 2 (said). */
-static int write_heatmap(const grade_report *r, const run *s, const char *image_path)
+static int write_heatmap(const grade_report *r, const run *s, const char *image_path, int same_name)
 {
     char path[PATH_CAP];
     image heat;
     int err;
     if (!s->job.heatmap) return 0;
-    heatmap_path(path, sizeof path, &s->job, image_path);
+    heatmap_path(path, sizeof path, &s->job, image_path, same_name);
     err = grade_heatmap(&heat, r, &s->R.ref) || img_write(&heat, path, 0.0f);
     if (!err && s->loud) printf("heatmap: %s (red: significantly brighter blocks, blue: darker, grey: the reference)\n", path);
     img_free(&heat);
@@ -78,6 +80,50 @@ static int write_page(grade_row *row, const grade_report *r, const image *img, c
     return 0;
 }
 
+/* Adds text to the row's remark, "; " after the one before (cut to fit). */
+static void add_remark(grade_row *row, const char *text)
+{
+    size_t used = strlen(row->remark);
+    snprintf(row->remark + used, sizeof row->remark - used, "%s%s", used ? "; " : "", text);
+}
+
+/* The image's hash, and its remark against the reference (a copy; made from it), printed in full for
+ * one image. */
+static void check_integrity(grade_row *row, const image *img, const run *s)
+{
+    const grade_reference *R = &s->R;
+    char text[sizeof row->remark];
+    grade_pixel_hash(img, row->sha);
+    row->hashed = 1;
+    if (s->loud && R->refs.var) {
+        grade_scatter sc;
+        grade_scatter_test(&sc, img, R->refs.ref, R->refs.var);
+        printf("scatter against the reference's own noise (REF_var.pfm): sum d^2 / sum var %.3g over %ld pixel-channels, z %+.1f "
+               "(a copy or an image made from the reference: below %g with z < -%.2f, level %g)\n", sc.ratio, sc.n, sc.z,
+               GRADE_SCATTER_RATIO, GRADE_SCATTER_Z, GRADE_SCATTER_ALPHA);
+    }
+    if (!grade_integrity_remark(text, sizeof text, img, R->refs.ref, R->refs.var)) return;
+    add_remark(row, text);
+    if (s->loud) printf("FLAGGED: %s\n", text);
+}
+
+/* An image with the same pixels as an earlier one of the run: its row names the first such image,
+ * and that image's row names it (if it names no copy yet). */
+static void mark_copies(grade_row *rows, int k)
+{
+    char text[sizeof rows->remark];
+    const char *said = "identical to ";
+    int j;
+    for (j = 0; j < k && rows[k].hashed; j++) {
+        if (!rows[j].hashed || memcmp(rows[j].sha, rows[k].sha, sizeof rows[k].sha)) continue;
+        snprintf(text, sizeof text, "%s%s, pixel for pixel (the SHA-256 of the pixels)", said, rows[j].path);
+        add_remark(&rows[k], text);
+        snprintf(text, sizeof text, "%s%s, pixel for pixel (the SHA-256 of the pixels)", said, rows[k].path);
+        if (!strstr(rows[j].remark, said)) add_remark(&rows[j], text);
+        return;
+    }
+}
+
 /* Grades one image into its row: 0 pass, 1 fail, 2 could not be read or graded. keep (or NULL)
  * receives the graded image, for the class's page. */
 static int grade_one(grade_row *row, const run *s, const char *path, int same_name, image *keep)
@@ -98,10 +144,11 @@ static int grade_one(grade_row *row, const run *s, const char *path, int same_na
         return row->status = 2;
     }
     if (s->loud) grade_print_report(&r, row->path, j->ref, &j->o);
+    check_integrity(row, &img, s);
     grade_fill_row(row, &r);
     row->status = grade_failed(&r);
     if (row->status == 1 && diagnose(row, &img, s, grade_excess(&r), h, &nh)) row->status = 2;
-    if (write_heatmap(&r, s, row->path) || write_page(row, &r, &img, s, h, nh, same_name)) row->status = 2;
+    if (write_heatmap(&r, s, row->path, same_name) || write_page(row, &r, &img, s, h, nh, same_name)) row->status = 2;
     grade_free(&r);
     if (keep && row->status < 2) { *keep = img; img.px = NULL; }
     img_free(&img);
@@ -116,6 +163,7 @@ static int grade_all(run *s, grade_row *rows, image *kept, const unsigned char *
     for (k = 0; k < j->nimages; k++) {
         if (s->loud && k) printf("\n");
         grade_one(&rows[k], s, j->images[k], same[k], kept ? &kept[k] : NULL);
+        mark_copies(rows, k);
         if (!s->loud || j->nimages > 1) grade_print_row(&rows[k]);
         if (rows[k].status > rc) rc = rows[k].status;
     }

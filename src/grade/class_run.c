@@ -98,8 +98,8 @@ static void check_integrity(grade_row *row, const image *img, const run *s)
     if (s->loud && R->refs.var) {
         grade_scatter sc;
         grade_scatter_test(&sc, img, R->refs.ref, R->refs.var);
-        printf("scatter against the reference's own noise (REF_var.pfm): sum d^2 / sum var %.3g over %ld pixel-channels, z %+.1f "
-               "(a copy or an image made from the reference: below %g with z < -%.2f, level %g)\n", sc.ratio, sc.n, sc.z,
+        printf("scatter against the reference's own noise (REF_var.pfm): mean d^2 / var %.3g over %ld pixel-channels, t %+.1f "
+               "(a copy or an image made from the reference: below %g with t < -%.2f, level %g)\n", sc.ratio, sc.n, sc.z,
                GRADE_SCATTER_RATIO, GRADE_SCATTER_Z, GRADE_SCATTER_ALPHA);
     }
     if (!grade_integrity_remark(text, sizeof text, img, R->refs.ref, R->refs.var)) return;

@@ -10,12 +10,12 @@
 
 #define GRADE_SCATTER_ALPHA 1e-3   /* the scatter test's level (one-sided) */
 #define GRADE_SCATTER_Z 3.0902     /* its normal quantile: z below -3.09 */
-#define GRADE_SCATTER_RATIO 0.5    /* and sum d^2 below half the reference's variance */
+#define GRADE_SCATTER_RATIO 0.75   /* and the mean of d^2 / var below 3/4 */
 
 typedef struct {
     long n;          /* pixel-channels tested: where the reference's variance is > 0 */
-    double ratio;    /* sum d^2 / sum var over them: at least about 1 for an image independent of the reference */
-    double z;        /* sum (d^2 - var) / sqrt(sum (d^2 - var)^2) */
+    double ratio;    /* the mean of d^2 / var over them: about 1 or more for an image independent of the reference */
+    double z;        /* its Student t against 1: (ratio - 1) / (sd / sqrt(n)) */
     int low;         /* 1: z < -GRADE_SCATTER_Z and ratio < GRADE_SCATTER_RATIO */
 } grade_scatter;
 

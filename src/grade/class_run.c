@@ -10,6 +10,8 @@
 #include "grade/integrity.h"
 #include "grade/page_paths.h"
 #include "grade/reference.h"
+#include "sys/atomic_file.h"
+#include "sys/shown.h"
 #include "util/path.h"
 
 #define GRADE_MAX_HYP 6
@@ -45,39 +47,42 @@ static int diagnose(grade_row *row, const image *img, const run *s, double exces
                          " (no layers REF_split_L0.pfm ... beside the reference: the bounce mistakes were not tried)");
     if (s->loud && n == 0 && !R->refs.nlayers)
         printf("    (no layers %s_L0.pfm ... beside the reference: the bounce mistakes were not tried; docs/grading.md)\n", R->layer_prefix);
-    for (k = 0; k < n && k < 3 && used < sizeof row->mistake; k++)
-        used += (size_t)snprintf(row->mistake + used, sizeof row->mistake - used, "%s%s", k ? "; " : "", h[k].what);
+    for (k = 0; k < n && k < 3 && used < sizeof row->mistake; k++)   /* one difference: the others are other guesses for it */
+        used += (size_t)snprintf(row->mistake + used, sizeof row->mistake - used, "%s%s%s", k ? "; or instead, a secondary guess: " : "",
+                                 h[k].what, h[k].passes ? (k ? " (passes too)" : "") : " (nearly passes)");
     return 0;
 }
 
-/* The heatmap of one graded image, if asked: 0, or 2 (said). */
-static int write_heatmap(const grade_report *r, const run *s, const char *image_path, int same_name)
+/* Adds "its WHAT PATH was not written: the reason" to the row (the report says why it is missing). */
+static void output_failed(grade_row *row, const char *what, const char *path);
+
+/* The heatmap of one graded image, if asked; a failure said in the row. */
+static void write_heatmap(grade_row *row, const grade_report *r, const run *s, int same_name)
 {
     char path[PATH_CAP];
     image heat;
     int err;
-    if (!s->job.heatmap) return 0;
-    heatmap_path(path, sizeof path, &s->job, image_path, same_name);
+    if (!s->job.heatmap) return;
+    heatmap_path(path, sizeof path, &s->job, row->path, same_name);
     err = grade_heatmap(&heat, r, &s->R.ref) || img_write(&heat, path, 0.0f);
-    if (!err && s->loud) printf("heatmap: %s (red: significantly brighter blocks, blue: darker, grey: the reference)\n", path);
+    if (!err && s->loud) printf("heatmap: %s (red: significantly brighter blocks, blue: darker, grey: the reference)\n", shown(path));
     img_free(&heat);
-    return err ? 2 : 0;
+    if (err) output_failed(row, "heatmap", path);
 }
 
-/* The page of one graded image, if there is a pages folder; the row's link to it. 0, or 2 (said). */
-static int write_page(grade_row *row, const grade_report *r, const image *img, const run *s, const grade_hypothesis *h,
-                      int nh, int same_name)
+/* The page of one graded image, if there is a pages folder; the row's link to it, or why it is missing. */
+static void write_page(grade_row *row, const grade_report *r, const image *img, const run *s, const grade_hypothesis *h,
+                       int nh, int same_name)
 {
     char path[PATH_CAP];
     grade_page p;
-    if (!s->pages.dir[0]) return 0;
-    if (grade_page_path(path, sizeof path, &s->pages, row->path, same_name)) return 2;
+    if (!s->pages.dir[0]) return;
+    if (grade_page_path(path, sizeof path, &s->pages, row->path, same_name)) { output_failed(row, "page", "(its name)"); return; }
     p.path = path, p.ref_path = s->job.ref, p.var_path = s->R.var_path, p.img = img, p.refs = &s->R.refs, p.r = r, p.row = row;
     p.h = h, p.nh = nh, p.back = s->pages.back[0] ? s->pages.back : NULL;
-    if (grade_write_page(&p)) return 2;
+    if (grade_write_page(&p)) { output_failed(row, "page", path); return; }
     grade_page_link(row->page, sizeof row->page, &s->pages, path);
-    if (s->loud) printf("page: %s\n", path);
-    return 0;
+    if (s->loud) printf("page: %s\n", shown(path));
 }
 
 /* Adds text to the row's remark, "; " after the one before (cut to fit). */
@@ -85,6 +90,16 @@ static void add_remark(grade_row *row, const char *text)
 {
     size_t used = strlen(row->remark);
     snprintf(row->remark + used, sizeof row->remark - used, "%s%s", used ? "; " : "", text);
+}
+
+static void output_failed(grade_row *row, const char *what, const char *path)
+{
+    char text[sizeof row->remark];
+    const char *why = atomic_file_why();
+    snprintf(text, sizeof text, "its %s %.400s was not written: %s", what, path, why[0] ? why : "its path is too long, or out of memory "
+             "(the message above says which)");
+    add_remark(row, text);
+    row->output_failed = 1;
 }
 
 /* The image's hash, and its remark against the reference (a copy; made from it), printed in full for
@@ -124,10 +139,12 @@ static void mark_copies(grade_row *rows, int k)
     }
 }
 
-/* Grades one image into its row: 0 pass, 1 fail, 2 could not be read or graded. keep (or NULL)
- * receives the graded image, for the class's page. */
-static int grade_one(grade_row *row, const run *s, const char *path, int same_name, image *keep)
+/* Grades one image into its row, rows[index] (an earlier row with the same pixels is marked, and
+ * marks it): 0 pass, 1 fail, 2 could not be read or graded. keep (or NULL) receives the graded image,
+ * for the class's page. */
+static int grade_one(grade_row *rows, int index, const run *s, const char *path, int same_name, image *keep)
 {
+    grade_row *row = &rows[index];
     const grade_job *j = &s->job;
     grade_hypothesis h[GRADE_MAX_HYP];
     image img;
@@ -145,10 +162,12 @@ static int grade_one(grade_row *row, const run *s, const char *path, int same_na
     }
     if (s->loud) grade_print_report(&r, row->path, j->ref, &j->o);
     check_integrity(row, &img, s);
+    mark_copies(rows, index);
     grade_fill_row(row, &r);
     row->status = grade_failed(&r);
     if (row->status == 1 && diagnose(row, &img, s, grade_excess(&r), h, &nh)) row->status = 2;
-    if (write_heatmap(&r, s, row->path, same_name) || write_page(row, &r, &img, s, h, nh, same_name)) row->status = 2;
+    write_heatmap(row, &r, s, same_name);
+    write_page(row, &r, &img, s, h, nh, same_name);
     grade_free(&r);
     if (keep && row->status < 2) { *keep = img; img.px = NULL; }
     img_free(&img);
@@ -162,10 +181,10 @@ static int grade_all(run *s, grade_row *rows, image *kept, const unsigned char *
     int k, rc = 0;
     for (k = 0; k < j->nimages; k++) {
         if (s->loud && k) printf("\n");
-        grade_one(&rows[k], s, j->images[k], same[k], kept ? &kept[k] : NULL);
-        mark_copies(rows, k);
+        grade_one(rows, k, s, j->images[k], same[k], kept ? &kept[k] : NULL);
         if (!s->loud || j->nimages > 1) grade_print_row(&rows[k]);
         if (rows[k].status > rc) rc = rows[k].status;
+        if (rows[k].output_failed) rc = 2;
     }
     return rc;
 }

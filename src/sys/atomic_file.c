@@ -5,6 +5,7 @@
  * signal. */
 #include "sys/atomic_file.h"
 #include "sys/interrupt.h"
+#include "sys/shown.h"
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -13,6 +14,25 @@
 #include <unistd.h>
 
 #define TMP_SUFFIX ".tmp.XXXXXX"
+
+static char why[256];   /* the last failure's reason, for atomic_file_why() */
+
+/* "path: text" on stderr, text kept as the reason. */
+static void fail(const char *path, const char *text)
+{
+    snprintf(why, sizeof why, "%s", text);
+    fprintf(stderr, "%s: %s\n", shown(path), text);
+}
+
+/* "what: the system's reason", as fail() says it. */
+static void fail_errno(const char *path, const char *what, int err)
+{
+    char text[224];
+    snprintf(text, sizeof text, "%s: %s", what, strerror(err));
+    fail(path, text);
+}
+
+const char *atomic_file_why(void) { return why; }
 
 /* The permissions fopen would have given the file: 0666 minus the umask. mkstemp creates files
  * 0600, which would make every image private. umask can only be read by setting it, so this is
@@ -33,11 +53,11 @@ static int target_mode(const char *path, mode_t *mode)
     if (lstat(path, &st) != 0) return 1;              /* a new file */
     if (S_ISLNK(st.st_mode)) return 1;                /* the rename replaces the link itself */
     if (!S_ISREG(st.st_mode)) {
-        fprintf(stderr, "%s: exists and is not a regular file: not replaced\n", path);
+        fail(path, "exists and is not a regular file: not replaced");
         return 0;
     }
     if (!(st.st_mode & S_IWUSR)) {
-        fprintf(stderr, "%s: is read-only: not replaced (chmod u+w it, or write elsewhere)\n", path);
+        fail(path, "is read-only: not replaced (chmod u+w it, or write elsewhere)");
         return 0;
     }
     *mode = st.st_mode & 07777;
@@ -49,8 +69,9 @@ FILE *atomic_file_create(const char *path, char *tmp, size_t cap)
     mode_t mode;
     int fd;
     FILE *f;
+    why[0] = '\0';
     if (snprintf(tmp, cap, "%s" TMP_SUFFIX, path) >= (int)cap) {
-        fprintf(stderr, "%s: name too long\n", path);
+        fail(path, "name too long");
         return NULL;
     }
     if (!target_mode(path, &mode)) return NULL;
@@ -59,11 +80,11 @@ FILE *atomic_file_create(const char *path, char *tmp, size_t cap)
     if (fd >= 0) interrupt_temp_add(tmp);
     interrupt_release();
     if (fd < 0) {
-        fprintf(stderr, "%s: cannot create a temporary file beside it: %s\n", path, strerror(errno));
+        fail_errno(path, "cannot create a temporary file beside it", errno);
         return NULL;
     }
     if (fchmod(fd, mode) != 0 || !(f = fdopen(fd, "wb"))) {
-        fprintf(stderr, "%s: cannot write: %s\n", path, strerror(errno));
+        fail_errno(path, "cannot write", errno);
         close(fd);
         interrupt_hold();
         unlink(tmp);
@@ -85,7 +106,7 @@ int atomic_file_commit(FILE *f, const char *tmp, const char *path, int ok)
     if (!ok || err) unlink(tmp);
     interrupt_temp_remove(tmp);
     interrupt_release();
-    if (ok && err) fprintf(stderr, "%s: cannot write: %s\n", path, strerror(err));
+    if (ok && err) fail_errno(path, "cannot write", err);
     return (ok && !err) ? 0 : 1;
 }
 
@@ -94,7 +115,7 @@ FILE *atomic_file_open(const char *path, char **tmp)
     size_t cap = strlen(path) + sizeof TMP_SUFFIX;
     FILE *f;
     if (!(*tmp = malloc(cap))) {
-        fprintf(stderr, "%s: out of memory\n", path);
+        fail(path, "out of memory");
         return NULL;
     }
     if (!(f = atomic_file_create(path, *tmp, cap))) {

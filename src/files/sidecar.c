@@ -1,5 +1,6 @@
 /* sidecar.c — reading, writing and comparing the FILE.meta that says what made FILE. */
 #include "files/sidecar.h"
+#include "sys/shown.h"
 #include "sys/output_path.h"
 #include "tracer/integrator.h"
 #include "util/textfile.h"
@@ -163,7 +164,7 @@ int sidecar_read(sidecar *m, const char *image_path)
     sidecar_path(path, sizeof path, image_path);
     if (!(f = fopen(path, "r"))) {
         if (errno == ENOENT) return -1;
-        fprintf(stderr, "%s: cannot read: %s\n", path, strerror(errno));
+        fprintf(stderr, "%s: cannot read: %s\n", shown(path), strerror(errno));
         return 1;
     }
     while (!err && fgets(line, sizeof line, f)) {
@@ -172,8 +173,8 @@ int sidecar_read(sidecar *m, const char *image_path)
         else if (split_line(line, &key, &value)) err = parse_line(m, key, value);
     }
     fclose(f);
-    if (err) fprintf(stderr, "%s:%d: %s\n", path, lineno, err == 2 ? "line too long" : "bad value");
-    else if (!m->kind[0] || !m->nranges) fprintf(stderr, "%s: no %s line: not a pathlab sidecar\n", path, m->kind[0] ? "samples" : "kind");
+    if (err) fprintf(stderr, "%s:%d: %s\n", shown(path), lineno, err == 2 ? "line too long" : "bad value");
+    else if (!m->kind[0] || !m->nranges) fprintf(stderr, "%s: no %s line: not a pathlab sidecar\n", shown(path), m->kind[0] ? "samples" : "kind");
     return err || !m->kind[0] || !m->nranges;
 }
 
@@ -193,7 +194,7 @@ int sidecar_add_ranges(sidecar *a, const sidecar *b, const char *a_name, const c
         else { r[n][0] = next[0]; r[n][1] = next[1]; n++; }
     }
     if (n > SIDECAR_MAX_RANGES) {
-        fprintf(stderr, "pathlab: %s and %s together have %d separate sample ranges (at most %d)\n", a_name, b_name, n, SIDECAR_MAX_RANGES);
+        fprintf(stderr, "pathlab: %s and %s together have %d separate sample ranges (at most %d)\n", shown(a_name), shown(b_name), n, SIDECAR_MAX_RANGES);
         return 1;
     }
     memcpy(a->range, r, sizeof(r[0]) * (size_t)n);
@@ -203,7 +204,7 @@ int sidecar_add_ranges(sidecar *a, const sidecar *b, const char *a_name, const c
 
 static int differ(const char *cmd, const char *a_name, const char *b_name, const char *key, const char *x, const char *y)
 {
-    fprintf(stderr, "pathlab %s: %s and %s differ in %s:\n  '%s'\n  '%s'\n", cmd, a_name, b_name, key, x, y);
+    fprintf(stderr, "pathlab %s: %s and %s differ in %s:\n  '%s'\n  '%s'\n", cmd, shown(a_name), shown(b_name), shown(key), shown(x), shown(y));
     return 1;
 }
 

@@ -46,7 +46,7 @@ static int diagnose(grade_row *row, const image *img, const run *s, double exces
     if (n == 0) snprintf(row->mistake, sizeof row->mistake, "none of the catalogue%s", R->refs.nlayers ? "" :
                          " (no layers REF_split_L0.pfm ... beside the reference: the bounce mistakes were not tried)");
     if (s->loud && n == 0 && !R->refs.nlayers)
-        printf("    (no layers %s_L0.pfm ... beside the reference: the bounce mistakes were not tried; docs/grading.md)\n", R->layer_prefix);
+        printf("    (no layers %s_L0.pfm ... beside the reference: the bounce mistakes were not tried; docs/grading.md)\n", shown(R->layer_prefix));
     for (k = 0; k < n && k < 3 && used < sizeof row->mistake; k++)   /* one difference: the others are other guesses for it */
         used += (size_t)snprintf(row->mistake + used, sizeof row->mistake - used, "%s%s%s", k ? "; or instead, a secondary guess: " : "",
                                  h[k].what, h[k].passes ? (k ? " (passes too)" : "") : " (nearly passes)");

@@ -36,7 +36,7 @@ int grade_check_reference(const grade_refs *refs, const char *ref_path, const ch
     }
     if (i < 0) return 0;
     fprintf(stderr, "pathlab grade: %s has a %s value at pixel x %ld, y %ld (y = 0 is the top row): not a reference\n",
-            ref_path, what, i / 3 % refs->ref->w, i / 3 / refs->ref->w);
+            shown(ref_path), what, i / 3 % refs->ref->w, i / 3 / refs->ref->w);
     return 2;
 }
 
@@ -123,7 +123,7 @@ int grade_read_image(image *img, grade_row *row, const grade_refs *refs, const c
                  info.channels == 1 ? "greyscale" : "colour", info.channels == 1 ? "Pf" : "PF", info.channels,
                  info.channels == 1 ? "" : "s", refs->channels == 1 ? "greyscale" : "colour",
                  refs->channels == 1 ? "one channel (Pf)" : "the three channels R, G, B (PF)");
-        fprintf(stderr, "pathlab grade: %s: %s\n", row->path, row->mistake);
+        fprintf(stderr, "pathlab grade: %s: %s\n", shown(row->path), shown(row->mistake));
         img_free(img);
         return row->status = 2;
     }
@@ -143,9 +143,9 @@ int grade_read_image(image *img, grade_row *row, const grade_refs *refs, const c
 void grade_print_class_header(const grade_opts *o, const char *ref_path, int nimages, const grade_refs *refs,
                               const char *var_path, const char *layer_prefix)
 {
-    printf("pathlab grade: %d images against %s (%dx%d)", nimages, ref_path, refs->ref->w, refs->ref->h);
+    printf("pathlab grade: %d images against %s (%dx%d)", nimages, shown(ref_path), refs->ref->w, refs->ref->h);
     printf(var_path ? ", its variance %s" : ", no variance beside it (exact pixels guessed)", var_path);
-    if (refs->nlayers) printf(", layers %s_L0..L%d.pfm", layer_prefix, refs->nlayers - 1);
+    if (refs->nlayers) printf(", layers %s_L0..L%d.pfm", shown(layer_prefix), refs->nlayers - 1);
     printf("\neach image is graded at family-wise level alpha %g: an unbiased image fails with probability at most %g, so %d "
            "honest images give about %.2g false alarms in all\n", o->alpha, o->alpha, nimages, o->alpha * nimages);
 }
@@ -235,13 +235,13 @@ int grade_write_report(const char *path, const grade_row *rows, int n, const gra
     FILE *f;
     if (len > 5 && !strcmp(path + len - 5, ".html")) {
         if (grade_write_class_page(path, rows, n, o, ref_path, refs, imgs)) return 1;
-        printf("report: %s\n", path);
+        printf("report: %s\n", shown(path));
         return 0;
     }
     if (!(f = textfile_open(path, tmp, sizeof tmp))) return 1;
     if (len > 4 && !strcmp(path + len - 4, ".csv")) write_csv(f, rows, n);
     else write_md(f, rows, n, o, ref_path);
     if (textfile_close(f, tmp, path)) return 1;
-    printf("report: %s\n", path);
+    printf("report: %s\n", shown(path));
     return 0;
 }

@@ -4,6 +4,7 @@
  * (relative error <= 2^-11, about 5e-4), enough for a viewer, at a third of the size of text numbers.
  * Variances travel as standard deviations, which stay in the half-float range far further down. */
 #include "image/html_page.h"
+#include "sys/shown.h"
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -120,8 +121,8 @@ static int check_sizes(const char *path, const html_image **all, int n)
         const image *v = all[i]->var;
         if (all[i]->img->w != w || all[i]->img->h != h || (v && (v->w != w || v->h != h))) {
             const image *bad = all[i]->img->w != w || all[i]->img->h != h ? all[i]->img : v;
-            fprintf(stderr, "%s: %s%s is %dx%d, %s is %dx%d: a page shows images of one size\n", path, all[i]->name,
-                    bad == v ? "'s variance" : "", bad->w, bad->h, all[0]->name, w, h);
+            fprintf(stderr, "%s: %s%s is %dx%d, %s is %dx%d: a page shows images of one size\n", shown(path), shown(all[i]->name),
+                    bad == v ? "'s variance" : "", bad->w, bad->h, shown(all[0]->name), w, h);
             return 1;
         }
     }
@@ -216,9 +217,9 @@ int html_page_write(const char *path, const html_page *page)
     char *tmp;
     FILE *f;
     const html_image **all;
-    if (page->nimages < 1) { fprintf(stderr, "%s: a page needs an image\n", path); return 1; }
+    if (page->nimages < 1) { fprintf(stderr, "%s: a page needs an image\n", shown(path)); return 1; }
     all = all_images(page, &n);
-    if (!all) { fprintf(stderr, "%s: out of memory\n", path); return 1; }
+    if (!all) { fprintf(stderr, "%s: out of memory\n", shown(path)); return 1; }
     if (check_sizes(path, all, n)) { free(all); return 1; }
     f = atomic_file_open(path, &tmp);
     if (!f) { free(all); return 1; }

@@ -10,7 +10,7 @@
 #define PATHLAB_SHOWN_H
 #include <stddef.h>
 
-#define SHOWN_RING 8
+#define SHOWN_RING 12
 #define SHOWN_MAX 4352
 
 const char *shown(const char *name);

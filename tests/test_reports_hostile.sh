@@ -68,7 +68,7 @@ if len(rows) != n: bad("rows %d, images %d" % (len(rows), n))
 for l in rows:
     cells = re.split(r'(?<!\\)\|', l)
     if len(cells) != 9: bad("cells %d" % (len(cells) - 2), l)
-    live = re.sub(r'\[[^\[\]]*\]\(class-pages/[A-Za-z0-9._-]+\.html\)', '', l)
+    live = re.sub(r'\[[^\[\]]*\]\(class-pages/[A-Za-z0-9._-]+\.html\)|`[@:.]`', '', l)
     if re.search(r'<|>|https?://|www\.|@|\]\(|\[', live): bad("live text", l)
     links = re.findall(r'\]\(', l)
     if len(links) > 1 or (links and not re.search(r'\| \[[^|\[\]]*\]\(class-pages/[A-Za-z0-9._-]+\.html\) \|', l)): bad("a link", l)

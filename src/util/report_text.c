@@ -22,7 +22,8 @@ void md_put_text(FILE *f, const char *text)
         char c = t[k];
         int url = c == ':' && t[k + 1] == '/' && t[k + 2] == '/';   /* http:// : an autolink */
         int flanking = c == '_' && !(k > 0 && alnum(t[k - 1]) && alnum(t[k + 1]));
-        if (strchr("&<>\"'\\|[]@", c) || url || www_dot(t, k)) fprintf(f, "&#%d;", (unsigned char)c);
+        if (c == '@' || url || www_dot(t, k)) fprintf(f, "`%c`", c);   /* a code span: no renderer links across it */
+        else if (strchr("&<>\"'\\|[]", c)) fprintf(f, "&#%d;", (unsigned char)c);
         else if (strchr("`*~", c) || flanking) fprintf(f, "\\%c", c);
         else fputc(c, f);
     }

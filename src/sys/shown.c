@@ -42,7 +42,8 @@ static int escape_one(const unsigned char *s, char e[16])
     return n;
 }
 
-size_t shown_into(char *out, size_t cap, const char *name)
+/* name with its escapes into out[cap] (cut to fit, ending "..."); the length written. */
+static size_t shown_into(char *out, size_t cap, const char *name)
 {
     const unsigned char *s = (const unsigned char *)name;
     size_t used = 0;

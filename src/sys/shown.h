@@ -8,12 +8,9 @@
  * main thread; a name over SHOWN_MAX bytes is cut, its end replaced by "...". */
 #ifndef PATHLAB_SHOWN_H
 #define PATHLAB_SHOWN_H
-#include <stddef.h>
 
 #define SHOWN_RING 12
 #define SHOWN_MAX 4352
 
 const char *shown(const char *name);
-/* The same into out[cap] (cut to fit); the length written. */
-size_t shown_into(char *out, size_t cap, const char *name);
 #endif

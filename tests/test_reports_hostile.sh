@@ -108,7 +108,7 @@ if [ "$t1" = "<title>two/a b.pfm" ] && [ "$t2" = "<title>two/a_b.pfm" ]; then pa
 else fail "reports: pages of 'a b' and 'a_b': $(ls "$TMP/two-pages" | tr '\n' ' ')"; fi
 mkdir -p "$TMP/st/ana" "$TMP/st/ben" "$TMP/heat"; cp "$TMP/class/alice.pfm" "$TMP/st/ana/render.pfm"; cp "$TMP/bad.pfm" "$TMP/st/ben/render.pfm"
 (cd "$TMP" && "$PATHLAB" grade st/*/render.pfm --ref ref.pfm --heatmap heat > /dev/null 2>&1)
-if [ "$(ls "$TMP/heat" | tr '\n' ' ')" = "st_2fana_2frender.png st_2fben_2frender.png " ]; then pass "reports: --heatmap of st/*/render.pfm writes one PNG per image"
+if [ "$(ls "$TMP/heat" | tr "\n" " ")" = "ana_2frender.png ben_2frender.png " ]; then pass "reports: --heatmap of st/*/render.pfm writes one PNG per image"
 else fail "reports: heatmaps: $(ls "$TMP/heat" | tr '\n' ' ')"; fi
 
 # --- integrity flags ---

@@ -35,6 +35,19 @@ if grep -q "Content-Security-Policy\" content=\"default-src 'none'" "$TMP/main.h
 then pass "view: the page's CSP forbids requests, no http(s) URL in it"
 else fail "view: CSP missing or a URL in the page: $(grep -oE 'https?://[^"]*' "$TMP/main.html" | head -3)"; fi
 
+# script_hashes FILE: 'sha256-BASE64' of each inline script (no type, no src) of FILE, as a CSP lists them
+script_hashes() {
+    python3 -c 'import base64, hashlib, re, sys
+t = open(sys.argv[1], encoding="utf-8").read()
+print(" ".join("'"'"'sha256-%s'"'"'" % base64.b64encode(hashlib.sha256(s.encode()).digest()).decode()
+               for s in re.findall(r"<script>(.*?)</script>", t, re.S)))' "$1"
+}
+# allow_test_scripts FILE: the test's own scripts allowed by their hashes beside the viewer's, in the
+# page's CSP (which allows no inline script but by hash)
+allow_test_scripts() {
+    local h; h=$(script_hashes "$1")
+    sed -i "s#script-src [^;]*;#script-src $h;#" "$1"
+}
 csp=$(grep -o 'Content-Security-Policy" content="[^"]*' "$TMP/main.html")
 hash=$(command -v python3 >/dev/null && script_hashes "$TMP/main.html")
 case $csp in
@@ -73,19 +86,6 @@ test_page() {
         echo "</script></body></html>"
     } > "$out"
     allow_test_scripts "$out"
-}
-# script_hashes FILE: 'sha256-BASE64' of each inline script (no type, no src) of FILE, as a CSP lists them
-script_hashes() {
-    python3 -c 'import base64, hashlib, re, sys
-t = open(sys.argv[1], encoding="utf-8").read()
-print(" ".join("'"'"'sha256-%s'"'"'" % base64.b64encode(hashlib.sha256(s.encode()).digest()).decode()
-               for s in re.findall(r"<script>(.*?)</script>", t, re.S)))' "$1"
-}
-# allow_test_scripts FILE: the test's own scripts allowed by their hashes beside the viewer's, in the
-# page's CSP (which allows no inline script but by hash)
-allow_test_scripts() {
-    local h; h=$(script_hashes "$1")
-    sed -i "s#script-src [^;]*;#script-src $h;#" "$1"
 }
 # run_page KIND FILE: Chromium's DOM of FILE once loaded (and 200 ms of the page's timers) in $TMP/KIND.dom
 run_page() {

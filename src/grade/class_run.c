@@ -26,10 +26,10 @@ typedef struct {
 
 /* The heatmap's path for an image: the --heatmap file itself, or FOLDER/NAME.png with several (NAME
  * as its page's, page_paths.h: one-to-one with the image's name). */
-static void heatmap_path(char *out, size_t cap, const grade_job *j, const char *image, int same_name)
+static void heatmap_path(char *out, size_t cap, const grade_job *j, const char *image, int skip)
 {
     char name[GRADE_NAME_CAP];
-    grade_output_name(name, image, same_name);
+    grade_output_name(name, image, skip);
     if (j->nimages == 1) snprintf(out, cap, "%s", j->heatmap);
     else snprintf(out, cap, "%s/%s.png", j->heatmap, name);
 }
@@ -57,13 +57,13 @@ static int diagnose(grade_row *row, const image *img, const run *s, double exces
 static void output_failed(grade_row *row, const char *what, const char *path);
 
 /* The heatmap of one graded image, if asked; a failure said in the row. */
-static void write_heatmap(grade_row *row, const grade_report *r, const run *s, int same_name)
+static void write_heatmap(grade_row *row, const grade_report *r, const run *s, int skip)
 {
     char path[PATH_CAP];
     image heat;
     int err;
     if (!s->job.heatmap) return;
-    heatmap_path(path, sizeof path, &s->job, row->path, same_name);
+    heatmap_path(path, sizeof path, &s->job, row->path, skip);
     err = grade_heatmap(&heat, r, &s->R.ref) || img_write(&heat, path, 0.0f);
     if (!err && s->loud) printf("heatmap: %s (red: significantly brighter blocks, blue: darker, grey: the reference)\n", shown(path));
     img_free(&heat);
@@ -72,12 +72,12 @@ static void write_heatmap(grade_row *row, const grade_report *r, const run *s, i
 
 /* The page of one graded image, if there is a pages folder; the row's link to it, or why it is missing. */
 static void write_page(grade_row *row, const grade_report *r, const image *img, const run *s, const grade_hypothesis *h,
-                       int nh, int same_name)
+                       int nh, int skip)
 {
     char path[PATH_CAP];
     grade_page p;
     if (!s->pages.dir[0]) return;
-    if (grade_page_path(path, sizeof path, &s->pages, row->path, same_name)) { output_failed(row, "page", "(its name)"); return; }
+    if (grade_page_path(path, sizeof path, &s->pages, row->path, skip)) { output_failed(row, "page", "(its name)"); return; }
     p.path = path, p.ref_path = s->job.ref, p.var_path = s->R.var_path, p.img = img, p.refs = &s->R.refs, p.r = r, p.row = row;
     p.h = h, p.nh = nh, p.back = s->pages.back[0] ? s->pages.back : NULL;
     if (grade_write_page(&p)) { output_failed(row, "page", path); return; }
@@ -142,7 +142,7 @@ static void mark_copies(grade_row *rows, int k)
 /* Grades one image into its row, rows[index] (an earlier row with the same pixels is marked, and
  * marks it): 0 pass, 1 fail, 2 could not be read or graded. keep (or NULL) receives the graded image,
  * for the class's page. */
-static int grade_one(grade_row *rows, int index, const run *s, const char *path, int same_name, image *keep)
+static int grade_one(grade_row *rows, int index, const run *s, const char *path, int skip, image *keep)
 {
     grade_row *row = &rows[index];
     const grade_job *j = &s->job;
@@ -166,8 +166,8 @@ static int grade_one(grade_row *rows, int index, const run *s, const char *path,
     grade_fill_row(row, &r);
     row->status = grade_failed(&r);
     if (row->status == 1 && diagnose(row, &img, s, grade_excess(&r), h, &nh)) row->status = 2;
-    write_heatmap(row, &r, s, same_name);
-    write_page(row, &r, &img, s, h, nh, same_name);
+    write_heatmap(row, &r, s, skip);
+    write_page(row, &r, &img, s, h, nh, skip);
     grade_free(&r);
     if (keep && row->status < 2) { *keep = img; img.px = NULL; }
     img_free(&img);
@@ -175,13 +175,13 @@ static int grade_one(grade_row *rows, int index, const run *s, const char *path,
 }
 
 /* Each image in turn, its row printed; the worst status. */
-static int grade_all(run *s, grade_row *rows, image *kept, const unsigned char *same)
+static int grade_all(run *s, grade_row *rows, image *kept, const int *skip)
 {
     const grade_job *j = &s->job;
     int k, rc = 0;
     for (k = 0; k < j->nimages; k++) {
         if (s->loud && k) printf("\n");
-        grade_one(rows, k, s, j->images[k], same[k], kept ? &kept[k] : NULL);
+        grade_one(rows, k, s, j->images[k], skip[k], kept ? &kept[k] : NULL);
         if (!s->loud || j->nimages > 1) grade_print_row(&rows[k]);
         if (rows[k].status > rc) rc = rows[k].status;
         if (rows[k].output_failed) rc = 2;
@@ -207,19 +207,20 @@ int grade_run(const grade_job *job)
     run *s = calloc(1, sizeof *s);
     grade_row *rows = calloc((size_t)n + 1, sizeof *rows);
     image *kept = NULL;    /* the graded images, kept for the class's page (--report X.html) */
-    unsigned char *same = calloc((size_t)n + 1, 1);
+    int *skip = calloc((size_t)n + 1, sizeof *skip);   /* the name of each image's outputs (page_paths.h) */
     if (job->report && path_ends_with(job->report, ".html") && !(kept = calloc((size_t)n, sizeof *kept))) rc = 2;
-    if (!s || !rows || !same || grade_mark_same_names(job->images, n, same)) rc = 2;
+    if (!s || !rows || !skip || grade_mark_same_names(job->images, n, skip)) rc = 2;
     if (s) s->job = *job;
     if (!rc) rc = start(s);
     started = !rc;
-    if (started) rc = grade_all(s, rows, kept, same);
+    if (started) rc = grade_all(s, rows, kept, skip);
     if (started && n > 1) grade_print_summary(rows, n, &s->job.o);
     if (started && job->report && grade_write_report(job->report, rows, n, &s->job.o, job->ref, &s->R.refs, kept)) rc = 2;
+    else if (started && job->report) printf("report: %s\n", shown(job->report));
     for (k = 0; kept && k < n; k++) img_free(&kept[k]);
     if (s) grade_reference_free(&s->R);
     free(kept);
-    free(same);
+    free(skip);
     free(rows);
     free(s);
     return rc;

@@ -233,15 +233,9 @@ int grade_write_report(const char *path, const grade_row *rows, int n, const gra
     char tmp[PATH_CAP];
     size_t len = strlen(path);
     FILE *f;
-    if (len > 5 && !strcmp(path + len - 5, ".html")) {
-        if (grade_write_class_page(path, rows, n, o, ref_path, refs, imgs)) return 1;
-        printf("report: %s\n", shown(path));
-        return 0;
-    }
+    if (len > 5 && !strcmp(path + len - 5, ".html")) return grade_write_class_page(path, rows, n, o, ref_path, refs, imgs);
     if (!(f = textfile_open(path, tmp, sizeof tmp))) return 1;
     if (len > 4 && !strcmp(path + len - 4, ".csv")) write_csv(f, rows, n);
     else write_md(f, rows, n, o, ref_path);
-    if (textfile_close(f, tmp, path)) return 1;
-    printf("report: %s\n", shown(path));
-    return 0;
+    return textfile_close(f, tmp, path);
 }

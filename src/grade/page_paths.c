@@ -47,12 +47,12 @@ int grade_pages_setup(grade_pages *p, const char *pages, const char *report)
 /* The escape of a byte: "_" and two lowercase hex digits. */
 static size_t put_escape(char *out, unsigned char c) { return (size_t)sprintf(out, "_%02x", c); }
 
-void grade_output_name(char out[GRADE_NAME_CAP], const char *image, int same_name)
+void grade_output_name(char out[GRADE_NAME_CAP], const char *image, int skip)
 {
     const char *name = path_file_name(image);
     size_t stem, k, n = 0;
     int pfm;
-    if (same_name) name = image;   /* named by the whole path as given: st/ana/render.pfm */
+    if (skip >= 0) name = image + skip;   /* by its path past the shared folders: ana/render.pfm */
     pfm = path_ends_with(name, ".pfm");
     stem = pfm ? strlen(name) - 4 : strlen(name);
     for (k = 0; k < stem && n < GRADE_NAME_LONG; k++) {
@@ -71,10 +71,10 @@ void grade_output_name(char out[GRADE_NAME_CAP], const char *image, int same_nam
     out[n] = '\0';
 }
 
-int grade_page_path(char *out, size_t cap, const grade_pages *p, const char *image, int same_name)
+int grade_page_path(char *out, size_t cap, const grade_pages *p, const char *image, int skip)
 {
     char name[GRADE_NAME_CAP];
-    grade_output_name(name, image, same_name);
+    grade_output_name(name, image, skip);
     if (snprintf(out, cap, "%s/%s.html", p->dir, name) >= (int)cap) {
         fprintf(stderr, "pathlab grade: the page of %s would have a path over %d characters\n", shown(image), (int)cap - 1);
         return 1;
@@ -96,15 +96,33 @@ static int by_file_name(const void *a, const void *b)
     return strcmp(path_file_name(**(const char *const *const *)a), path_file_name(**(const char *const *const *)b));
 }
 
-int grade_mark_same_names(const char *const *images, int n, unsigned char *same)
+/* The folders that paths a[0..n) all begin with: the length of their common prefix, cut after its
+ * last '/' and before any file name. */
+static int shared_folders(const char *const *const *a, int n)
+{
+    size_t len = strlen(**a), k;
+    int i;
+    for (i = 1; i < n; i++) {
+        for (k = 0; k < len && (*a[i])[k] == (**a)[k]; k++) continue;
+        len = k;
+    }
+    for (i = 0; i < n; i++)
+        if (len > (size_t)(path_file_name(*a[i]) - *a[i])) len = (size_t)(path_file_name(*a[i]) - *a[i]);
+    while (len > 0 && (**a)[len - 1] != '/') len--;
+    return (int)len;
+}
+
+int grade_mark_same_names(const char *const *images, int n, int *skip)
 {
     const char *const **order = malloc((size_t)n * sizeof *order);
-    int k;
+    int k, e, i;
     if (!order) return 1;
-    for (k = 0; k < n; k++) order[k] = &images[k];
+    for (k = 0; k < n; k++) order[k] = &images[k], skip[k] = -1;
     qsort(order, (size_t)n, sizeof *order, by_file_name);
-    for (k = 0; k + 1 < n; k++)
-        if (!strcmp(path_file_name(*order[k]), path_file_name(*order[k + 1]))) same[order[k] - images] = same[order[k + 1] - images] = 1;
+    for (k = 0; k < n; k = e) {   /* each run of one file name */
+        for (e = k + 1; e < n && !strcmp(path_file_name(*order[k]), path_file_name(*order[e])); e++) continue;
+        for (i = k; e - k > 1 && i < e; i++) skip[order[i] - images] = shared_folders(order + k, e - k);
+    }
     free(order);
     return 0;
 }

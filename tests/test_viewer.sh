@@ -35,6 +35,29 @@ if grep -q "Content-Security-Policy\" content=\"default-src 'none'" "$TMP/main.h
 then pass "view: the page's CSP forbids requests, no http(s) URL in it"
 else fail "view: CSP missing or a URL in the page: $(grep -oE 'https?://[^"]*' "$TMP/main.html" | head -3)"; fi
 
+# script_hashes FILE: 'sha256-BASE64' of each inline script (no type, no src) of FILE, as a CSP lists them
+script_hashes() {
+    python3 -c 'import base64, hashlib, re, sys
+t = open(sys.argv[1], encoding="utf-8").read()
+print(" ".join("'"'"'sha256-%s'"'"'" % base64.b64encode(hashlib.sha256(s.encode()).digest()).decode()
+               for s in re.findall(r"<script>(.*?)</script>", t, re.S)))' "$1"
+}
+# allow_test_scripts FILE: the test's own scripts allowed by their hashes beside the viewer's, in the
+# page's CSP (which allows no inline script but by hash)
+allow_test_scripts() {
+    local h; h=$(script_hashes "$1")
+    sed -i "s#script-src [^;]*;#script-src $h;#" "$1"
+}
+csp=$(grep -o 'Content-Security-Policy" content="[^"]*' "$TMP/main.html")
+hash=$(command -v python3 >/dev/null && script_hashes "$TMP/main.html")
+case $csp in
+*"script-src $hash;"*"base-uri 'none'; form-action 'none'"*)
+    if [ -n "$hash" ] && [ "$(echo "$hash" | wc -w)" = 1 ] && ! echo "$csp" | grep -q "script-src[^;]*unsafe-inline"
+    then pass "view: the CSP allows the page's one script by its SHA-256 ($hash), no 'unsafe-inline' script, base-uri and form-action 'none'"
+    else fail "view: the CSP's script-src: $csp (the script's hash: $hash)"; fi ;;
+*) fail "view: the CSP does not list the script's hash $hash with base-uri and form-action 'none': $csp" ;;
+esac
+
 # --- the browser ---
 find_chromium() { command -v chromium || command -v chromium-browser || command -v google-chrome || true; }
 CHROME=${CHROMIUM-$(find_chromium)}   # CHROMIUM=PROGRAM chooses the browser (CHROMIUM= : none, to see the skip)
@@ -62,6 +85,7 @@ test_page() {
         cat tests/viewer/test.js
         echo "</script></body></html>"
     } > "$out"
+    allow_test_scripts "$out"
 }
 # run_page KIND FILE: Chromium's DOM of FILE once loaded (and 200 ms of the page's timers) in $TMP/KIND.dom
 run_page() {

@@ -1,5 +1,6 @@
 /* student_print.c — check-sampler's lines: the verdicts and the diagnoses (student_print.h). */
 #include "check/student_print.h"
+#include "sys/shown.h"
 #include <stdio.h>
 #include <string.h>
 #include "check/student_diagnosis.h"
@@ -85,7 +86,7 @@ int student_print(const char *file, const sample_file *s, const student_report *
     char name[128];
     int failed;
     student_pdf_name(p, name, sizeof name);
-    printf("pathlab check-sampler %s: %ld directions%s, against %s\n", file, s->n, s->pdf ? " and their pdf" : "", name);
+    printf("pathlab check-sampler %s: %ld directions%s, against %s\n", shown(file), s->n, s->pdf ? " and their pdf" : "", name);
     printf("alpha %g for the whole check: %.3g for each of its %d statistical tests (Sidak); seed %llu\n", alpha,
            r->alpha_each, s->pdf ? 2 : 1, (unsigned long long)seed);
     if (s->n < STUDENT_MIN_SAMPLES)

@@ -2,6 +2,7 @@
  * The rays and their timing are geometry/ray_bench.h's; this file reads the flags and the mesh and
  * prints lines of the anchor's form, for compare.sh. */
 #include "cmd/bench_rays.h"
+#include "sys/shown.h"
 #include "geometry/ray_bench.h"
 #include "scene/obj.h"
 #include "sys/clock.h"
@@ -18,7 +19,7 @@ static void print_result(const char *path, const mesh *m, double load_ms, int th
                                  "diffuse: %ld rays, %ld hits, %.2f Mrays/s\n",
                                  "shadow:  %ld rays, %ld occluded, %.2f Mrays/s\n"};
     int kind;
-    printf("mesh %s: %d triangles, %d vertices, load %.0f ms\n", path, m->ntris, m->nverts, load_ms);
+    printf("mesh %s: %d triangles, %d vertices, load %.0f ms\n", shown(path), m->ntris, m->nverts, load_ms);
     printf("pathlab build (binned SAH, %d threads): %.1f ms (best of %d)\n", threads, r->build_ms, RAY_BENCH_BUILDS);
     for (kind = RAY_BENCH_PRIMARY; kind <= RAY_BENCH_SHADOW; kind++)
         printf(fmt[kind], r->rays[kind], r->hits[kind], (double)r->rays[kind] / r->secs[kind] * 1e-6);

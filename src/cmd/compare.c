@@ -16,6 +16,7 @@
  * - What is measured (the reference's noise taken off each MSE) is compare/compare_results.h; what is
  *   written once all is rendered (heatmaps on one scale, notes, mosaic, tables, page) compare/compare_outputs.h. */
 #include "cmd/compare.h"
+#include "sys/shown.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -71,7 +72,7 @@ static int split_args(int argc, char **argv, const cli_flag *own, char **mine, i
     for (i = 1; i < argc; i++) {
         for (k = 0; RENDER_ONLY[k]; k++)
             if (cli_flag_is(argv[i], RENDER_ONLY[k])) {
-                fprintf(stderr, "pathlab: compare: %s is a flag of render only\n", argv[i]);
+                fprintf(stderr, "pathlab: compare: %s is a flag of render only\n", shown(argv[i]));
                 return 1;
             }
         for (k = 0; own[k].name && !cli_flag_is(argv[i], own[k].name); k++) continue;
@@ -148,7 +149,7 @@ static int parse_args(comparison *c, int argc, char **argv)
 static int load_scene(const comparison *c, scene *s)
 {
     if (scene_load(s, c->base.scene, c->base.ro.threads, 1)) return 1;
-    if (s->lights.n == 0) fprintf(stderr, "pathlab: warning: %s has no emitters: every image is black\n", c->base.scene);
+    if (s->lights.n == 0) fprintf(stderr, "pathlab: warning: %s has no emitters: every image is black\n", shown(c->base.scene));
     return 0;
 }
 
@@ -164,11 +165,11 @@ static int make_camera(comparison *c, const scene *s)
         if (render_make_camera(&c->spec[i].a, s, i ? &cam : &c->cam)) return 1;
         if (i && (cam.width != c->cam.width || cam.height != c->cam.height)) {
             fprintf(stderr, "pathlab: compare: estimator '%s' renders %dx%d but '%s' %dx%d: one size for all\n",
-                    label, cam.width, cam.height, first, c->cam.width, c->cam.height);
+                    shown(label), cam.width, cam.height, shown(first), c->cam.width, c->cam.height);
             return 1;
         }
         if (i && !(same_vec(cam.eye, c->cam.eye) && same_vec(cam.w, c->cam.w) && same_vec(cam.u, c->cam.u) && same_vec(cam.v, c->cam.v))) {
-            fprintf(stderr, "pathlab: compare: estimator '%s' sees the scene from another camera than '%s': one view for all\n", label, first);
+            fprintf(stderr, "pathlab: compare: estimator '%s' sees the scene from another camera than '%s': one view for all\n", shown(label), shown(first));
             return 1;
         }
     }
@@ -186,7 +187,7 @@ static int choose_spp(comparison *c, const scene *s)
             if (compare_calibrate(s, &c->cam, c->spec[i].a.ro, CALIB_FRACTION * c->time, &sec_per_spp)) return 1;
             e->row.spp = (int)fmin(1 << 30, fmax(1.0, floor(c->time / sec_per_spp + 0.5)));
             if (!c->base.ro.quiet)
-                fprintf(stderr, "compare: %s: %.3g ms per spp -> %d spp for %g s\n", c->spec[i].label, 1e3 * sec_per_spp, e->row.spp, c->time);
+                fprintf(stderr, "compare: %s: %.3g ms per spp -> %d spp for %g s\n", shown(c->spec[i].label), 1e3 * sec_per_spp, e->row.spp, c->time);
         } else {
             e->row.spp = c->spp;
         }
@@ -224,7 +225,7 @@ static int render_estimators(comparison *c, const scene *s, const compare_refere
         ro.spp = e->row.spp;
         if (compare_render_image(s, &c->cam, &ro, &e->img, &e->var, &e->row.secs)) return 1;
         compare_measure(&e->row, &e->img, ref);
-        if (!c->base.ro.quiet) fprintf(stderr, "compare: %s: %d spp in %.3f s, RMSE %.4g\n", sp->label, e->row.spp, e->row.secs, e->row.rmse);
+        if (!c->base.ro.quiet) fprintf(stderr, "compare: %s: %d spp in %.3f s, RMSE %.4g\n", shown(sp->label), e->row.spp, e->row.secs, e->row.rmse);
         if (compare_save_image(c->dir, "", sp->slug, ".pfm", &e->img, 0.0f) || compare_save_image(c->dir, "", sp->slug, ".png", &e->img, c->base.exposure)) return 1;
     }
     return 0;

@@ -1,5 +1,6 @@
 /* convert.c — pathlab convert: reads a PFM, prints its figures, writes it by extension. */
 #include "cmd/convert.h"
+#include "sys/shown.h"
 #include <math.h>
 #include <stdio.h>
 #include "image/image.h"
@@ -31,7 +32,7 @@ static void print_figures(const image *im, const char *path)
         if (v < lo[i % 3]) lo[i % 3] = v;
         if (v > hi[i % 3]) hi[i % 3] = v;
     }
-    printf("%s: %d x %d\n", path, im->w, im->h);
+    printf("%s: %d x %d\n", shown(path), im->w, im->h);
     for (ch = 0; ch < 3; ch++)
         printf("  %-5s mean %.6g  min %.6g  max %.6g\n", ch == 0 ? "red" : ch == 1 ? "green" : "blue", sum[ch] / (double)n, lo[ch], hi[ch]);
 }
@@ -48,7 +49,7 @@ int convert_main(int argc, char **argv)
     if (cli_parse("convert", argc, argv, tables, &exposure, path, 2, &n)) return 2;
     if (n != 2) { fprintf(stderr, "pathlab convert: needs an input and an output\n" CONVERT_USAGE); return 2; }
     if (img_format_of(path[1]) == IMG_UNKNOWN) {
-        fprintf(stderr, "pathlab convert: %s: unknown image format (use .pfm, .ppm or .png)\n", path[1]);
+        fprintf(stderr, "pathlab convert: %s: unknown image format (use .pfm, .ppm or .png)\n", shown(path[1]));
         return 2;
     }
     if (output_path_check("convert", "output", path[1], IMG_EXTENSIONS)) return 2;

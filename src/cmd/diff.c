@@ -1,6 +1,7 @@
 /* diff.c — the `pathlab diff` command: reads the images, prints their errors (stats/image_diff.h)
  * and writes the heatmap if asked (image/heatmap.h). */
 #include "cmd/diff.h"
+#include "sys/shown.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include "image/heatmap.h"
@@ -32,8 +33,8 @@ static int read_pair(image im[2], const char *const path[2])
     if (img_read_pfm_info(&im[0], path[0], &info[0])) return 1;
     if (img_read_pfm_info(&im[1], path[1], &info[1])) { img_free(&im[0]); return 1; }
     if (info[0].channels != info[1].channels)
-        fprintf(stderr, "pathlab diff: %s is %s but %s is %s: compare images of the same kind\n", path[0],
-                kind_of(&info[0]), path[1], kind_of(&info[1]));
+        fprintf(stderr, "pathlab diff: %s is %s but %s is %s: compare images of the same kind\n", shown(path[0]),
+                shown(kind_of(&info[0])), shown(path[1]), shown(kind_of(&info[1])));
     else if (img_check_radiance(&im[0], path[0], 5) == 0)
         return 0;
     img_free(&im[0]);
@@ -53,7 +54,7 @@ static int diff_one(const char *image_path, const char *ref_path, const char *he
     path[1] = ref_path;
     if (read_pair(im, path)) return 2;
     if (image_diff_compute(&s, &im[0], &im[1])) {
-        fprintf(stderr, "pathlab diff: %s is %dx%d but %s is %dx%d\n", path[0], im[0].w, im[0].h, path[1], im[1].w, im[1].h);
+        fprintf(stderr, "pathlab diff: %s is %dx%d but %s is %dx%d\n", shown(path[0]), im[0].w, im[0].h, shown(path[1]), im[1].w, im[1].h);
         rc = 2;
     } else {
         print_stats(&s);
@@ -96,7 +97,7 @@ int diff_main(int argc, char **argv)
     if (heat && n == 1 && output_path_check("diff", "--heatmap", heat, IMG_EXTENSIONS)) { free(words); return 2; }
     for (k = 0; k < n; k++) {
         int one;
-        if (n > 1) printf("%s%s:\n", k ? "\n" : "", words[k]);
+        if (n > 1) printf("%s%s:\n", k ? "\n" : "", shown(words[k]));
         one = diff_one(words[k], ref, heat, scale);
         if (one > rc) rc = one;
     }

@@ -1,6 +1,7 @@
 /* estimators.c — the estimator language of pathlab compare: split the list, expand the names
  * into render flags, parse those flags (see estimators.h). */
 #include "cmd/estimators.h"
+#include "sys/shown.h"
 #include <stdio.h>
 #include <string.h>
 #include "tracer/integrator.h"
@@ -34,7 +35,7 @@ typedef struct {
 static int add_flag(flag_list *f, const char *s)
 {
     if (f->n >= MAX_FLAGS) {
-        fprintf(stderr, "pathlab: compare: estimator '%s': more than %d flags\n", f->label, MAX_FLAGS);
+        fprintf(stderr, "pathlab: compare: estimator '%s': more than %d flags\n", shown(f->label), MAX_FLAGS);
         return 1;
     }
     f->tok[f->n++] = (char *)s;
@@ -61,7 +62,7 @@ static int expand_name(flag_list *f, const char *w, size_t n)
             const char *name = STRATEGIES[t].names[k], *word = shorthand(t, name);
             if (strlen(word) == n && !strncmp(word, w, n)) return add_flag(f, STRATEGIES[t].flag) || add_flag(f, name);
         }
-    fprintf(stderr, "pathlab: compare: estimator '%s': unknown name '%.*s'\n", f->label, (int)n, w);
+    fprintf(stderr, "pathlab: compare: estimator '%s': unknown name '%.*s'\n", shown(f->label), (int)n, w);
     print_names();
     return 1;
 }
@@ -133,7 +134,7 @@ static int make_slug(estimator_spec *e)
     }
     while (n > 0 && e->slug[n - 1] == '-') n--;
     e->slug[n] = '\0';
-    if (!n) { fprintf(stderr, "pathlab: compare: label '%s' has no letter or digit to name its files\n", e->label); return 1; }
+    if (!n) { fprintf(stderr, "pathlab: compare: label '%s' has no letter or digit to name its files\n", shown(e->label)); return 1; }
     return 0;
 }
 
@@ -146,11 +147,11 @@ static int apply_flags(estimator_spec *e, const flag_list *f, const render_args 
     e->a.spp_given = 0;
     for (i = 0; i < f->n; i++)
         if (render_parse_flag(&e->a, f->n, (char **)f->tok, &i)) {
-            fprintf(stderr, "pathlab: compare: in estimator '%s'\n", e->label);
+            fprintf(stderr, "pathlab: compare: in estimator '%s'\n", shown(e->label));
             return 1;
         }
     if (e->a.scene || e->a.out || e->a.variance || e->a.ro.split || e->a.spp_given) {
-        fprintf(stderr, "pathlab: compare: estimator '%s': %s\n", e->label,
+        fprintf(stderr, "pathlab: compare: estimator '%s': %s\n", shown(e->label),
                 e->a.scene ? "a word that is neither a flag, a flag's value nor a name" :
                 e->a.spp_given ? "--spp is set for all estimators (--spp or --time of compare), not for one" :
                 "-o, --variance and --split are not for an estimator");

@@ -7,6 +7,7 @@
 #include "grade/class_run.h"
 #include "grade/folder.h"
 #include "sys/output_path.h"
+#include "sys/shown.h"
 #include "util/cli.h"
 #include "util/path.h"
 
@@ -33,11 +34,11 @@ static int check_outputs(const grade_job *j)
     const char *r = j->report;
     if (j->heatmap && !(j->nimages > 1 ? path_is_dir(j->heatmap) : img_format_of(j->heatmap) != IMG_UNKNOWN)) {
         fprintf(stderr, j->nimages > 1 ? "pathlab grade: --heatmap %s: with several images, give a folder that exists\n"
-                                       : "pathlab grade: --heatmap %s: unknown image format (use .pfm, .ppm or .png)\n", j->heatmap);
+                                       : "pathlab grade: --heatmap %s: unknown image format (use .pfm, .ppm or .png)\n", shown(j->heatmap));
         return 1;
     }
     if (r && !path_ends_with(r, ".md") && !path_ends_with(r, ".csv") && !path_ends_with(r, ".html")) {
-        fprintf(stderr, "pathlab grade: --report %s: use a name ending in .md (Markdown), .csv or .html\n", r);
+        fprintf(stderr, "pathlab grade: --report %s: use a name ending in .md (Markdown), .csv or .html\n", shown(r));
         return 1;
     }
     if (j->heatmap && (j->nimages > 1 ? output_dir_check("grade", "--heatmap", j->heatmap)

@@ -2,6 +2,7 @@
  * custom ones store into an enum or a pair of fields, or check a range or a conflict); the camera
  * they describe is made by files/view_setup.c. */
 #include "cmd/render_args.h"
+#include "sys/shown.h"
 #include "sys/parallel.h"
 #include <stdio.h>
 #include <stdlib.h>
@@ -202,7 +203,7 @@ int render_parse_flag(render_args *a, int argc, char **argv, int *i)
     const cli_flag *tables[3];
     if (cli_is_word(argv[*i])) {
         if (a->scene) {
-            fprintf(stderr, "pathlab %s: one scene only, got '%s' and '%s'\n", a->cmd, a->scene, argv[*i]);
+            fprintf(stderr, "pathlab %s: one scene only, got '%s' and '%s'\n", a->cmd, shown(a->scene), shown(argv[*i]));
             return 1;
         }
         a->scene = argv[*i];

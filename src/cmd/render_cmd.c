@@ -1,6 +1,7 @@
 /* render_cmd.c — pathlab render: flags, scene, camera, render (resumed or not), image files with
  * their sidecars, and what a stop by Ctrl-C or --time wrote. */
 #include "cmd/render_cmd.h"
+#include "sys/shown.h"
 #include <inttypes.h>
 #include <stdio.h>
 #include <string.h>
@@ -38,7 +39,7 @@ static int check_render_args(render_args *a)
         return 1;
     }
     if (a->resume && img_format_of(a->out) != IMG_PFM) {
-        fprintf(stderr, "pathlab render: --resume adds samples to a .pfm image, not to %s\n", a->out);
+        fprintf(stderr, "pathlab render: --resume adds samples to a .pfm image, not to %s\n", shown(a->out));
         return 1;
     }
     if (a->resume && !a->spp_given && a->ro.time_limit <= 0) {
@@ -144,7 +145,7 @@ static void report_stop(const render_args *a, const render_plan *p, const render
     if (r->interrupted && a->adaptive)
         fprintf(stderr, "pathlab render: interrupted (%s) after %s at sample %d of the %d the noisiest pixels wanted "
                 "(a mean of %.1f spp per pixel, see the sample count): written %s\n", interrupt_name(r->interrupted), el, r->spp,
-                ar->max_spp, ar->mean_spp, a->out);
+                ar->max_spp, ar->mean_spp, shown(a->out));
     else if (r->interrupted)
         fprintf(stderr, "pathlab render: interrupted (%s) at %" PRId64 " of %" PRId64 " spp after %s: written %s%s%s "
                 "(add samples with --resume)\n", interrupt_name(r->interrupted), spp, asked, el, a->out,
@@ -152,7 +153,7 @@ static void report_stop(const render_args *a, const render_plan *p, const render
     else if (a->adaptive && !strcmp(m->stopped, "time"))
         fprintf(stderr, "pathlab render: --time %.9g s: stopped at sample %d of the %d the noisiest pixels wanted: those pixels "
                         "have fewer samples than --target-error asks (see the sample count), written %s\n", a->ro.time_limit, r->spp,
-                ar->max_spp, a->out);
+                ar->max_spp, shown(a->out));
     else if (!a->adaptive && r->spp < p->ro.spp && a->spp_given)
         fprintf(stderr, "pathlab render: --time %.9g s: %" PRId64 " of %" PRId64 " spp fitted, written %s\n", a->ro.time_limit, spp, asked, a->out);
 }
@@ -198,10 +199,10 @@ int render_main(int argc, char **argv)
     if (scene_load(&s, a.scene, a.ro.threads, a.ro.quiet)) return 2;
     if (!a.ro.quiet)
         fprintf(stderr, "%s: %d triangles (%d degenerate dropped), %d emitting, %d materials; loaded in %.0f ms, BVH in %.0f ms\n",
-                a.scene, s.m.ntris, s.m.ndegenerate, s.lights.n, s.m.nmats - 1, 1e3 * s.load_seconds, 1e3 * s.bvh_seconds);
+                shown(a.scene), s.m.ntris, s.m.ndegenerate, s.lights.n, s.m.nmats - 1, 1e3 * s.load_seconds, 1e3 * s.bvh_seconds);
     if (render_make_camera(&a, &s, &cam)) { scene_free(&s); return 2; }
     if (s.lights.n == 0)
-        fprintf(stderr, "pathlab render: warning: %s has no emitters (no material with Ke > 0): the image is black\n", a.scene);
+        fprintf(stderr, "pathlab render: warning: %s has no emitters (no material with Ke > 0): the image is black\n", shown(a.scene));
     rc = render_and_write(&a, &p, &s, &cam);
     scene_free(&s);
     return rc;

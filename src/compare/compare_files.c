@@ -1,5 +1,6 @@
 /* compare_files.c — DIR, its files, and the reference given (compare_files.h). */
 #include "compare/compare_files.h"
+#include "sys/shown.h"
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
@@ -18,13 +19,13 @@ int compare_check_names(const compare_estimator *est, int n)
         for (j = 0; RESERVED[j]; j++)
             if (!strcmp(e->slug, RESERVED[j])) {
                 fprintf(stderr, "pathlab: compare: label '%s' would write over DIR/%s.*: name it, e.g. \"my %s=%s\"\n",
-                        label, RESERVED[j], label, e->row.flags);
+                        shown(label), shown(RESERVED[j]), shown(label), shown(e->row.flags));
                 return 1;
             }
         for (j = 0; j < i; j++)
             if (!strcmp(e->slug, est[j].slug)) {
                 fprintf(stderr, "pathlab: compare: estimators '%s' and '%s' would both write DIR/%s.pfm: label one (LABEL=FLAGS)\n",
-                        est[j].row.label, label, e->slug);
+                        shown(est[j].row.label), shown(label), shown(e->slug));
                 return 1;
             }
     }
@@ -34,7 +35,7 @@ int compare_check_names(const compare_estimator *est, int n)
 int compare_make_dir(const char *dir)
 {
     if (mkdir(dir, 0777) && errno != EEXIST) {
-        fprintf(stderr, "pathlab: compare: cannot create %s: %s\n", dir, strerror(errno));
+        fprintf(stderr, "pathlab: compare: cannot create %s: %s\n", shown(dir), strerror(errno));
         return 1;
     }
     return 0;
@@ -43,7 +44,7 @@ int compare_make_dir(const char *dir)
 int compare_out_path(char *path, const char *dir, const char *pre, const char *slug, const char *ext)
 {
     if (snprintf(path, PATH_CAP, "%s/%s%s%s", dir, pre, slug, ext) >= PATH_CAP) {
-        fprintf(stderr, "pathlab: compare: path too long in %s\n", dir);
+        fprintf(stderr, "pathlab: compare: path too long in %s\n", shown(dir));
         return 1;
     }
     return 0;
@@ -61,12 +62,12 @@ int compare_read_reference(compare_reference *ref, const char *path, const char 
     if (img_read_pfm(img, path)) return 1;
     if (img->w != w || img->h != h) {
         fprintf(stderr, "pathlab: compare: the reference %s is %dx%d but the renders are %dx%d (use --size %dx%d, or another reference)\n",
-                path, img->w, img->h, w, h, img->w, img->h);
+                shown(path), img->w, img->h, w, h, img->w, img->h);
         return 1;
     }
     if (var_path && img_read_pfm(var, var_path)) return 1;
     if (var_path && (var->w != w || var->h != h)) {
-        fprintf(stderr, "pathlab: compare: --ref-var %s is %dx%d but the reference is %dx%d\n", var_path, var->w, var->h, w, h);
+        fprintf(stderr, "pathlab: compare: --ref-var %s is %dx%d but the reference is %dx%d\n", shown(var_path), var->w, var->h, w, h);
         return 1;
     }
     snprintf(ref->label, sizeof ref->label, "reference");

@@ -2,6 +2,7 @@
  * is built in memory streams (open_memstream) and handed to html_page_write as before_html and
  * after_html; every text from the command line (labels, flags, paths) is escaped. */
 #include "compare/compare_page.h"
+#include "sys/shown.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -141,7 +142,7 @@ int compare_write_page(const char *path, const compare_page *p)
     ref.name = p->ref_label, ref.img = p->ref, ref.var = p->ref_var, ref.link = NULL;
     page.title = p->title, page.images = im, page.nimages = n, page.ref = &ref;
     if (make_html(p, &before, &after)) {
-        fprintf(stderr, "%s: out of memory\n", path);
+        fprintf(stderr, "%s: out of memory\n", shown(path));
         err = 1;
     } else {
         page.before_html = before, page.after_html = after;

@@ -1,6 +1,7 @@
 /* view_images.c — the images of a viewer page read with what lies beside them (view_images.h). */
 #include "compare/view_images.h"
 #include <errno.h>
+#include "sys/shown.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -19,8 +20,8 @@ static int read_sized(image *im, const char *path, const char **first, const ima
     if (img_read_pfm(im, path)) return 2;
     if (!*first) { *first = path; return 0; }
     if (im->w == first_img->w && im->h == first_img->h) return 0;
-    fprintf(stderr, "pathlab view: %s is %dx%d, %s is %dx%d: the images of a page must have one size\n", path, im->w,
-            im->h, *first, first_img->w, first_img->h);
+    fprintf(stderr, "pathlab view: %s is %dx%d, %s is %dx%d: the images of a page must have one size\n", shown(path), im->w,
+            im->h, shown(*first), first_img->w, first_img->h);
     return 2;
 }
 
@@ -93,7 +94,7 @@ static int read_layers(view_data *d, const char *image0, const char *layers, con
         h->name = d->layer_name[d->nlayers];
         h->img = &d->layer[d->nlayers++];
     }
-    if (layers && !d->nlayers) { fprintf(stderr, "pathlab view: no layer %s_L0.pfm, %s_L1.pfm ...\n", layers, layers); return 2; }
+    if (layers && !d->nlayers) { fprintf(stderr, "pathlab view: no layer %s_L0.pfm, %s_L1.pfm ...\n", shown(layers), shown(layers)); return 2; }
     return 0;
 }
 

@@ -1,5 +1,6 @@
 /* render_files.c — a render's files and their sidecars, written and read back. */
 #include "files/render_files.h"
+#include "sys/shown.h"
 #include "render/render.h"
 #include "sys/atomic_file.h"
 #include "sys/input_file.h"
@@ -32,7 +33,7 @@ int render_files_check_outputs(const char *out, const char *var_out, const char 
         if (output_path_check("render", "--split --variance", layer, IMG_PFM_EXTENSION)) return 1;
     }
     if (var_out && img_format_of(var_out) != IMG_PFM) {
-        fprintf(stderr, "pathlab render: --variance %s: the variance is written as .pfm\n", var_out);
+        fprintf(stderr, "pathlab render: --variance %s: the variance is written as .pfm\n", shown(var_out));
         return 1;
     }
     if (var_out && output_path_check("render", "--variance", var_out, IMG_PFM_EXTENSION)) return 1;
@@ -88,7 +89,7 @@ static const char *stage(file_set *fs, const char *final)
         char **f = realloc(fs->final, sizeof *f * (size_t)cap), **p;
         if (f) fs->final = f;
         p = f ? realloc(fs->pending, sizeof *p * (size_t)cap) : NULL;
-        if (!p) { fprintf(stderr, "%s: out of memory\n", final); return NULL; }
+        if (!p) { fprintf(stderr, "%s: out of memory\n", shown(final)); return NULL; }
         fs->pending = p;
         fs->cap = cap;
     }
@@ -97,7 +98,7 @@ static const char *stage(file_set *fs, const char *final)
     if (!fs->final[fs->n] || !fs->pending[fs->n]) {
         free(fs->final[fs->n]);
         free(fs->pending[fs->n]);
-        fprintf(stderr, "%s: out of memory\n", final);
+        fprintf(stderr, "%s: out of memory\n", shown(final));
         return NULL;
     }
     memcpy(fs->final[fs->n], final, len + 1);
@@ -118,12 +119,12 @@ static int renamable(const file_set *fs)
     for (i = 0; i < fs->n; i++) {
         if (stat(fs->final[i], &st) == 0 && S_ISDIR(st.st_mode)) {
             fprintf(stderr, "%s: cannot write: a folder has that name (none of the %d files of this render was written)\n",
-                    fs->final[i], fs->n);
+                    shown(fs->final[i]), fs->n);
             return 1;
         }
         if (lstat(fs->final[i], &st) == 0 && S_ISREG(st.st_mode) && !(st.st_mode & S_IWUSR)) {
             fprintf(stderr, "%s: is read-only: not replaced (none of the %d files of this render was written)\n",
-                    fs->final[i], fs->n);
+                    shown(fs->final[i]), fs->n);
             return 1;
         }
     }
@@ -145,7 +146,7 @@ static int finish(file_set *fs, int commit)
     for (i = 0; i < fs->n; i++) {
         if (commit && !err) keep_mode(fs->pending[i], fs->final[i]);
         if (commit && !err && rename(fs->pending[i], fs->final[i]) != 0) {
-            fprintf(stderr, "%s: cannot write: %s\n", fs->final[i], strerror(errno));
+            fprintf(stderr, "%s: cannot write: %s\n", shown(fs->final[i]), strerror(errno));
             err = 1;
         }
         if (!commit || err) unlink(fs->pending[i]);
@@ -253,21 +254,21 @@ static int check_one(const char *cmd, const char *path, const char *kind, const 
     img_pfm_info info;
     int rc = sidecar_read(m, path);
     if (rc < 0) fprintf(stderr, "pathlab %s: %s has no sidecar %s.meta: it was not written by pathlab render "
-                                "(or the .meta was not copied with it), so its samples are unknown\n", cmd, path, path);
+                                "(or the .meta was not copied with it), so its samples are unknown\n", cmd, shown(path), shown(path));
     if (rc) return 1;
     if (strcmp(m->kind, kind)) {
-        fprintf(stderr, "pathlab %s: %s is a %s image, expected a %s image\n", cmd, path, m->kind, kind);
+        fprintf(stderr, "pathlab %s: %s is a %s image, expected a %s image\n", cmd, shown(path), shown(m->kind), shown(kind));
         return 1;
     }
     sidecar_ranges_text(m, a, sizeof a);
     sidecar_ranges_text(of ? of : m, b, sizeof b);
     if (strcmp(a, b)) {
-        fprintf(stderr, "pathlab %s: %s holds samples %s, but its image holds %s: files of two renders mixed up\n", cmd, path, a, b);
+        fprintf(stderr, "pathlab %s: %s holds samples %s, but its image holds %s: files of two renders mixed up\n", cmd, shown(path), shown(a), shown(b));
         return 1;
     }
     if (of && same_render(cmd, path, m, of)) return 1;
     if (img_format_of(path) != IMG_PFM) {
-        fprintf(stderr, "pathlab %s: %s: need the .pfm (linear float) image, not an 8-bit one\n", cmd, path);
+        fprintf(stderr, "pathlab %s: %s: need the .pfm (linear float) image, not an 8-bit one\n", cmd, shown(path));
         return 1;
     }
     if (img_read_pfm_header(path, &info)) return 1;

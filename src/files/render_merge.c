@@ -2,6 +2,7 @@
  * sidecars), then combine them one at a time, so that memory holds one input and the sums whatever
  * their number. */
 #include "files/render_merge.h"
+#include "sys/shown.h"
 #include "files/render_files.h"
 #include "stats/combine.h"
 #include "tracer/integrator.h"
@@ -29,17 +30,17 @@ static int check_inputs(input *in, int n, sidecar *all)
     for (i = 0; i < n; i++) {
         int rc = sidecar_read(&in[i].meta, in[i].path);
         if (rc < 0) fprintf(stderr, "pathlab merge: %s has no sidecar %s.meta: merge needs to know its samples "
-                                    "(was it written by pathlab render? copy the .meta with it)\n", in[i].path, in[i].path);
+                                    "(was it written by pathlab render? copy the .meta with it)\n", shown(in[i].path), shown(in[i].path));
         if (rc) return 1;
         if (sidecar_is_sobol(&in[i].meta)) {
             fprintf(stderr, "pathlab merge: %s was rendered with --sampler %s: Sobol renders cannot be merged: the file "
                             "keeps the mean and the variance, not the sums of each scrambling that the variance needs, "
                             "and pieces of one scrambled sequence are not independent. Render pieces to merge with "
-                            "--sampler independent\n", in[i].path, in[i].meta.sampler);
+                            "--sampler independent\n", shown(in[i].path), shown(in[i].meta.sampler));
             return 1;
         }
         if (strcmp(in[i].meta.kind, "mean")) {
-            fprintf(stderr, "pathlab merge: %s is a %s image: give the images, their variances come along\n", in[i].path, in[i].meta.kind);
+            fprintf(stderr, "pathlab merge: %s is a %s image: give the images, their variances come along\n", shown(in[i].path), shown(in[i].meta.kind));
             return 1;
         }
     }
@@ -51,7 +52,7 @@ static int check_inputs(input *in, int n, sidecar *all)
         if (strcmp(in[0].meta.revision, in[i].meta.revision) && !warned++)
             fprintf(stderr, "pathlab merge: warning: %s and %s were made by different pathlab revisions (%s, %s): "
                             "merge them only if the estimator did not change between them\n",
-                    in[0].path, in[i].path, in[0].meta.revision, in[i].meta.revision);
+                    shown(in[0].path), shown(in[i].path), shown(in[0].meta.revision), shown(in[i].meta.revision));
     }
     return 0;
 }
@@ -71,8 +72,8 @@ static int common_layers(const input *in, int n)
     int i;
     for (i = 1; i < n; i++)
         if (in[i].meta.layers_n != in[0].meta.layers_n || (in[0].meta.layers_n && in[i].meta.layers_first != in[0].meta.layers_first)) {
-            fprintf(stderr, "pathlab merge: note: %s has layers %s and %s %s: merging the totals only\n", in[0].path,
-                    layers_text(&in[0].meta, a, sizeof a), in[i].path, layers_text(&in[i].meta, b, sizeof b));
+            fprintf(stderr, "pathlab merge: note: %s has layers %s and %s %s: merging the totals only\n", shown(in[0].path),
+                    layers_text(&in[0].meta, a, sizeof a), shown(in[i].path), layers_text(&in[i].meta, b, sizeof b));
             return 0;
         }
     return in[0].meta.layers_n > 0;
@@ -86,7 +87,7 @@ static int add_inputs(const input *in, int n, int nlayers, int with_var, combine
         render_files rf;
         if (render_files_read(&rf, in[i].path, with_var, "merge")) return 1;
         if (rf.nlayers < nlayers || rf.mean[0].w != first->mean[0].w || rf.mean[0].h != first->mean[0].h) {
-            fprintf(stderr, "pathlab merge: %s does not have the size or the layers of %s\n", in[i].path, in[0].path);
+            fprintf(stderr, "pathlab merge: %s does not have the size or the layers of %s\n", shown(in[i].path), shown(in[0].path));
             render_files_free(&rf);
             return 1;
         }

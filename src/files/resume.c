@@ -1,5 +1,6 @@
 /* resume.c — the checks of render --resume, and the sums of the old and the new samples. */
 #include "files/resume.h"
+#include "sys/shown.h"
 #include "stats/combine.h"
 #include "sys/output_path.h"
 #include "util/path.h"
@@ -15,7 +16,7 @@ static int refuse_sobol(const char *out, sampler_kind sampler, const sidecar *ha
     fprintf(stderr, "pathlab render: --resume: %s%s%s%s: a Sobol render cannot be resumed: its file keeps the mean and the "
             "variance, not the sums of each scrambling that the variance needs, and more points of the same "
             "scrambled sequences are not independent of those it has. Render it again with the --spp wanted, "
-            "or use --sampler independent for renders to resume\n", out,
+            "or use --sampler independent for renders to resume\n", shown(out),
             sidecar_is_sobol(had) ? " was rendered with --sampler " : " (this render: --sampler ",
             sidecar_is_sobol(had) ? had->sampler : SAMPLER_NAMES[sampler], sidecar_is_sobol(had) ? "" : ")");
     return 1;
@@ -26,7 +27,7 @@ int resume_read(render_files *prev, sidecar *had, const char *out, const sidecar
 {
     int rc = sidecar_read(had, out);
     if (rc < 0 && access(out, F_OK) != 0) {
-        fprintf(stderr, "pathlab render: --resume: %s does not exist: there is nothing to resume (leave out --resume)\n", out);
+        fprintf(stderr, "pathlab render: --resume: %s does not exist: there is nothing to resume (leave out --resume)\n", shown(out));
         return 1;
     }
     if (rc < 0) render_files_read(prev, out, 0, "render");   /* says that it has no sidecar */
@@ -34,11 +35,11 @@ int resume_read(render_files *prev, sidecar *had, const char *out, const sidecar
     if (render_files_read(prev, out, had->variance[0] != '\0', "render")) return 1;
     if (sidecar_check_same(&prev->meta, now, "render --resume", out, "this render")) return 1;
     if (with_variance && !had->variance[0]) {
-        fprintf(stderr, "pathlab render: %s was rendered without --variance: its variance cannot be resumed\n", out);
+        fprintf(stderr, "pathlab render: %s was rendered without --variance: its variance cannot be resumed\n", shown(out));
         return 1;
     }
     if ((prev->nlayers > 1) != (split != 0)) {
-        fprintf(stderr, "pathlab render: %s was rendered %s --split: resume it %s --split\n", out,
+        fprintf(stderr, "pathlab render: %s was rendered %s --split: resume it %s --split\n", shown(out),
                 prev->nlayers > 1 ? "with" : "without", prev->nlayers > 1 ? "with" : "without");
         return 1;
     }

@@ -1,6 +1,7 @@
 /* sidecar.c — reading, writing and comparing the FILE.meta that says what made FILE. */
 #include "files/sidecar.h"
 #include "sys/input_file.h"
+#include "sys/shown.h"
 #include "sys/output_path.h"
 #include "tracer/integrator.h"
 #include "util/textfile.h"
@@ -171,7 +172,7 @@ int sidecar_read(sidecar *m, const char *image_path)
     sidecar_path(path, sizeof path, image_path);
     if (!(f = input_file_open(path, 1))) {   /* a FIFO named FILE.meta must not hang grade or view */
         if (errno == ENOENT) return -1;
-        fprintf(stderr, "%s: cannot read: %s\n", path, input_file_why(errno));
+        fprintf(stderr, "%s: cannot read: %s\n", shown(path), input_file_why(errno));
         return 1;
     }
     while (!err && fgets(line, sizeof line, f)) {
@@ -180,11 +181,11 @@ int sidecar_read(sidecar *m, const char *image_path)
         else if (split_line(line, &key, &value)) err = parse_line(m, key, value);
     }
     fclose(f);
-    if (err) fprintf(stderr, "%s:%d: %s\n", path, lineno, err == 2 ? "line too long"
+    if (err) fprintf(stderr, "%s:%d: %s\n", shown(path), lineno, err == 2 ? "line too long"
                      : err == 3 ? "a sample index beyond 2^62, the limit of --samples"
                      : err == 4 ? "a count of samples out of 1 .. 2^30, the limits of --spp" : "bad value");
-    else if (!m->kind[0] || !m->nranges) fprintf(stderr, "%s: no %s line: not a pathlab sidecar\n", path, m->kind[0] ? "samples" : "kind");
-    else if (m->adaptive[0] && m->spp_cap < 1) fprintf(stderr, "%s: an adaptive render without its spp-cap line\n", path);
+    else if (!m->kind[0] || !m->nranges) fprintf(stderr, "%s: no %s line: not a pathlab sidecar\n", shown(path), m->kind[0] ? "samples" : "kind");
+    else if (m->adaptive[0] && m->spp_cap < 1) fprintf(stderr, "%s: an adaptive render without its spp-cap line\n", shown(path));
     return err || !m->kind[0] || !m->nranges || (m->adaptive[0] && m->spp_cap < 1);
 }
 
@@ -204,7 +205,7 @@ int sidecar_add_ranges(sidecar *a, const sidecar *b, const char *a_name, const c
         else { r[n][0] = next[0]; r[n][1] = next[1]; n++; }
     }
     if (n > SIDECAR_MAX_RANGES) {
-        fprintf(stderr, "pathlab: %s and %s together have %d separate sample ranges (at most %d)\n", a_name, b_name, n, SIDECAR_MAX_RANGES);
+        fprintf(stderr, "pathlab: %s and %s together have %d separate sample ranges (at most %d)\n", shown(a_name), shown(b_name), n, SIDECAR_MAX_RANGES);
         return 1;
     }
     memcpy(a->range, r, sizeof(r[0]) * (size_t)n);
@@ -214,7 +215,7 @@ int sidecar_add_ranges(sidecar *a, const sidecar *b, const char *a_name, const c
 
 static int differ(const char *cmd, const char *a_name, const char *b_name, const char *key, const char *x, const char *y)
 {
-    fprintf(stderr, "pathlab %s: %s and %s differ in %s:\n  '%s'\n  '%s'\n", cmd, a_name, b_name, key, x, y);
+    fprintf(stderr, "pathlab %s: %s and %s differ in %s:\n  '%s'\n  '%s'\n", cmd, shown(a_name), shown(b_name), shown(key), shown(x), shown(y));
     return 1;
 }
 

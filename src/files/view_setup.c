@@ -1,6 +1,7 @@
 /* view_setup.c — the view of a render: --orbiter, --view or SCENE.view, the camera flags on top,
  * framing for the rest; the camera made of it; --write-view. */
 #include "files/view_setup.h"
+#include "sys/shown.h"
 #include "image/image.h"
 #include "scene/orbiter.h"
 #include "sys/input_file.h"
@@ -22,7 +23,7 @@ static int read_orbiter(view_setup *v, const char *cmd)
     if (!o.has_f && !(v->fov && v->size))
         fprintf(stderr, "pathlab %s: note: %s has no 'f fov width height' line (an older gKit file): rendering %dx%d "
                         "with a %g degree vertical fov; give the student's with --size and --fov\n",
-                cmd, v->orbiter, v->size ? v->flags.width : v->vw.width, v->size ? v->flags.height : v->vw.height,
+                cmd, shown(v->orbiter), v->size ? v->flags.width : v->vw.width, v->size ? v->flags.height : v->vw.height,
                 v->fov ? v->flags.fov : v->vw.fov);
     return 0;
 }
@@ -38,7 +39,7 @@ static int base_view(view_setup *v, const char *cmd, const char *scene_path)
     if (v->orbiter) return read_orbiter(v, cmd);
     if (v->view_file) {
         rc = view_read(&v->vw, v->view_file);
-        if (rc < 0) fprintf(stderr, "pathlab %s: --view %s: no such file\n", cmd, v->view_file);
+        if (rc < 0) fprintf(stderr, "pathlab %s: --view %s: no such file\n", cmd, shown(v->view_file));
         return rc != 0;
     }
     if (n + 6 < sizeof path) {

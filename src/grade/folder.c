@@ -1,5 +1,6 @@
 /* folder.c — a class's folder expanded into its images (folder.h). */
 #include "grade/folder.h"
+#include "sys/shown.h"
 #include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -48,7 +49,7 @@ int grade_list_add_folder(grade_list *l, const char *dir, const char *ref)
     DIR *d = opendir(dir);
     struct dirent *e;
     int first = l->n;
-    if (!d) { fprintf(stderr, "pathlab grade: cannot open the folder %s\n", dir); return 1; }
+    if (!d) { fprintf(stderr, "pathlab grade: cannot open the folder %s\n", shown(dir)); return 1; }
     while ((e = readdir(d)) != NULL) {
         char *path;
         if (!path_ends_with(e->d_name, ".pfm") || path_ends_with(e->d_name, "_var.pfm") || strstr(e->d_name, "_split_L") ||
@@ -61,6 +62,6 @@ int grade_list_add_folder(grade_list *l, const char *dir, const char *ref)
     }
     closedir(d);
     qsort(l->images + first, (size_t)(l->n - first), sizeof *l->images, by_name);
-    if (l->n == first) fprintf(stderr, "pathlab grade: warning: no .pfm image to grade in the folder %s\n", dir);
+    if (l->n == first) fprintf(stderr, "pathlab grade: warning: no .pfm image to grade in the folder %s\n", shown(dir));
     return 0;
 }

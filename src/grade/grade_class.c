@@ -10,6 +10,8 @@
 #include "image/radiance.h"
 #include "sys/input_file.h"
 #include "sys/output_path.h"
+#include "sys/shown.h"
+#include "util/report_text.h"
 #include "util/textfile.h"
 
 #define COMMAND_CAP 8192   /* a render command: several paths and flags */
@@ -37,7 +39,7 @@ int grade_check_reference(const grade_refs *refs, const char *ref_path, const ch
     }
     if (i < 0) return 0;
     fprintf(stderr, "pathlab grade: %s has a %s value at pixel x %ld, y %ld (y = 0 is the top row): not a reference\n",
-            ref_path, what, i / 3 % refs->ref->w, i / 3 / refs->ref->w);
+            shown(ref_path), what, i / 3 % refs->ref->w, i / 3 / refs->ref->w);
     return 2;
 }
 
@@ -134,7 +136,8 @@ int grade_read_image(image *img, grade_row *row, const grade_refs *refs, const c
                  info.channels == 1 ? "greyscale" : "colour", info.channels == 1 ? "Pf" : "PF", info.channels,
                  info.channels == 1 ? "" : "s", refs->channels == 1 ? "greyscale" : "colour",
                  refs->channels == 1 ? "one channel (Pf)" : "the three channels R, G, B (PF)");
-        fprintf(stderr, "pathlab grade: %s: %s\n", row->path, row->mistake);
+        fprintf(stderr, "pathlab grade: %s: %s\n", shown(row->path), shown(row->mistake));
+        img_free(img);
         return row->status = 2;
     }
     if (info.w != refs->ref->w || info.h != refs->ref->h) return wrong_size(row, info.w, info.h, refs, ref_path);
@@ -150,54 +153,64 @@ int grade_read_image(image *img, grade_row *row, const grade_refs *refs, const c
 void grade_print_class_header(const grade_opts *o, const char *ref_path, int nimages, const grade_refs *refs,
                               const char *var_path, const char *layer_prefix)
 {
-    printf("pathlab grade: %d images against %s (%dx%d)", nimages, ref_path, refs->ref->w, refs->ref->h);
+    printf("pathlab grade: %d images against %s (%dx%d)", nimages, shown(ref_path), refs->ref->w, refs->ref->h);
     printf(var_path ? ", its variance %s" : ", no variance beside it (exact pixels guessed)", var_path);
-    if (refs->nlayers) printf(", layers %s_L0..L%d.pfm", layer_prefix, refs->nlayers - 1);
+    if (refs->nlayers) printf(", layers %s_L0..L%d.pfm", shown(layer_prefix), refs->nlayers - 1);
     printf("\neach image is graded at family-wise level alpha %g: an unbiased image fails with probability at most %g, so %d "
            "honest images give about %.2g false alarms in all\n", o->alpha, o->alpha, nimages, o->alpha * nimages);
 }
 
 void grade_print_summary(const grade_row *rows, int n, const grade_opts *o)
 {
-    int k, count[3] = {0, 0, 0};
-    for (k = 0; k < n; k++) count[rows[k].status]++;
-    printf("summary: %d images, %d pass, %d fail, %d could not be read (alpha %g per image)\n", n, count[0], count[1], count[2], o->alpha);
+    int k, count[3] = {0, 0, 0}, flagged = 0;
+    for (k = 0; k < n; k++) count[rows[k].status]++, flagged += rows[k].remark[0] != '\0';
+    printf("summary: %d images, %d pass, %d fail, %d could not be read (alpha %g per image)", n, count[0], count[1], count[2], o->alpha);
+    if (flagged) printf("; %d FLAGGED:", flagged);
+    for (k = 0; k < n; k++) if (rows[k].remark[0]) printf(" %s", shown(rows[k].path));
+    printf("\n");
 }
 
 static const char *verdict_word(int status) { return status == 0 ? "PASS" : status == 1 ? "FAIL" : "UNREADABLE"; }
 
-/* s with " doubled, for a CSV field in quotes */
-static void csv_field(FILE *f, const char *s)
-{
-    fputc('"', f);
-    for (; *s; s++) { if (*s == '"') fputc('"', f); fputc(*s, f); }
-    fputc('"', f);
-}
-
-/* [NAME.html](LINK), the link's spaces and parentheses percent-encoded so that Markdown keeps it whole. */
+/* [NAME.html](LINK): the name escaped as any text, the link percent-encoded but for letters, digits
+ * and - . _ ~ / (page names are made of those, page_paths.h; a --pages folder may not be). */
 static void md_link(FILE *f, const char *link)
 {
     const char *s, *base = strrchr(link, '/') ? strrchr(link, '/') + 1 : link;
-    fprintf(f, "[%s](", base);
+    fputc('[', f);
+    md_put_text(f, base);
+    fputs("](", f);
     for (s = link; *s; s++) {
-        if (*s == ' ' || *s == '(' || *s == ')' || *s == '|') fprintf(f, "%%%02X", (unsigned char)*s);
-        else fputc(*s, f);
+        unsigned char c = (unsigned char)*s;
+        if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || strchr("-._~/", c)) fputc(c, f);
+        else fprintf(f, "%%%02X", c);
     }
     fputc(')', f);
 }
 
+/* Every text cell goes through md_put_text or csv_put_field (util/report_text.h): a name cannot add a
+ * row, a column, a link or markup. */
 static void write_md(FILE *f, const grade_row *rows, int n, const grade_opts *o, const char *ref_path)
 {
     int k;
-    fprintf(f, "# Grades against %s\n\nEach image graded at family-wise level alpha %g (`pathlab grade`; see docs/grading.md).\n\n",
-            ref_path, o->alpha);
-    fprintf(f, "| image | verdict | bias +- error | where | likely mistake | page |\n|---|---|---|---|---|---|\n");
+    fputs("# Grades against ", f);
+    md_put_text(f, ref_path);
+    fprintf(f, "\n\nEach image graded at family-wise level alpha %g (`pathlab grade`; see docs/grading.md).\n\n", o->alpha);
+    fprintf(f, "| image | verdict | bias +- error | where | likely mistake | page | flagged |\n|---|---|---|---|---|---|---|\n");
     for (k = 0; k < n; k++) {
         const grade_row *r = &rows[k];
         char bias[128];
         grade_bias_text(bias, sizeof bias, r);
-        fprintf(f, "| %s | %s | %s | %s | %s | ", r->path, verdict_word(r->status), bias, r->where, r->mistake);
+        fputs("| ", f);
+        md_put_text(f, r->path);
+        fprintf(f, " | %s%s | %s | ", verdict_word(r->status), r->remark[0] ? " (FLAGGED)" : "", bias);
+        md_put_text(f, r->where);
+        fputs(" | ", f);
+        md_put_text(f, r->mistake);
+        fputs(" | ", f);
         if (r->page[0]) md_link(f, r->page);
+        fputs(" | ", f);
+        md_put_text(f, r->remark);
         fprintf(f, " |\n");
     }
 }
@@ -205,19 +218,21 @@ static void write_md(FILE *f, const grade_row *rows, int n, const grade_opts *o,
 static void write_csv(FILE *f, const grade_row *rows, int n)
 {
     int k;
-    fprintf(f, "image,verdict,bias_percent,error_percent,channel,where,likely_mistake,page\n");
+    fprintf(f, "image,verdict,bias_percent,error_percent,channel,where,likely_mistake,page,flagged\n");
     for (k = 0; k < n; k++) {
         const grade_row *r = &rows[k];
-        csv_field(f, r->path);
+        csv_put_field(f, r->path);
         fprintf(f, ",%s,", verdict_word(r->status));
         if (r->status < 2 && r->channel[0] && r->bias_se < 0.0) fprintf(f, "%.4f,,%s,", 100 * r->bias, r->channel);
         else if (r->status < 2 && r->channel[0]) fprintf(f, "%.4f,%.4f,%s,", 100 * r->bias, 100 * r->bias_se, r->channel);
         else fprintf(f, ",,,");
-        csv_field(f, r->where);
+        csv_put_field(f, r->where);
         fputc(',', f);
-        csv_field(f, r->mistake);
+        csv_put_field(f, r->mistake);
         fputc(',', f);
-        csv_field(f, r->page);
+        csv_put_field(f, r->page);
+        fputc(',', f);
+        csv_put_field(f, r->remark);
         fputc('\n', f);
     }
 }
@@ -228,15 +243,9 @@ int grade_write_report(const char *path, const grade_row *rows, int n, const gra
     char tmp[PATH_CAP];
     size_t len = strlen(path);
     FILE *f;
-    if (len > 5 && !strcmp(path + len - 5, ".html")) {
-        if (grade_write_class_page(path, rows, n, o, ref_path, refs, imgs)) return 1;
-        printf("report: %s\n", path);
-        return 0;
-    }
+    if (len > 5 && !strcmp(path + len - 5, ".html")) return grade_write_class_page(path, rows, n, o, ref_path, refs, imgs);
     if (!(f = textfile_open(path, tmp, sizeof tmp))) return 1;
     if (len > 4 && !strcmp(path + len - 4, ".csv")) write_csv(f, rows, n);
     else write_md(f, rows, n, o, ref_path);
-    if (textfile_close(f, tmp, path)) return 1;
-    printf("report: %s\n", path);
-    return 0;
+    return textfile_close(f, tmp, path);
 }

@@ -17,7 +17,7 @@ void grade_print_class_header(const grade_opts *o, const char *ref_path, int nim
                               const char *var_path, const char *layer_prefix);
 void grade_print_summary(const grade_row *rows, int n, const grade_opts *o);
 /* Writes the report, by the name's extension (.md, .csv, or .html: a page with the graded images
- * imgs[k] (px NULL: none) against the reference), atomically; 0 or 1 (said). Rows with a page link
+ * imgs[k] (px NULL: none) against the reference), atomically; 0 or 1 (said why). Rows with a page link
  * to it (Markdown: a last column "page"). */
 int grade_write_report(const char *path, const grade_row *rows, int n, const grade_opts *o, const char *ref_path,
                        const grade_refs *refs, const image *imgs);

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "sys/output_path.h"
+#include "sys/shown.h"
 #include "util/path.h"
 
 static const char *const CHANNELS[3] = {"red", "green", "blue"};
@@ -107,6 +108,7 @@ static int put_verdict(FILE *f, const grade_page *p)
     if (bias[0]) { fputs("; bias ", f); err |= html_put_escaped(f, bias); }
     if (p->row->where[0]) { fputs(" in ", f); err |= html_put_escaped(f, p->row->where); }
     fputs(".</p>\n", f);
+    if (p->row->remark[0]) { fputs("<p class=\"flagged\"><b>FLAGGED</b>: ", f); err |= html_put_escaped(f, p->row->remark); fputs("</p>\n", f); }
     if (p->row->status == 1) fputs(p->nh ? "<p>Likely mistake:</p>\n<ul class=\"mistakes\">\n" : "<p>None of the catalogue of mistakes explains "
                                    "the difference (pathlab grade; docs/grading.md).</p>\n", f);
     for (k = 0; k < p->nh; k++) {
@@ -133,7 +135,7 @@ int grade_write_page(const grade_page *p)
     int err = !f, nmarks;
     if (f) err |= put_verdict(f, p);
     if (f) err |= fclose(f) != 0;
-    if (err) { fprintf(stderr, "%s: out of memory\n", p->path); free(before); return 1; }
+    if (err) { fprintf(stderr, "%s: out of memory\n", shown(p->path)); free(before); return 1; }
     grade_make_marks(&marks, p->r);
     nmarks = marks.n;
     memset(&page, 0, sizeof page);
@@ -151,19 +153,21 @@ static int put_class_table(FILE *f, const grade_row *rows, int n)
 {
     char bias[128];
     int k, err = 0;
-    fputs("<table class=\"grades\">\n<tr><th>image</th><th>verdict</th><th>bias +- error</th><th>where</th><th>likely mistake</th></tr>\n", f);
+    fputs("<table class=\"grades\">\n<tr><th>image</th><th>verdict</th><th>bias +- error</th><th>where</th><th>likely mistake</th><th>flagged</th></tr>\n", f);
     for (k = 0; k < n; k++) {
         const grade_row *r = &rows[k];
         grade_bias_text(bias, sizeof bias, r);
         fputs("<tr><td>", f);
         if (r->page[0]) { fputs("<a href=\"", f); err |= html_put_escaped(f, r->page); fputs("\">", f); }
         err |= html_put_escaped(f, r->path);
-        fprintf(f, "%s</td><td>%s</td><td>", r->page[0] ? "</a>" : "", verdict_word(r->status));
+        fprintf(f, "%s</td><td>%s%s</td><td>", r->page[0] ? "</a>" : "", verdict_word(r->status), r->remark[0] ? " (FLAGGED)" : "");
         err |= html_put_escaped(f, bias);
         fputs("</td><td>", f);
         err |= html_put_escaped(f, r->where);
         fputs("</td><td>", f);
         err |= html_put_escaped(f, r->mistake);
+        fputs("</td><td>", f);
+        err |= html_put_escaped(f, r->remark);
         fputs("</td></tr>\n", f);
     }
     fputs("</table>\n", f);
@@ -197,7 +201,7 @@ int grade_write_class_page(const char *path, const grade_row *rows, int n, const
         err |= put_class_table(f, rows, n);
         err |= fclose(f) != 0;
     }
-    if (err) { fprintf(stderr, "%s: out of memory\n", path); free(before); free(im); return 1; }
+    if (err) { fprintf(stderr, "%s: out of memory\n", shown(path)); free(before); free(im); return 1; }
     snprintf(title, sizeof title, "Grades against %s", ref_path);
     memset(&page, 0, sizeof page);
     ref.name = path_file_name(ref_path), ref.img = refs->ref, ref.var = refs->var, ref.link = NULL;

@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include "sys/shown.h"
 
 static const char *const CHANNELS[3] = {"red", "green", "blue"};
 
@@ -125,7 +126,7 @@ static void print_image_test(const grade_report *r)
 static void print_tests(const grade_report *r, const char *image, const char *ref, const grade_opts *o)
 {
     int k, full = r->blocks[0].x1 - r->blocks[0].x0;
-    printf("pathlab grade: %s against %s, %dx%d pixels", image, ref, r->w, r->h);
+    printf("pathlab grade: %s against %s, %dx%d pixels", shown(image), shown(ref), r->w, r->h);
     if (o->spp) printf(", %d spp", o->spp);
     if (o->ref_spp) printf(" (reference %d spp)", o->ref_spp);
     printf("\nalpha %g, family-wise over 3 families of tests, alpha/3 each, Sidak within each:\n", r->alpha);
@@ -307,14 +308,18 @@ void grade_fill_row(grade_row *row, const grade_report *r)
 
 void grade_print_row(const grade_row *row)
 {
-    if (row->status == 2) { printf("%s: UNREADABLE, %s\n", row->path, row->mistake); return; }
-    if (row->status == 0) { printf("%s: PASS (%+.2f%% +- %.2f%% in %s)\n", row->path, 100 * row->bias, 100 * row->bias_se, row->channel); return; }
-    printf("%s: FAIL", row->path);
-    if (row->channel[0] && row->bias_se == -2.0) printf(", %+.2f%% where significant", 100 * row->bias);
-    else if (row->channel[0] && row->bias_se < 0.0) printf(", %+.2f%% on the image's mean", 100 * row->bias);
-    else if (row->channel[0]) printf(", %+.2f%% +- %.2f%% in %s", 100 * row->bias, 100 * row->bias_se, row->channel);
-    if (row->where[0]) printf(" (%s)", row->where);
-    printf("%s%s\n", row->mistake[0] ? "; likely: " : "", row->mistake);
+    const char *name = shown(row->path);
+    if (row->status == 2) printf("%s: UNREADABLE, %s", name, shown(row->mistake));
+    else if (row->status == 0) printf("%s: PASS (%+.2f%% +- %.2f%% in %s)", name, 100 * row->bias, 100 * row->bias_se, row->channel);
+    else {
+        printf("%s: FAIL", name);
+        if (row->channel[0] && row->bias_se == -2.0) printf(", %+.2f%% where significant", 100 * row->bias);
+        else if (row->channel[0] && row->bias_se < 0.0) printf(", %+.2f%% on the image's mean", 100 * row->bias);
+        else if (row->channel[0]) printf(", %+.2f%% +- %.2f%% in %s", 100 * row->bias, 100 * row->bias_se, row->channel);
+        if (row->where[0]) printf(" (%s)", row->where);
+        printf("%s%s", row->mistake[0] ? "; likely: " : "", shown(row->mistake));
+    }
+    printf("%s%s\n", row->remark[0] ? "; FLAGGED: " : "", shown(row->remark));
 }
 
 void grade_bias_text(char *out, size_t cap, const grade_row *r)

@@ -19,6 +19,11 @@ typedef struct {
     char where[160];         /* where the significant groups are; "" if none */
     char mistake[1024];      /* the likely mistakes, "; " between them; the input error for status 2 */
     char page[PATH_CAP];     /* its page (grade_page.h) as the class report links it; "" if none */
+    char remark[640];        /* flagged (grade/integrity.h: a copy of the reference or of another image, made
+                                from the reference) or an output not written and why; "" if none */
+    unsigned char sha[32];   /* the SHA-256 of its pixels, when hashed */
+    int hashed;
+    int output_failed;       /* 1: its page or heatmap could not be written (the remark says why): exit 2 */
 } grade_row;
 
 /* The tests that ran, their levels and counts, then the verdict with where and how much. */

@@ -7,6 +7,8 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include "math/sha256.h"
+#include "sys/shown.h"
 #include "util/path.h"
 
 /* dir/file (file NULL: dir alone) as an absolute path: the working folder before it when relative. */
@@ -31,10 +33,10 @@ int grade_pages_setup(grade_pages *p, const char *pages, const char *report)
     else if (report) snprintf(p->dir, sizeof p->dir, "%.*s-pages", (int)(base - report + stem), report);
     else return 0;
     if (mkdir(p->dir, 0777) && errno != EEXIST) {
-        fprintf(stderr, "pathlab grade: cannot create the folder %s for the pages: %s\n", p->dir, strerror(errno));
+        fprintf(stderr, "pathlab grade: cannot create the folder %s for the pages: %s\n", shown(p->dir), strerror(errno));
         return 1;
     }
-    if (!path_is_dir(p->dir)) { fprintf(stderr, "pathlab grade: --pages %s is not a folder\n", p->dir); return 1; }
+    if (!path_is_dir(p->dir)) { fprintf(stderr, "pathlab grade: --pages %s is not a folder\n", shown(p->dir)); return 1; }
     snprintf(dir, sizeof dir, "%.*s", base > report ? (int)(base - report) : 1, base > report ? report : ".");
     if (!report) p->back[0] = '\0';
     else if (!pages) snprintf(p->back, sizeof p->back, "../%s", base);
@@ -42,22 +44,41 @@ int grade_pages_setup(grade_pages *p, const char *pages, const char *report)
     return 0;
 }
 
-int grade_page_path(char *out, size_t cap, const grade_pages *p, const char *image, int same_name)
+/* The escape of a byte: "_" and two lowercase hex digits. */
+static size_t put_escape(char *out, unsigned char c) { return (size_t)sprintf(out, "_%02x", c); }
+
+void grade_output_name(char out[GRADE_NAME_CAP], const char *image, int skip)
 {
-    const char *base = path_file_name(image);
-    size_t stem, k, n;
-    int used;
-    if (same_name && base > image) base--;   /* with its folder: ana/render.pfm */
-    while (same_name && base > image && base[-1] != '/') base--;
-    stem = path_ends_with(base, ".pfm") ? strlen(base) - 4 : strlen(base);
-    used = snprintf(out, cap, "%s/", p->dir);
-    if (used < 0 || (size_t)used + stem + 6 > cap) {
-        fprintf(stderr, "pathlab grade: the page of %s would have a path over %d characters\n", image, (int)cap - 1);
+    const char *name = path_file_name(image);
+    size_t stem, k, n = 0;
+    int pfm;
+    if (skip >= 0) name = image + skip;   /* by its path past the shared folders: ana/render.pfm */
+    pfm = path_ends_with(name, ".pfm");
+    stem = pfm ? strlen(name) - 4 : strlen(name);
+    for (k = 0; k < stem && n < GRADE_NAME_LONG; k++) {
+        unsigned char c = (unsigned char)name[k];
+        if (isalnum(c) || c == '-' || (c == '.' && k > 0)) out[n++] = (char)c;
+        else n += put_escape(out + n, c);
+    }
+    if (k < stem) {   /* too long for a file name: cut, with the hash of the whole name */
+        unsigned char d[32];
+        int i;
+        sha256(name, strlen(name), d);
+        n += (size_t)sprintf(out + n, "_h");
+        for (i = 0; i < 12; i++) n += (size_t)sprintf(out + n, "%02x", d[i]);
+    }
+    if (!pfm) out[n++] = '_';   /* a name without .pfm: "x" is x_, "x.pfm" is x */
+    out[n] = '\0';
+}
+
+int grade_page_path(char *out, size_t cap, const grade_pages *p, const char *image, int skip)
+{
+    char name[GRADE_NAME_CAP];
+    grade_output_name(name, image, skip);
+    if (snprintf(out, cap, "%s/%s.html", p->dir, name) >= (int)cap) {
+        fprintf(stderr, "pathlab grade: the page of %s would have a path over %d characters\n", shown(image), (int)cap - 1);
         return 1;
     }
-    for (n = (size_t)used, k = 0; k < stem; k++)   /* ana/render.pfm, when render.pfm is not alone: ana_render.html */
-        out[n++] = (char)(isalnum((unsigned char)base[k]) || strchr("-.", base[k]) ? base[k] : '_');
-    snprintf(out + n, cap - n, ".html");
     return 0;
 }
 
@@ -75,15 +96,33 @@ static int by_file_name(const void *a, const void *b)
     return strcmp(path_file_name(**(const char *const *const *)a), path_file_name(**(const char *const *const *)b));
 }
 
-int grade_mark_same_names(const char *const *images, int n, unsigned char *same)
+/* The folders that paths a[0..n) all begin with: the length of their common prefix, cut after its
+ * last '/' and before any file name. */
+static int shared_folders(const char *const *const *a, int n)
+{
+    size_t len = strlen(**a), k;
+    int i;
+    for (i = 1; i < n; i++) {
+        for (k = 0; k < len && (*a[i])[k] == (**a)[k]; k++) continue;
+        len = k;
+    }
+    for (i = 0; i < n; i++)
+        if (len > (size_t)(path_file_name(*a[i]) - *a[i])) len = (size_t)(path_file_name(*a[i]) - *a[i]);
+    while (len > 0 && (**a)[len - 1] != '/') len--;
+    return (int)len;
+}
+
+int grade_mark_same_names(const char *const *images, int n, int *skip)
 {
     const char *const **order = malloc((size_t)n * sizeof *order);
-    int k;
+    int k, e, i;
     if (!order) return 1;
-    for (k = 0; k < n; k++) order[k] = &images[k];
+    for (k = 0; k < n; k++) order[k] = &images[k], skip[k] = -1;
     qsort(order, (size_t)n, sizeof *order, by_file_name);
-    for (k = 0; k + 1 < n; k++)
-        if (!strcmp(path_file_name(*order[k]), path_file_name(*order[k + 1]))) same[order[k] - images] = same[order[k + 1] - images] = 1;
+    for (k = 0; k < n; k = e) {   /* each run of one file name */
+        for (e = k + 1; e < n && !strcmp(path_file_name(*order[k]), path_file_name(*order[e])); e++) continue;
+        for (i = k; e - k > 1 && i < e; i++) skip[order[i] - images] = shared_folders(order + k, e - k);
+    }
     free(order);
     return 0;
 }

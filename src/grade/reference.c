@@ -1,5 +1,6 @@
 /* reference.c — the reference, its variance, its layers and its sidecar read (reference.h). */
 #include "grade/reference.h"
+#include "sys/shown.h"
 #include <stdio.h>
 #include <string.h>
 #include "files/render_files.h"
@@ -17,7 +18,7 @@ static int read_variance(grade_reference *R, const char *path, const char *var, 
     if (!R->var_path) return 0;
     if (img_read_pfm(&R->var, R->var_path)) return 2;
     if (R->var.w != R->ref.w || R->var.h != R->ref.h) {
-        fprintf(stderr, "pathlab grade: %s is %dx%d, the reference %s %dx%d\n", R->var_path, R->var.w, R->var.h, path, R->ref.w, R->ref.h);
+        fprintf(stderr, "pathlab grade: %s is %dx%d, the reference %s %dx%d\n", shown(R->var_path), R->var.w, R->var.h, shown(path), R->ref.w, R->ref.h);
         return 2;
     }
     R->refs.var = &R->var;
@@ -38,7 +39,7 @@ static int read_layers(grade_reference *R, const char *path, const char *layers,
         if (snprintf(file, sizeof file, "%s_L%d.pfm", R->layer_prefix, k) >= (int)sizeof file || !path_is_readable(file)) break;
         if (img_read_pfm(&R->layer[k], file)) return 2;
         if (R->layer[k].w != R->ref.w || R->layer[k].h != R->ref.h) {
-            fprintf(stderr, "pathlab grade: the layer %s is %dx%d, the reference %dx%d\n", file, R->layer[k].w, R->layer[k].h, R->ref.w, R->ref.h);
+            fprintf(stderr, "pathlab grade: the layer %s is %dx%d, the reference %dx%d\n", shown(file), R->layer[k].w, R->layer[k].h, R->ref.w, R->ref.h);
             return 2;
         }
         R->refs.layer[k] = &R->layer[k];
@@ -75,7 +76,7 @@ void grade_reference_print_provenance(const grade_reference *R, const char *path
     sidecar_ranges_text(m, ranges, sizeof ranges);
     if (m->adaptive[0]) snprintf(spp, sizeof spp, "adaptive, a mean of %.1f spp per pixel", m->spp_mean);   /* not the range's width */
     else snprintf(spp, sizeof spp, "%lld spp", (long long)sidecar_spp(m));
-    printf("reference %s: %s (samples %s), seed %llu, %s %s, camera %s, pathlab %s%s%s\n", path,
-           spp, ranges, (unsigned long long)m->seed, m->scene, m->flags, m->camera, m->revision,
+    printf("reference %s: %s (samples %s), seed %llu, %s %s, camera %s, pathlab %s%s%s\n", shown(path),
+           spp, ranges, (unsigned long long)m->seed, shown(m->scene), shown(m->flags), shown(m->camera), shown(m->revision),
            m->stopped[0] ? ", stopped by " : "", m->stopped);
 }

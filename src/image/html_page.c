@@ -4,11 +4,13 @@
  * (relative error <= 2^-11, about 5e-4), enough for a viewer, at a third of the size of text numbers.
  * Variances travel as standard deviations, which stay in the half-float range far further down. */
 #include "image/html_page.h"
+#include "sys/shown.h"
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "math/sha256.h"
 #include "sys/atomic_file.h"
 
 extern const unsigned char pathlab_viewer_js[], pathlab_viewer_css[];   /* $(BUILD)/gen/web_assets.c */
@@ -119,8 +121,8 @@ static int check_sizes(const char *path, const html_image **all, int n)
         const image *v = all[i]->var;
         if (all[i]->img->w != w || all[i]->img->h != h || (v && (v->w != w || v->h != h))) {
             const image *bad = all[i]->img->w != w || all[i]->img->h != h ? all[i]->img : v;
-            fprintf(stderr, "%s: %s%s is %dx%d, %s is %dx%d: a page shows images of one size\n", path, all[i]->name,
-                    bad == v ? "'s variance" : "", bad->w, bad->h, all[0]->name, w, h);
+            fprintf(stderr, "%s: %s%s is %dx%d, %s is %dx%d: a page shows images of one size\n", shown(path), shown(all[i]->name),
+                    bad == v ? "'s variance" : "", bad->w, bad->h, shown(all[0]->name), w, h);
             return 1;
         }
     }
@@ -162,15 +164,35 @@ static void write_settings(FILE *f, const html_page *p)
     fputs("]}</script>\n", f);
 }
 
-/* The page itself, into f. */
+/* The text of the page's one script element, "\n" + web/viewer.js, as its Content-Security-Policy
+ * hashes it: 'sha256-' and the base64 of its SHA-256, into out[64]. */
+static void script_hash(char out[64])
+{
+    unsigned char d[33];
+    sha256_ctx c;
+    int i;
+    sha256_init(&c);
+    sha256_update(&c, "\n", 1);
+    sha256_update(&c, pathlab_viewer_js, strlen((const char *)pathlab_viewer_js));
+    sha256_final(&c, d);
+    d[32] = 0;
+    memcpy(out, "'sha256-", 8);
+    for (i = 0; i < 33; i += 3) b64_group(out + 8 + 4 * i / 3, d + i, i + 3 <= 32 ? 3 : 32 - i);
+    memcpy(out + 52, "'", 2);
+}
+
+/* The page itself, into f. Its Content-Security-Policy runs no script but the viewer's (by its
+ * hash: nothing a name or a title could inject runs), loads nothing from anywhere, and allows no
+ * <base> and no form. */
 static void write_page(FILE *f, const html_page *p, const html_image **all, int n)
 {
-    char *title = html_escape(p->title ? p->title : "pathlab");
+    char *title = html_escape(p->title ? p->title : "pathlab"), hash[64];
     int i;
+    script_hash(hash);
     fprintf(f, "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
-               "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; script-src 'unsafe-inline'; "
-               "style-src 'unsafe-inline'; img-src data: blob:\">\n<title>%s</title>\n<style>\n%s</style>\n</head><body>\n",
-            title ? title : "pathlab", (const char *)pathlab_viewer_css);
+               "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; script-src %s; "
+               "style-src 'unsafe-inline'; img-src data: blob:; base-uri 'none'; form-action 'none'\">\n<title>%s</title>\n"
+               "<style>\n%s</style>\n</head><body>\n", hash, title ? title : "pathlab", (const char *)pathlab_viewer_css);
     free(title);
     if (p->before_html) fprintf(f, "%s\n", p->before_html);
     fputs("<div id=\"pathlab-viewer\"></div>\n", f);
@@ -195,9 +217,9 @@ int html_page_write(const char *path, const html_page *page)
     char *tmp;
     FILE *f;
     const html_image **all;
-    if (page->nimages < 1) { fprintf(stderr, "%s: a page needs an image\n", path); return 1; }
+    if (page->nimages < 1) { fprintf(stderr, "%s: a page needs an image\n", shown(path)); return 1; }
     all = all_images(page, &n);
-    if (!all) { fprintf(stderr, "%s: out of memory\n", path); return 1; }
+    if (!all) { fprintf(stderr, "%s: out of memory\n", shown(path)); return 1; }
     if (check_sizes(path, all, n)) { free(all); return 1; }
     f = atomic_file_open(path, &tmp);
     if (!f) { free(all); return 1; }

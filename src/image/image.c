@@ -14,6 +14,7 @@
  * after fflush and fclose succeeded: a crash or a full disk never leaves a half-written image, and
  * an existing image stays untouched when the write fails. */
 #include "image/image.h"
+#include "sys/shown.h"
 #include "sys/atomic_file.h"
 #include "sys/input_file.h"
 #include <ctype.h>
@@ -69,7 +70,7 @@ float srgb_encode(float linear)
 static int image_ok(const image *im, const char *path)
 {
     if (im && im->px && dims_ok(im->w, im->h)) return 1;
-    fprintf(stderr, "%s: cannot write an empty image\n", path);
+    fprintf(stderr, "%s: cannot write an empty image\n", shown(path));
     return 0;
 }
 
@@ -90,7 +91,7 @@ static int write_rows(const image *im, const char *path, const char *header, siz
     row_bytes = (size_t)im->w * bytes_per_pixel;
     row = malloc(row_bytes);
     if (!row) {
-        fprintf(stderr, "%s: out of memory\n", path);
+        fprintf(stderr, "%s: out of memory\n", shown(path));
         return 1;
     }
     f = atomic_file_open(path, &tmp);
@@ -104,7 +105,7 @@ static int write_rows(const image *im, const char *path, const char *header, siz
         encode(im->px + (size_t)src_y * im->w * 3, im->w, row, gain);
         ok = fwrite(row, 1, row_bytes, f) == row_bytes;
     }
-    if (!ok) fprintf(stderr, "%s: cannot write: %s\n", atomic_file_shown(path), strerror(errno));
+    if (!ok) fprintf(stderr, "%s: cannot write: %s\n", shown(atomic_file_shown(path)), strerror(errno));
     free(row);
     return atomic_file_close(f, tmp, path, ok);
 }
@@ -186,7 +187,7 @@ static int crlf_error(const char *path)
 {
     fprintf(stderr, "%s: the header's lines end with CR LF (a file written in text mode on Windows?): "
             "PFM headers end lines with LF only, and the data is shifted by a byte; open the file in "
-            "binary mode (\"wb\")\n", path);
+            "binary mode (\"wb\")\n", shown(path));
     return 1;
 }
 
@@ -199,14 +200,14 @@ static int skip_separator(FILE *f, const char *path, int c)
         if (c == '\r') return crlf_error(path);
         if (c == '\n' && ++newlines == 2) {
             fprintf(stderr, "%s: the header has a blank line: a PFM header is \"PF\" (or \"Pf\"), "
-                    "\"WIDTH HEIGHT\" and the scale, one per line, with nothing between them\n", path);
+                    "\"WIDTH HEIGHT\" and the scale, one per line, with nothing between them\n", shown(path));
             return 1;
         }
         c = getc(f);
     }
     if (c == '#') {
         fprintf(stderr, "%s: the header has a comment ('#'): PFM headers have none, only \"PF\" (or "
-                "\"Pf\"), \"WIDTH HEIGHT\" and the scale, one per line\n", path);
+                "\"Pf\"), \"WIDTH HEIGHT\" and the scale, one per line\n", shown(path));
         return 1;
     }
     if (c != EOF) ungetc(c, f);
@@ -228,11 +229,11 @@ static int read_magic(FILE *f, const char *path, pfm_header *hd, int *end)
     char magic[8];
     int r = read_token(f, magic, sizeof magic, end);
     if (r == -1 && ferror(f)) {                 /* e.g. a directory */
-        fprintf(stderr, "%s: cannot read: %s\n", path, strerror(errno));
+        fprintf(stderr, "%s: cannot read: %s\n", shown(path), strerror(errno));
         return 1;
     }
     if (r != 0 || (strcmp(magic, "PF") != 0 && strcmp(magic, "Pf") != 0)) {
-        fprintf(stderr, "%s: not a PFM file (it must begin with \"PF\" or \"Pf\")\n", path);
+        fprintf(stderr, "%s: not a PFM file (it must begin with \"PF\" or \"Pf\")\n", shown(path));
         return 1;
     }
     hd->channels = magic[1] == 'F' ? 3 : 1;
@@ -245,19 +246,19 @@ static int read_scale(FILE *f, const char *path, pfm_header *hd)
     char *num_end;
     int end, r = read_token(f, hd->scale_text, sizeof hd->scale_text, &end);
     if (r == -1) {
-        fprintf(stderr, "%s: truncated or malformed PFM header\n", path);
+        fprintf(stderr, "%s: truncated or malformed PFM header\n", shown(path));
         return 1;
     }
     hd->scale = strtod(hd->scale_text, &num_end);
     if (r == -3 && num_end != hd->scale_text && *num_end == '\0') {
         fprintf(stderr, "%s: no line feed after the scale '%s': the pixel data must follow the scale "
-                "and exactly one whitespace character (a line feed)\n", path, hd->scale_text);
+                "and exactly one whitespace character (a line feed)\n", shown(path), shown(hd->scale_text));
         return 1;
     }
     if (r != 0 || num_end == hd->scale_text || *num_end != '\0' || !(hd->scale - hd->scale == 0.0)
         || hd->scale == 0.0) {
-        fprintf(stderr, "%s: bad scale '%s' (a nonzero number; negative means little-endian)\n", path,
-                hd->scale_text);
+        fprintf(stderr, "%s: bad scale '%s' (a nonzero number; negative means little-endian)\n", shown(path),
+                shown(hd->scale_text));
         return 1;
     }
     if (end == '\r') return crlf_error(path);
@@ -276,12 +277,12 @@ static int read_pfm_header(FILE *f, const char *path, pfm_header *hd)
     if (r == 0) r = read_token(f, hs, sizeof hs, &end);
     if (r == 0 && skip_separator(f, path, end)) return 1;
     if (r != 0) {
-        fprintf(stderr, "%s: truncated or malformed PFM header\n", path);
+        fprintf(stderr, "%s: truncated or malformed PFM header\n", shown(path));
         return 1;
     }
     if (!parse_long(ws, &hd->w) || !parse_long(hs, &hd->h) || !dims_ok(hd->w, hd->h)) {
         fprintf(stderr, "%s: bad dimensions %s x %s (each side 1 to %ld, at most %ld pixels)\n",
-                path, ws, hs, IMG_MAX_SIDE, IMG_MAX_PIXELS);
+                shown(path), shown(ws), shown(hs), IMG_MAX_SIDE, IMG_MAX_PIXELS);
         return 1;
     }
     return read_scale(f, path, hd);
@@ -309,7 +310,7 @@ static int truncated_error(const char *path, const pfm_header *hd, size_t need, 
     size_t missing = need - found, pixel = 4 * (size_t)hd->channels;
     size_text(s, sizeof s, hd, need);
     fprintf(stderr, "%s: truncated: expected %s of pixels (width x height x channels x 4), found %zu: "
-            "%zu bytes missing (%.*f pixel%s)\n", path, s, found, missing, missing % pixel ? 2 : 0,
+            "%zu bytes missing (%.*f pixel%s)\n", shown(path), shown(s), found, missing, missing % pixel ? 2 : 0,
             (double)missing / (double)pixel, missing == pixel ? "" : "s");
     return 1;
 }
@@ -320,7 +321,7 @@ static int trailing_error(const char *path, const pfm_header *hd, size_t need, l
     char s[160];
     size_text(s, sizeof s, hd, need);
     fprintf(stderr, "%s: %ld byte%s after the pixel data: expected exactly %s (width x height x channels x 4); a second image or a "
-            "header written twice?%s\n", path, extra, extra == 1 ? "" : "s", s,
+            "header written twice?%s\n", shown(path), extra, extra == 1 ? "" : "s", shown(s),
             extra < 4 && HDR_SPACE(first) ? " (or the data starts with a whitespace byte: a space before "
             "the header's last line feed? after the scale, PFM allows exactly one whitespace character)" : "");
     return 1;
@@ -334,7 +335,7 @@ static int read_pixels(FILE *f, const char *path, const pfm_header *hd, size_t n
     size_t got = fread(data, 1, need, f);
     long extra = 0;
     if (got < need) {
-        if (ferror(f)) fprintf(stderr, "%s: read error: %s\n", path, strerror(errno));
+        if (ferror(f)) fprintf(stderr, "%s: read error: %s\n", shown(path), strerror(errno));
         else truncated_error(path, hd, need, got);
         return 1;
     }
@@ -385,7 +386,7 @@ static int check_byte_order(const unsigned char *data, size_t n, const pfm_heade
         fprintf(stderr, "%s: the header's scale %s%s says %s-endian, but read so the values are absurd "
                 "(up to %.2g; %zu of the %zu nonzero values are NaN, infinite, denormal or beyond 1e20); "
                 "read %s-endian they are ordinary (%.3g to %.3g): write the scale as %s for %s-endian data\n",
-                path, sign, hd->scale_text, order[hd->big_endian], as.max_abs, as.absurd + as.nonfinite,
+                shown(path), sign, shown(hd->scale_text), order[hd->big_endian], as.max_abs, as.absurd + as.nonfinite,
                 as.nonzero, order[!hd->big_endian], other.lo, other.hi, hd->big_endian ? "-1.0" : "1.0",
                 order[!hd->big_endian]);
         return 1;
@@ -393,7 +394,7 @@ static int check_byte_order(const unsigned char *data, size_t n, const pfm_heade
     if (as.absurd * 10 > as.nonzero) {
         fprintf(stderr, "%s: the pixel data is not float radiance: read %s-endian (as the header's scale "
                 "%s%s says), %zu of the %zu nonzero values are NaN, infinite, denormal or beyond 1e20, and "
-                "read %s-endian %zu are\n", path, order[hd->big_endian], sign, hd->scale_text,
+                "read %s-endian %zu are\n", shown(path), order[hd->big_endian], sign, shown(hd->scale_text),
                 as.absurd + as.nonfinite, as.nonzero, order[!hd->big_endian], other.absurd + other.nonfinite);
         return 1;
     }
@@ -432,7 +433,7 @@ int img_read_pfm_info(image *im, const char *path, img_pfm_info *info)
     im->px = NULL;
     f = input_file_open(path, 1);   /* a FIFO or a device in a class folder must not hang grade */
     if (!f) {
-        fprintf(stderr, "%s: cannot open: %s\n", path, input_file_why(errno));
+        fprintf(stderr, "%s: cannot open: %s\n", shown(path), input_file_why(errno));
         return 1;
     }
     if (read_pfm_header(f, path, &hd)) goto out;
@@ -444,7 +445,7 @@ int img_read_pfm_info(image *im, const char *path, img_pfm_info *info)
         goto out;
     }
     if (img_alloc(im, (int)hd.w, (int)hd.h)) {
-        fprintf(stderr, "%s: out of memory\n", path);
+        fprintf(stderr, "%s: out of memory\n", shown(path));
         goto out;
     }
     data = (unsigned char *)im->px;   /* need <= its size: 4 bytes a value, 1 or 3 values a pixel */
@@ -528,7 +529,7 @@ int img_write_png(const image *im, const char *path, float exposure)
     if (!image_ok(im, path)) return 1;
     rgb = malloc((size_t)im->w * im->h * 3);
     if (!rgb) {
-        fprintf(stderr, "%s: out of memory\n", path);
+        fprintf(stderr, "%s: out of memory\n", shown(path));
         return 1;
     }
     for (y = 0; y < im->h; y++)
@@ -539,7 +540,7 @@ int img_write_png(const image *im, const char *path, float exposure)
         return 1;
     }
     ok = png_write_rgb8(f, rgb, im->w, im->h) == 0;
-    if (!ok) fprintf(stderr, "%s: cannot write: %s\n", atomic_file_shown(path), strerror(errno));
+    if (!ok) fprintf(stderr, "%s: cannot write: %s\n", shown(atomic_file_shown(path)), strerror(errno));
     free(rgb);
     return atomic_file_close(f, tmp, path, ok);
 }
@@ -580,6 +581,6 @@ int img_write(const image *im, const char *path, float exposure)
     case IMG_PNG: return img_write_png(im, path, exposure);
     case IMG_UNKNOWN: break;
     }
-    fprintf(stderr, "%s: unknown image format (use .pfm, .ppm or .png)\n", path);
+    fprintf(stderr, "%s: unknown image format (use .pfm, .ppm or .png)\n", shown(path));
     return 1;
 }

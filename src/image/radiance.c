@@ -1,5 +1,6 @@
 /* radiance.c — the NaN, infinite and negative values of an image, counted and located. */
 #include "image/radiance.h"
+#include "sys/shown.h"
 #include <stdio.h>
 
 enum { K_NAN, K_PINF, K_NINF, K_NEG, K_TINY, K_KINDS };
@@ -38,7 +39,7 @@ static void print_kind(const image *im, const char *path, const rad_kind *k, int
     static const char *const what[K_KINDS] = { "NaN", "+Inf", "-Inf", "negative", "slightly negative" };
     static const char *const channel[3] = { "red", "green", "blue" };
     int j;
-    fprintf(stderr, "%s: %s%ld pixel-channel%s %s %s", path, kind == K_TINY ? "warning: " : "", k->count,
+    fprintf(stderr, "%s: %s%ld pixel-channel%s %s %s", shown(path), kind == K_TINY ? "warning: " : "", k->count,
             k->count == 1 ? "" : "s", k->count == 1 ? "is" : "are", what[kind]);
     if (kind == K_NEG)
         fprintf(stderr, " (below -%g x the mean %.3g, down to %.3g)", RADIANCE_NEG_TOL, mean, k->worst);
@@ -76,6 +77,6 @@ int img_check_radiance(const image *im, const char *path, int max_listed)
     }
     if (bad)
         fprintf(stderr, "%s: radiance is a finite number >= 0 in every pixel-channel (NaN: 0/0 or the root of a "
-                "negative number? Inf: a division by a zero pdf? negative: a negative weight or BRDF?)\n", path);
+                "negative number? Inf: a division by a zero pdf? negative: a negative weight or BRDF?)\n", shown(path));
     return bad;
 }

@@ -1,5 +1,6 @@
 /* camera.c — view files and the pinhole camera. */
 #include "scene/camera.h"
+#include "sys/shown.h"
 #include "sys/input_file.h"
 #include "scene/objtext.h"
 #include <errno.h>
@@ -108,12 +109,12 @@ static void view_error(const char *path, int lineno, int rc, const char *line)
         "fov must be from 0.01 (below it, neighbouring pixels' rays are one float direction) to 180 degrees (exclusive)", "",
         "a NUL byte: not a text file", "",
         "out of memory"};
-    fprintf(stderr, "%s:%d: ", path, lineno);
+    fprintf(stderr, "%s:%d: ", shown(path), lineno);
     if (rc == 5) {   /* the numbers as written, after the key (at most 40 characters of them) */
         line += strspn(line, " \t");
         line += strcspn(line, " \t");
         line += strspn(line, " \t");
-        fprintf(stderr, "size %.40s%s: out of range (whole numbers from 1 to %d, at most %.0e pixels)\n", line,
+        fprintf(stderr, "size %.40s%s: out of range (whole numbers from 1 to %d, at most %.0e pixels)\n", shown(line),
                 strlen(line) > 40 ? "..." : "", VIEW_SIZE_MAX, VIEW_PIXELS_MAX);
     } else if (rc == 7) {
         fprintf(stderr, "line longer than %d characters before its comment\n", VIEW_LINE_MAX - 1);
@@ -128,10 +129,10 @@ int view_read(view *vw, const char *path)
     char *line = malloc(cap);
     int lineno = 0, rc = 0;
     FILE *fp;
-    if (!line) { fprintf(stderr, "%s: out of memory\n", path); return 1; }
+    if (!line) { fprintf(stderr, "%s: out of memory\n", shown(path)); return 1; }
     if (!(fp = input_file_open(path, 0))) {   /* a FIFO named SCENE.view must not hang the render */
         free(line);
-        return errno == ENOENT ? -1 : (fprintf(stderr, "%s: cannot open: %s\n", path, strerror(errno)), 1);
+        return errno == ENOENT ? -1 : (fprintf(stderr, "%s: cannot open: %s\n", shown(path), strerror(errno)), 1);
     }
     snprintf(vw->file, sizeof vw->file, "%s", path);
     vw->line_eye = vw->line_target = vw->line_up = vw->line_fov = vw->line_size = 0;
@@ -140,7 +141,7 @@ int view_read(view *vw, const char *path)
         if (rc == 1) rc = parse_view_line(vw, line, lineno);
         if (rc) view_error(path, lineno, rc, line);
     }
-    if (!rc && ferror(fp)) { fprintf(stderr, "%s: read error\n", path); rc = 1; }
+    if (!rc && ferror(fp)) { fprintf(stderr, "%s: read error\n", shown(path)); rc = 1; }
     fclose(fp);
     free(line);
     return rc ? 1 : 0;
@@ -173,7 +174,7 @@ void view_frame_bounds(view *vw, vec3 lo, vec3 hi)
 static int say(const view *vw, int line, const char *fmt, ...)
 {
     va_list ap;
-    if (line > 0) fprintf(stderr, "%s:%d: ", vw->file, line);
+    if (line > 0) fprintf(stderr, "%s:%d: ", shown(vw->file), line);
     else fprintf(stderr, "camera: ");
     va_start(ap, fmt);
     vfprintf(stderr, fmt, ap);

@@ -2,6 +2,7 @@
  * (Kd, Ks, Ns, Ke); every other key is accepted, counted, and summarised in one line per file at
  * its end ("FILE: ignored keys: illum (8), Ka (8); not supported: transmission (Ni, d) ..."). */
 #include "scene/mtl.h"
+#include "sys/shown.h"
 #include "scene/objtext.h"
 #include <limits.h>
 #include <stdio.h>
@@ -45,7 +46,7 @@ static void print_keys(const ignored_keys *ig, int transmission)
     int i, any = 0;
     for (i = 0; i < ig->n; i++)
         if (is_transmission(ig->key[i]) == transmission)
-            fprintf(stderr, "%s%s%s (%d)", any++ ? ", " : "", ig->key[i], ig->cut[i] ? "..." : "", ig->count[i]);
+            fprintf(stderr, "%s%s%s (%d)", any++ ? ", " : "", shown(ig->key[i]), ig->cut[i] ? "..." : "", ig->count[i]);
 }
 
 /* The one line that sums up the ignored keys of a file, transmission named apart: a glass
@@ -55,7 +56,7 @@ static void print_ignored(const objtext *t, const ignored_keys *ig)
     int i, trans = 0;
     if (t->quiet || ig->n == 0) return;
     for (i = 0; i < ig->n; i++) trans += is_transmission(ig->key[i]);
-    fprintf(stderr, "%s: ", t->path);
+    fprintf(stderr, "%s: ", shown(t->path));
     if (trans < ig->n) {
         fprintf(stderr, "ignored keys: ");
         print_keys(ig, 0);

@@ -5,6 +5,7 @@
 /* realpath (mtllib confinement) is POSIX 2008 but glibc declares it only for X/Open */
 #define _XOPEN_SOURCE 700
 #include "scene/obj.h"
+#include "sys/shown.h"
 #include "scene/mtl.h"
 #include "scene/objtext.h"
 #include "sys/input_file.h"
@@ -453,7 +454,7 @@ int obj_load(const char *path, mesh *m, int quiet)
     L.m = m;
     L.obj = &t;
     if ((err = objtext_open(&t, path, quiet)))
-        fprintf(stderr, "%s: cannot open: %s\n", path, input_file_why(err));
+        fprintf(stderr, "%s: cannot open: %s\n", shown(path), input_file_why(err));
     else
         ok = objtext_check(&t) && parse(&L);
     objtext_close(&t);

@@ -2,6 +2,7 @@
  * Cutting lines in place, in a buffer that holds the whole file, costs one memchr per line and
  * no copy (only '\'-continued lines are copied, into t->join). */
 #include "scene/objtext.h"
+#include "sys/shown.h"
 #include "sys/input_file.h"
 #include <errno.h>
 #include <fcntl.h>
@@ -181,8 +182,8 @@ int objtext_numbers(const objtext *t, char **s, const char *kw, float *v, int mi
 
 static void vsay(const char *path, int line, const char *fmt, va_list ap)
 {
-    if (line > 0) fprintf(stderr, "%s:%d: ", path, line);
-    else fprintf(stderr, "%s: ", path);
+    if (line > 0) fprintf(stderr, "%s:%d: ", shown(path), line);
+    else fprintf(stderr, "%s: ", shown(path));
     vfprintf(stderr, fmt, ap);
     fputc('\n', stderr);
 }

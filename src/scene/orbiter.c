@@ -1,5 +1,6 @@
 /* orbiter.c — gKit orbiter files: the reader, and the camera they describe as a pathlab view. */
 #include "scene/orbiter.h"
+#include "sys/shown.h"
 #include "sys/input_file.h"
 #include <errno.h>
 #include <stdio.h>
@@ -70,24 +71,24 @@ static int parse_line(orbiter *o, char *line, const char *path, int lineno, int 
     for (key = line; *key == ' ' || *key == '\t'; key++) continue;
     if (!*key) return 0;
     if (!strchr(ORBITER_KEYS, *key) || (key[1] != ' ' && key[1] != '\t' && key[1] != '\0')) {
-        fprintf(stderr, "%s:%d: '%.40s%s' is not a line of a gKit orbiter file (expected c, p, r, s or f lines)\n", path,
-                lineno, key, strlen(key) > 40 ? "..." : "");
+        fprintf(stderr, "%s:%d: '%.40s%s' is not a line of a gKit orbiter file (expected c, p, r, s or f lines)\n", shown(path),
+                lineno, shown(key), strlen(key) > 40 ? "..." : "");
         return 1;
     }
     k = (int)(strchr(ORBITER_KEYS, *key) - ORBITER_KEYS);
     if (seen[k]) {
-        fprintf(stderr, "%s:%d: a second '%c' line (the first is line %d)\n", path, lineno, *key, seen[k]);
+        fprintf(stderr, "%s:%d: a second '%c' line (the first is line %d)\n", shown(path), lineno, *key, seen[k]);
         return 1;
     }
     seen[k] = lineno;
     n = read_numbers(key + 1, v, 4);
     if (n == -2) {
-        fprintf(stderr, "%s:%d: a number beyond %g in size in '%.40s%s': pathlab's camera is made of floats\n", path,
-                lineno, ORBITER_MAX_NUMBER, key, strlen(key) > 40 ? "..." : "");
+        fprintf(stderr, "%s:%d: a number beyond %g in size in '%.40s%s': pathlab's camera is made of floats\n", shown(path),
+                lineno, ORBITER_MAX_NUMBER, shown(key), strlen(key) > 40 ? "..." : "");
         return 1;
     }
     if (n < 0 || store_key(o, k, v, n)) {
-        fprintf(stderr, "%s:%d: expected '%s', got '%.40s%s'\n", path, lineno, KEY_FORM[k], key, strlen(key) > 40 ? "..." : "");
+        fprintf(stderr, "%s:%d: expected '%s', got '%.40s%s'\n", shown(path), lineno, KEY_FORM[k], shown(key), strlen(key) > 40 ? "..." : "");
         return 1;
     }
     return 0;
@@ -101,7 +102,7 @@ int orbiter_read(orbiter *o, const char *path)
     FILE *fp = input_file_open(path, 1);   /* a FIFO must not hang the command */
     memset(o, 0, sizeof *o);
     if (!fp || !line) {
-        fprintf(stderr, "%s: cannot open the orbiter file: %s\n", path, fp ? strerror(ENOMEM) : input_file_why(errno));
+        fprintf(stderr, "%s: cannot open the orbiter file: %s\n", shown(path), fp ? strerror(ENOMEM) : input_file_why(errno));
         free(line);
         if (fp) fclose(fp);
         return 1;
@@ -109,7 +110,7 @@ int orbiter_read(orbiter *o, const char *path)
     /* view files' reader: lines of any length, a long comment never read as a line, NUL refused */
     while (!err && (rc = view_read_line(fp, &line, &cap))) {
         lineno++;
-        if (rc != 1) fprintf(stderr, "%s:%d: %s\n", path, lineno, rc == 6 ? "a NUL byte: not a text file"
+        if (rc != 1) fprintf(stderr, "%s:%d: %s\n", shown(path), lineno, rc == 6 ? "a NUL byte: not a text file"
                              : rc == 7 ? "line too long" : "out of memory");
         err = rc != 1 || parse_line(o, line, path, lineno, seen);
     }
@@ -118,7 +119,7 @@ int orbiter_read(orbiter *o, const char *path)
     for (k = 0; k < 4 && !err; k++)
         if (!seen[k]) {
             fprintf(stderr, "%s:%d: the file ends without its '%s' line (a gKit orbiter file has c, p, r and s lines)\n",
-                    path, lineno > 0 ? lineno : 1, KEY_FORM[k]);
+                    shown(path), lineno > 0 ? lineno : 1, KEY_FORM[k]);
             err = 1;
         }
     return err;

@@ -6,6 +6,7 @@
 #include "sys/atomic_file.h"
 #include "sys/interrupt.h"
 #include "sys/output_path.h"
+#include "sys/shown.h"
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -17,13 +18,32 @@
 
 const char *atomic_file_shown(const char *path)
 {
-    static char shown[PATH_CAP];
+    static char final[PATH_CAP];
     size_t n = strlen(path), k = strlen(ATOMIC_FILE_STAGED);
-    if (n <= k || strcmp(path + n - k, ATOMIC_FILE_STAGED) || n - k >= sizeof shown) return path;
-    memcpy(shown, path, n - k);
-    shown[n - k] = '\0';
-    return shown;
+    if (n <= k || strcmp(path + n - k, ATOMIC_FILE_STAGED) || n - k >= sizeof final) return path;
+    memcpy(final, path, n - k);
+    final[n - k] = '\0';
+    return final;
 }
+
+static char why[256];   /* the last failure's reason, for atomic_file_why() */
+
+/* "path: text" on stderr, text kept as the reason. */
+static void fail(const char *path, const char *text)
+{
+    snprintf(why, sizeof why, "%s", text);
+    fprintf(stderr, "%s: %s\n", shown(atomic_file_shown(path)), text);
+}
+
+/* "what: the system's reason", as fail() says it. */
+static void fail_errno(const char *path, const char *what, int err)
+{
+    char text[224];
+    snprintf(text, sizeof text, "%s: %s", what, strerror(err));
+    fail(path, text);
+}
+
+const char *atomic_file_why(void) { return why; }
 
 /* The permissions fopen would have given the file: 0666 minus the umask. mkstemp creates files
  * 0600, which would make every image private. umask can only be read by setting it, so this is
@@ -44,11 +64,11 @@ static int target_mode(const char *path, mode_t *mode)
     if (lstat(path, &st) != 0) return 1;              /* a new file */
     if (S_ISLNK(st.st_mode)) return 1;                /* the rename replaces the link itself */
     if (!S_ISREG(st.st_mode)) {
-        fprintf(stderr, "%s: exists and is not a regular file: not replaced\n", atomic_file_shown(path));
+        fail(path, "exists and is not a regular file: not replaced");
         return 0;
     }
     if (!(st.st_mode & S_IWUSR)) {
-        fprintf(stderr, "%s: is read-only: not replaced (chmod u+w it, or write elsewhere)\n", atomic_file_shown(path));
+        fail(path, "is read-only: not replaced (chmod u+w it, or write elsewhere)");
         return 0;
     }
     *mode = st.st_mode & 07777;
@@ -60,8 +80,9 @@ FILE *atomic_file_create(const char *path, char *tmp, size_t cap)
     mode_t mode;
     int fd;
     FILE *f;
+    why[0] = '\0';
     if (snprintf(tmp, cap, "%s" TMP_SUFFIX, path) >= (int)cap) {
-        fprintf(stderr, "%s: name too long\n", atomic_file_shown(path));
+        fail(path, "name too long");
         return NULL;
     }
     if (!target_mode(path, &mode)) return NULL;
@@ -70,11 +91,11 @@ FILE *atomic_file_create(const char *path, char *tmp, size_t cap)
     if (fd >= 0) interrupt_temp_add(tmp);
     interrupt_release();
     if (fd < 0) {
-        fprintf(stderr, "%s: cannot create a temporary file beside it: %s\n", atomic_file_shown(path), strerror(errno));
+        fail_errno(path, "cannot create a temporary file beside it", errno);
         return NULL;
     }
     if (fchmod(fd, mode) != 0 || !(f = fdopen(fd, "wb"))) {
-        fprintf(stderr, "%s: cannot write: %s\n", atomic_file_shown(path), strerror(errno));
+        fail_errno(path, "cannot write", errno);
         close(fd);
         interrupt_hold();
         unlink(tmp);
@@ -96,7 +117,7 @@ int atomic_file_commit(FILE *f, const char *tmp, const char *path, int ok)
     if (!ok || err) unlink(tmp);
     interrupt_temp_remove(tmp);
     interrupt_release();
-    if (ok && err) fprintf(stderr, "%s: cannot write: %s\n", atomic_file_shown(path), strerror(err));
+    if (ok && err) fail_errno(path, "cannot write", err);
     if (ok && err) errno = err;   /* for the caller's own words (a report's row) */
     return (ok && !err) ? 0 : 1;
 }
@@ -106,7 +127,7 @@ FILE *atomic_file_open(const char *path, char **tmp)
     size_t cap = strlen(path) + sizeof TMP_SUFFIX;
     FILE *f;
     if (!(*tmp = malloc(cap))) {
-        fprintf(stderr, "%s: out of memory\n", atomic_file_shown(path));
+        fail(path, "out of memory");
         return NULL;
     }
     if (!(f = atomic_file_create(path, *tmp, cap))) {

@@ -9,7 +9,9 @@
  * atomic_file_commit: when ok and every byte reached the file, renames it over path (rename replaces
  *   a symlink at path, never its target); otherwise removes it. 0 when path now holds the new file;
  *   else 1 after printing "path: cannot write: <the system's reason>" (when ok).
- * atomic_file_open / atomic_file_close: the same with a name allocated here (freed by close). */
+ * atomic_file_open / atomic_file_close: the same with a name allocated here (freed by close).
+ * atomic_file_why: the reason of the last failure as it was printed ("cannot write: No space left on
+ *   device"), for a report that says why an output is missing; "" when the last write did not fail. */
 #ifndef PATHLAB_ATOMIC_FILE_H
 #define PATHLAB_ATOMIC_FILE_H
 #include <stddef.h>
@@ -24,4 +26,5 @@ FILE *atomic_file_create(const char *path, char *tmp, size_t cap);
 int atomic_file_commit(FILE *f, const char *tmp, const char *path, int ok);
 FILE *atomic_file_open(const char *path, char **tmp);
 int atomic_file_close(FILE *f, char *tmp, const char *path, int ok);
+const char *atomic_file_why(void);
 #endif

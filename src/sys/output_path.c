@@ -1,6 +1,7 @@
 /* output_path.c — outputs checked before the work (output_path.h). access(W_OK) asks the kernel
  * with the real uid, which is what a student runs with; a read-only file system answers EROFS. */
 #include "sys/output_path.h"
+#include "sys/shown.h"
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
@@ -10,7 +11,7 @@
 
 static int say(const char *cmd, const char *flag, const char *path, const char *why)
 {
-    fprintf(stderr, "pathlab %s: %s %.1000s: %s\n", cmd, flag, path, why);
+    fprintf(stderr, "pathlab %s: %s %.1000s: %s\n", cmd, shown(flag), shown(path), why);
     return 1;
 }
 

@@ -1,5 +1,6 @@
 /* scene.c — from an OBJ file to a scene ready to trace. */
 #include "tracer/scene.h"
+#include "sys/shown.h"
 #include "sys/clock.h"
 #include "scene/obj.h"
 #include <stdio.h>
@@ -33,7 +34,7 @@ int scene_load(scene *sc, const char *path, int threads, int quiet)
     if (obj_load(path, &sc->m, quiet)) return 1;
     sc->load_seconds = clock_seconds() - t0;
     if (triangle_geometry(sc) || light_build(&sc->lights, &sc->m, sc->Ng, sc->area)) {
-        fprintf(stderr, "%s: out of memory\n", path);
+        fprintf(stderr, "%s: out of memory\n", shown(path));
         scene_free(sc);
         return 1;
     }
@@ -41,7 +42,7 @@ int scene_load(scene *sc, const char *path, int threads, int quiet)
     sc->accel = bvh_build(sc->m.P, sc->m.tri, sc->m.ntris, threads);
     sc->bvh_seconds = clock_seconds() - t0;
     if (!sc->accel) {
-        fprintf(stderr, "%s: out of memory building the BVH\n", path);
+        fprintf(stderr, "%s: out of memory building the BVH\n", shown(path));
         scene_free(sc);
         return 1;
     }

@@ -2,6 +2,7 @@
  * Each kind of value has one reader (int_of, float_of...) that stores the value and returns NULL,
  * or returns what it expected; the callers print that, with the command, flag and value. */
 #include "util/cli.h"
+#include "sys/shown.h"
 #include <ctype.h>
 #include <errno.h>
 #include <float.h>
@@ -111,7 +112,7 @@ static void say_who(const char *cmd)
 int cli_fail(const char *cmd, const char *flag, const char *what, const char *value)
 {
     say_who(cmd);
-    fprintf(stderr, "%s expects %s, got '%s'\n", flag, what, value);
+    fprintf(stderr, "%s expects %s, got '%s'\n", shown(flag), what, shown(value));
     return 1;
 }
 
@@ -194,14 +195,15 @@ static const cli_flag *find_flag(const cli_flag *const *tables, const char *f, s
 static int unknown_flag(const char *cmd, const cli_flag *const *tables, const char *arg, size_t len)
 {
     const char *best = NULL;
-    char word[64];
+    char word[64], said[201];
     int t, k, d = 0;
     snprintf(word, sizeof word, "%.*s", (int)(len < sizeof word ? len : sizeof word - 1), arg);
     for (t = 0; tables[t]; t++)
         for (k = 0; tables[t][k].name; k++) cli_consider(word, tables[t][k].name, &best, &d);
     say_who(cmd);
-    fprintf(stderr, "unknown flag '%.*s'", (int)(len > 200 ? 200 : len), arg);
-    if (best) fprintf(stderr, "; did you mean '%s'?", best);
+    snprintf(said, sizeof said, "%.*s", (int)(len > 200 ? 200 : len), arg);
+    fprintf(stderr, "unknown flag '%s'", shown(said));
+    if (best) fprintf(stderr, "; did you mean '%s'?", shown(best));
     fprintf(stderr, " (pathlab %s --help lists its flags)\n", cmd ? cmd : "help");
     return 1;
 }
@@ -229,7 +231,7 @@ int cli_parse_flag(const char *cmd, int argc, char **argv, int *i, const cli_fla
     if (arg[len] == '=') {   /* --flag=value, the same as --flag value */
         if (f->kind != CLI_SWITCH) return cli_parse_value(cmd, f, arg + len + 1, ctx);
         say_who(cmd);
-        fprintf(stderr, "%s takes no value, got '%s'\n", f->name, arg);
+        fprintf(stderr, "%s takes no value, got '%s'\n", f->name, shown(arg));
         return 1;
     }
     if (f->kind == CLI_SWITCH) return cli_parse_value(cmd, f, NULL, ctx);
@@ -253,9 +255,9 @@ int cli_parse(const char *cmd, int argc, char **argv, const cli_flag *const *tab
             words[(*nwords)++] = argv[i];
         } else {
             say_who(cmd);
-            if (max_words == 0) fprintf(stderr, "unexpected '%s': %s takes flags only (see pathlab %s --help)\n", argv[i], cmd ? cmd : "it", cmd ? cmd : "help");
+            if (max_words == 0) fprintf(stderr, "unexpected '%s': %s takes flags only (see pathlab %s --help)\n", shown(argv[i]), cmd ? cmd : "it", cmd ? cmd : "help");
             else fprintf(stderr, "unexpected '%s' after '%s': %s takes at most %d file name%s (see pathlab %s --help)\n",
-                         argv[i], words[max_words - 1], cmd ? cmd : "it", max_words, max_words > 1 ? "s" : "", cmd ? cmd : "help");
+                         shown(argv[i]), shown(words[max_words - 1]), cmd ? cmd : "it", max_words, max_words > 1 ? "s" : "", cmd ? cmd : "help");
             return 1;
         }
     }

@@ -1,5 +1,6 @@
 /* commands.c — a command line dispatched to its command, and the helps (commands.h). */
 #include "util/commands.h"
+#include "sys/shown.h"
 #include <string.h>
 #include "util/cli.h"
 
@@ -47,7 +48,7 @@ static int unknown_command(const command_table *t, const char *name)
     for (c = t->list; c->name; c++) cli_consider(name, c->name, &best, &d);
     cli_consider(name, "help", &best, &d);
     fprintf(stderr, "%s: unknown command '%.200s'", t->program, name);
-    if (best) fprintf(stderr, "; did you mean '%s'?", best);
+    if (best) fprintf(stderr, "; did you mean '%s'?", shown(best));
     fprintf(stderr, " (%s help lists the commands)\n", t->program);
     return 2;
 }

@@ -100,6 +100,13 @@ static int parse_flags(comparison *c, int argc, char **argv)
     int nmine = 1, nrest = 1, nwords, i, err;
     if (!mine) { fprintf(stderr, "pathlab: compare: out of memory\n"); return 1; }
     mine[0] = rest[0] = argv[0];
+    if (cli_listing()) {   /* the shell's completion: compare's flags and the render flags (util/cli.h) */
+        char *dash[] = {argv[0], "--", NULL};
+        i = 1, c->base.cmd = "compare", c->base.more_flags = own;
+        render_parse_flag(&c->base, 2, dash, &i);
+        free(mine);
+        return 1;
+    }
     err = split_args(argc, argv, own, mine, &nmine, rest, &nrest)
           || cli_parse("compare", nmine, mine, tables, c, NULL, 0, &nwords);
     c->base.cmd = "compare";

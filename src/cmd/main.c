@@ -70,7 +70,9 @@ static const char USAGE_RENDER[] =
     "render flags:\n"
     "  -o FILE              output image; .pfm (linear float), .ppm or .png (8-bit sRGB)\n"
     "  --spp N              samples per pixel (default 16), rendered in passes: every pixel gets sample i\n"
-    "                       before any gets i+1; Ctrl-C writes the image at the spp reached, a 2nd quits\n"
+    "                       before any gets i+1; Ctrl-C writes the image at the spp reached, a 2nd quits;\n"
+    "                       with adaptive sampling (below), the most a pixel gets (default 65536 with\n"
+    "                       --target-error, none with --time alone)\n"
     "  --time SEC           as many passes as fit in SEC seconds (up to --spp if given)\n"
     "  --samples A:B        only the sample indices A..B-1 (pieces for pathlab merge)\n"
     "  --resume             add samples to the render at -o (up to --spp in all, or for --time)\n"
@@ -111,7 +113,6 @@ static const char USAGE_ADAPTIVE[] =
     "                       R, G, B; pixels darker than 0.1x the image's mean are held to that level); implies --adaptive\n"
     "  --adaptive           with --time SEC alone: the time after the pilot is shared out, n(x) proportional to the\n"
     "                       pilot's relative standard deviation; with --target-error, --time stops it early\n"
-    "  --spp N              the cap of n(x) (default 65536 with --target-error, none with --time alone)\n"
     "  --pilot P            pilot samples per pixel (default 16)     --min-spp N   the fewest per pixel (default 4)\n"
     "  --sample-count F.pfm also write each pixel's number of samples (counts are multiples of 4)\n"
     "  not with --samples, --resume or merge: pixels with different counts do not combine\n";

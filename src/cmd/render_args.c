@@ -182,16 +182,16 @@ void render_flag_table(render_args *a, cli_flag t[RENDER_NFLAGS])
         {"--bounces", CLI_CUSTOM, NULL, 0, 0, NULL, parse_bounces, NULL},
         {"--bounce", CLI_CUSTOM, NULL, 0, 0, NULL, parse_bounce, NULL},
         {"--split", CLI_SWITCH, &a->ro.split, 0, 0, NULL, NULL, NULL},
-        {"--light", CLI_CUSTOM, NULL, 0, 0, NULL, parse_light, NULL},
-        {"--dir", CLI_CUSTOM, NULL, 0, 0, NULL, parse_dir, NULL},
-        {"--direct", CLI_CUSTOM, NULL, 0, 0, NULL, parse_direct, NULL},
+        {"--light", CLI_CUSTOM, NULL, 0, 0, LIGHT_STRATEGY_NAMES, parse_light, NULL},
+        {"--dir", CLI_CUSTOM, NULL, 0, 0, DIR_STRATEGY_NAMES, parse_dir, NULL},
+        {"--direct", CLI_CUSTOM, NULL, 0, 0, DIRECT_STRATEGY_NAMES, parse_direct, NULL},
         {"--rr", CLI_CUSTOM, NULL, 0, 0, NULL, parse_rr, NULL},
         {"--rr-below", CLI_CUSTOM, NULL, 0, 0, NULL, parse_rr_below, NULL},
         {"--orbiter", CLI_CUSTOM, NULL, 0, 0, NULL, parse_camera_file, NULL},
         {"--view", CLI_CUSTOM, NULL, 0, 0, NULL, parse_camera_file, NULL},
         {"--write-view", CLI_STRING, &a->cam.write_view, 0, 0, NULL, NULL, NULL},
         {"--pixel-offset", CLI_CUSTOM, NULL, 0, 0, NULL, parse_pixel_offset, NULL},
-        {"--sampler", CLI_CUSTOM, NULL, 0, 0, NULL, parse_sampler, NULL},
+        {"--sampler", CLI_CUSTOM, NULL, 0, 0, SAMPLER_NAMES, parse_sampler, NULL},
         {NULL, CLI_SWITCH, NULL, 0, 0, NULL, NULL, NULL}};
     memcpy(t, flags, sizeof flags);
 }

@@ -25,6 +25,7 @@
 static const char HEADER[] = "pathlab — a teaching path tracer (see README.md)\n\nusage:\n";
 static const char FOOTER[] =
     "  pathlab help [COMMAND] | COMMAND --help | --version\n"
+    "  pathlab completion bash   the bash completion script (make install puts it in place)\n"
     "\n"
     "  Any command takes --isa NAME: the instruction set of the ray traversal (avx512, avx2, sse2 on\n"
     "  x86-64; default: the best this CPU runs; every one gives the same images; --version lists them).\n"

@@ -22,8 +22,7 @@ static int read_sized(image *im, const char *path, const char **first, const ima
     return 2;
 }
 
-/* The variance of the image at path: STEM_var.pfm beside it, else the one its sidecar names. 1 if found. */
-static int variance_of(const char *path, char *out, size_t cap)
+int view_find_variance(const char *path, char *out, size_t cap)
 {
     size_t n = strlen(path), stem = n > 4 && !strcmp(path + n - 4, ".pfm") ? n - 4 : n;
     sidecar m;
@@ -42,7 +41,7 @@ static int read_image(view_data *d, html_image *h, image *im, image *var, const 
     h->name = path_file_name(path);
     h->img = im;
     if (read_sized(im, path, first, &d->img[0])) return 2;
-    if (!var_path && variance_of(path, found, sizeof found)) var_path = found;
+    if (!var_path && view_find_variance(path, found, sizeof found)) var_path = found;
     if (!var_path) return 0;
     if (read_sized(var, var_path, first, &d->img[0])) return 2;
     h->var = var;

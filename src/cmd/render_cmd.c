@@ -7,6 +7,7 @@
 #include "cmd/render_args.h"
 #include "cmd/render_adaptive.h"
 #include "files/render_meta.h"
+#include "cmd/render_resume.h"
 #include "files/resume.h"
 #include "render/plan.h"
 #include "cmd/version.h"
@@ -101,6 +102,7 @@ static int prepare_resume(render_args *a, render_plan *p, const sidecar *now, re
 {
     sidecar had;
     int64_t have;
+    if (sidecar_read(&had, a->out) == 0 && render_resume_check(now, &had, a->out)) return 2;   /* names the flag */
     if (resume_read(prev, &had, a->out, now, p->ro.sampler, a->variance != NULL, a->ro.split)) return 2;
     if (had.variance[0] && !a->variance) {   /* keep its variance up to date, where it is */
         render_files_variance_path(var_out, cap, a->out, had.variance);
@@ -175,7 +177,7 @@ static int render_and_write(render_args *a, render_plan *p, const scene *s, cons
     interrupt_install();   /* from here, a first Ctrl-C stops after the pass and writes what it reached */
     if (p->adaptive ? adaptive_render(s, cam, &p->ro, &p->ao, &r, &ar) : render(s, cam, &p->ro, &r)) { render_files_free(&prev); return 1; }
     if (!p->ro.quiet && p->adaptive) adaptive_print_summary(&ar, r.seconds);
-    else if (!p->ro.quiet) render_print_stats(&r, r.spp, cam->width * cam->height);
+    else if (!p->ro.quiet) render_print_stats(&r, r.spp, p->had, cam->width * cam->height);
     err = finish_meta(&m, a, p, &r, &prev, &ar) || (prev.nlayers && resume_combine(&prev, sidecar_spp(&prev.meta), &r));
     err = err || render_files_write_all(a->out, a->variance, a->sample_count, &ar.count, a->exposure, &m, r.mean, r.var,
                                         r.nlayers, p->ro.io.bmin);
@@ -193,8 +195,11 @@ int render_main(int argc, char **argv)
     render_plan p;
     scene s;
     camera cam;
-    int rc;
-    if (parse_render_args(&a, &p, argc, argv)) return 2;
+    int rc, nargs;
+    char *args[RESUME_MAX_ARGS], words[3 * SIDECAR_TEXT];
+    /* --resume -o FILE: what the command line leaves out is FILE's sidecar's (cmd/render_resume.h) */
+    if (render_resume_args(argc, argv, args, &nargs, words, sizeof words)) return 2;
+    if (parse_render_args(&a, &p, nargs, args)) return 2;
     if (scene_load(&s, a.scene, a.ro.threads, a.ro.quiet)) return 2;
     if (!a.ro.quiet)
         fprintf(stderr, "%s: %d triangles (%d degenerate dropped), %d emitting, %d materials; loaded in %.0f ms, BVH in %.0f ms\n",

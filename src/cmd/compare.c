@@ -24,6 +24,7 @@
 #include "compare/compare_outputs.h"
 #include "compare/compare_render.h"
 #include "compare/view_images.h"
+#include "image/exposure.h"
 #include "cmd/estimators.h"
 #include "cmd/help.h"
 #include "cmd/render_args.h"
@@ -209,7 +210,7 @@ static int choose_spp(comparison *c, const scene *s)
 /* DIR/SLUG.pfm and, if var has pixels, DIR/SLUG_var.pfm, each with its sidecar as render writes them
  * (scene, flags, camera, seed, samples: grade, merge and view find the variance and read what made
  * the image); then DIR/SLUG.png. 0, or 1 after printing why. */
-static int save_render(const comparison *c, const scene *s, const render_opts *ro, const char *slug, const image *img,
+static int save_render(comparison *c, const scene *s, const render_opts *ro, const char *slug, const image *img,
                        const image *var, int dof)
 {
     char out[PATH_CAP], var_out[PATH_CAP];
@@ -220,12 +221,13 @@ static int save_render(const comparison *c, const scene *s, const render_opts *r
     m.range[0][0] = ro->first;
     m.range[0][1] = ro->first + (uint64_t)ro->spp;
     m.variance_dof = dof;
+    if (isnan(c->base.exposure)) c->base.exposure = img_auto_exposure(img);   /* --exposure auto: the first image's, for all */
     return render_files_write(out, var->px ? var_out : NULL, 0.0f, &m, img, var, 1, 0)
            || compare_save_image(c->dir, "", slug, ".png", img, c->base.exposure);
 }
 
 /* The best estimator, 16 x the largest spp (or --ref-spp), its own seed; written as DIR/reference.*. */
-static int render_reference(const comparison *c, const scene *s, compare_reference *ref)
+static int render_reference(comparison *c, const scene *s, compare_reference *ref)
 {
     estimator_spec best;
     int i, n, max_spp = 0, dof = 0;
@@ -286,6 +288,7 @@ static int run(comparison *c)
         || compare_make_dir(c->dir)) goto done;
     rc = 1;
     /* the renders: how many samples each, the reference unless given, then each estimator */
+    if (c->ref && isnan(c->base.exposure)) c->base.exposure = img_auto_exposure(&ref.img);   /* --exposure auto */
     if (choose_spp(c, &s) || (!c->ref && render_reference(c, &s, &ref))) goto done;
     compare_reference_noise(&ref);   /* its own noise, taken off each MSE */
     if (render_estimators(c, &s, &ref)) goto done;

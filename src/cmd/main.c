@@ -43,7 +43,7 @@ static const char SYN_GRADE[] =
     "                [--pages DIR] [--heatmap OUT.png|FOLDER] [--block B] [--var REF_VAR.pfm] [--layers PREFIX] [--details]\n"
     "                is each IMAGE - REF noise or bias, and if bias, the likely mistake (pathlab grade --help; docs/grading.md)\n";
 static const char SYN_CONVERT[] =
-    "  pathlab convert IN.pfm OUT.png|OUT.ppm|OUT.pfm [--exposure STOPS]   view a PFM (e.g. a --split layer);\n"
+    "  pathlab convert IN.pfm OUT.png|OUT.ppm|OUT.pfm [--exposure STOPS|auto]   view a PFM (e.g. a --split layer);\n"
     "                prints the size and each channel's mean, min and max\n";
 static const char MORE_BENCH[] =
     "  -r RES        the rays: a RES x RES grid of camera rays (default 1024)\n"
@@ -56,7 +56,9 @@ static const char MORE_DIFF[] =
 static const char MORE_MERGE[] =
     "  --variance OUT_var.pfm   also write the variance of the merged mean (the inputs' variances, found beside them)\n";
 static const char MORE_CONVERT[] =
-    "  --exposure STOPS   PPM and PNG: multiply by 2^STOPS before the sRGB curve (default 0)\n";
+    "  --exposure STOPS   PPM and PNG: multiply by 2^STOPS before the sRGB curve (default 0); auto: the\n"
+    "                     median luminance of the pixels that are not black to mid-grey (it prints the stops)\n"
+    "  OUT.pfm gets IN.pfm's sidecar, if it has one\n";
 static const char MORE_VIEW[] =
     "  --ref REF.pfm   the reference: split view, signed difference, its value under the mouse\n"
     "  --var VAR.pfm   the first image's variance (for the z-score; else STEM_var.pfm or its sidecar's)\n"
@@ -81,7 +83,8 @@ static const char USAGE_RENDER[] =
     "  --seed S             random seed (default 1); same seed, same image, any thread count\n"
     "  --threads N          worker threads (default: every core)\n"
     "  --quiet              no progress bar and no stats line\n"
-    "  --exposure STOPS     PPM and PNG: multiply by 2^STOPS before the sRGB curve (default 0)\n"
+    "  --exposure STOPS     PPM and PNG: multiply by 2^STOPS before the sRGB curve (default 0); auto: the\n"
+    "                       median luminance of the pixels that are not black to mid-grey (it prints the stops)\n"
     "camera (defaults from SCENE.view, else framing the whole scene):\n"
     "  --eye X,Y,Z  --target X,Y,Z  --up X,Y,Z  --fov DEGREES (vertical)  --size WxH\n"
     "  --view FILE          the camera of a view file instead of SCENE.view\n"

@@ -3,6 +3,7 @@
  * they describe is made by files/view_setup.c. */
 #include "cmd/render_args.h"
 #include "sys/parallel.h"
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -61,6 +62,15 @@ static int parse_bounce(void *ctx, const char *flag, const char *v)
 }
 
 /* --rr D|off: Russian roulette after D bounces, or never (-1) */
+/* --exposure STOPS, or auto: NAN until the image is there (image/exposure.h picks it then) */
+static int parse_exposure(void *ctx, const char *flag, const char *v)
+{
+    render_args *a = ctx;
+    const cli_flag f = {flag, CLI_FLOAT, &a->exposure, 0, 0, NULL, NULL, NULL};
+    if (!strcmp(v, "auto")) { a->exposure = NAN; return 0; }
+    return cli_parse_value(a->cmd, &f, v, NULL);
+}
+
 static int parse_rr(void *ctx, const char *flag, const char *v)
 {
     render_args *a = ctx;
@@ -172,7 +182,7 @@ void render_flag_table(render_args *a, cli_flag t[RENDER_NFLAGS])
         {"--seed", CLI_U64, &a->ro.seed, 0, 0, NULL, NULL, NULL},
         {"--threads", CLI_INT, &a->ro.threads, 1, PARALLEL_MAX_THREADS, NULL, NULL, NULL},
         {"--quiet", CLI_SWITCH, &a->ro.quiet, 0, 0, NULL, NULL, NULL},
-        {"--exposure", CLI_FLOAT, &a->exposure, 0, 0, NULL, NULL, NULL},
+        {"--exposure", CLI_CUSTOM, NULL, 0, 0, NULL, parse_exposure, NULL},
         {"--eye", CLI_VEC3, &a->cam.flags.eye, 0, 0, NULL, NULL, &a->cam.eye},
         {"--target", CLI_VEC3, &a->cam.flags.target, 0, 0, NULL, NULL, &a->cam.target},
         {"--up", CLI_VEC3, &a->cam.flags.up, 0, 0, NULL, NULL, &a->cam.up},

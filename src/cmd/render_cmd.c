@@ -2,11 +2,13 @@
  * their sidecars, and what a stop by Ctrl-C or --time wrote. */
 #include "cmd/render_cmd.h"
 #include <inttypes.h>
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 #include "cmd/render_args.h"
 #include "cmd/render_adaptive.h"
 #include "files/render_meta.h"
+#include "image/exposure.h"
 #include "cmd/render_resume.h"
 #include "files/resume.h"
 #include "render/plan.h"
@@ -159,6 +161,17 @@ static void report_stop(const render_args *a, const render_plan *p, const render
         fprintf(stderr, "pathlab render: --time %.9g s: %" PRId64 " of %" PRId64 " spp fitted, written %s\n", a->ro.time_limit, spp, asked, a->out);
 }
 
+/* "pathlab render: wrote FILE (and its variance, layers, sidecars)". */
+static void say_written(const render_args *a, const render_plan *p)
+{
+    int nl = a->ro.split ? p->ro.io.bmax - p->ro.io.bmin + 1 : 0;
+    fprintf(stderr, "pathlab render: wrote %s", a->out);
+    if (a->variance) fprintf(stderr, ", its variance %s", a->variance);
+    if (nl > 0) fprintf(stderr, ", %d layer%s (L%d..L%d)", nl, nl > 1 ? "s" : "", p->ro.io.bmin, p->ro.io.bmax);
+    if (a->sample_count) fprintf(stderr, ", the sample counts %s", a->sample_count);
+    fprintf(stderr, "%s\n", img_format_of(a->out) == IMG_PFM ? ", each PFM with its sidecar .meta" : "");
+}
+
 static int render_and_write(render_args *a, render_plan *p, const scene *s, const camera *cam)
 {
     render_files prev;
@@ -179,9 +192,14 @@ static int render_and_write(render_args *a, render_plan *p, const scene *s, cons
     if (!p->ro.quiet && p->adaptive) adaptive_print_summary(&ar, r.seconds);
     else if (!p->ro.quiet) render_print_stats(&r, r.spp, p->had, cam->width * cam->height);
     err = finish_meta(&m, a, p, &r, &prev, &ar) || (prev.nlayers && resume_combine(&prev, sidecar_spp(&prev.meta), &r));
+    if (isnan(a->exposure)) {   /* --exposure auto: of the image written (image/exposure.h) */
+        a->exposure = img_auto_exposure(&r.mean[0]);
+        if (!p->ro.quiet) fprintf(stderr, "exposure auto: %+.1f stops (the median luminance of the pixels that are not black to mid-grey)\n", a->exposure);
+    }
     err = err || render_files_write_all(a->out, a->variance, a->sample_count, &ar.count, a->exposure, &m, r.mean, r.var,
                                         r.nlayers, p->ro.io.bmin);
     if (!err) report_stop(a, p, &r, &m, &ar);
+    if (!err && !p->ro.quiet && !r.interrupted && !m.stopped[0]) say_written(a, p);   /* else report_stop said it */
     if (!err && r.interrupted) rc = 128 + r.interrupted;
     render_result_free(&r);
     render_files_free(&prev);

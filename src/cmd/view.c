@@ -52,6 +52,8 @@ int view_main(int argc, char **argv)
         page.strip = d->strip;
         page.nstrip = d->nlayers;
         rc = html_page_write(a.out, &page) ? 1 : 0;
+        if (!rc) fprintf(stderr, "pathlab view: wrote %s (%d image%s%s, %d layer%s; open it in any browser)\n", a.out, a.nwords,
+                         a.nwords > 1 ? "s" : "", a.ref ? " and the reference" : "", d->nlayers, d->nlayers == 1 ? "" : "s");
     }
     view_data_free(d);
     return rc;

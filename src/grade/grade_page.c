@@ -105,7 +105,7 @@ static int put_verdict(FILE *f, const grade_page *p)
     err |= html_put_escaped(f, p->ref_path);
     fprintf(f, " at family-wise level alpha %g", p->r->alpha);
     if (bias[0]) { fputs("; bias ", f); err |= html_put_escaped(f, bias); }
-    if (p->row->where[0]) { fputs(" in ", f); err |= html_put_escaped(f, p->row->where); }
+    if (p->row->where[0]) { fputs("; significant in ", f); err |= html_put_escaped(f, p->row->where); }   /* its own scope */
     fputs(".</p>\n", f);
     if (p->row->status == 1) fputs(p->nh ? "<p>Likely mistake:</p>\n<ul class=\"mistakes\">\n" : "<p>None of the catalogue of mistakes explains "
                                    "the difference (pathlab grade; docs/grading.md).</p>\n", f);

@@ -104,7 +104,10 @@ static int prepare_resume(render_args *a, render_plan *p, const sidecar *now, re
 {
     sidecar had;
     int64_t have;
-    if (sidecar_read(&had, a->out) == 0 && render_resume_check(now, &had, a->out)) return 2;   /* names the flag */
+    /* a flag that disagrees with the sidecar, named (a Sobol render on either side: resume_read says why not) */
+    if (sidecar_read(&had, a->out) == 0 && p->ro.sampler == SAMPLER_INDEPENDENT && !sidecar_is_sobol(&had)
+        && render_resume_check(now, &had, a->out))
+        return 2;
     if (resume_read(prev, &had, a->out, now, p->ro.sampler, a->variance != NULL, a->ro.split)) return 2;
     if (had.variance[0] && !a->variance) {   /* keep its variance up to date, where it is */
         render_files_variance_path(var_out, cap, a->out, had.variance);

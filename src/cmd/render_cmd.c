@@ -104,8 +104,8 @@ static int prepare_resume(render_args *a, render_plan *p, const sidecar *now, re
 {
     sidecar had;
     int64_t have;
-    /* a flag that disagrees with the sidecar, named (a Sobol render on either side: resume_read says why not) */
-    if (sidecar_read(&had, a->out) == 0 && p->ro.sampler == SAMPLER_INDEPENDENT && !sidecar_is_sobol(&had)
+    /* a flag that disagrees with the sidecar, named (a Sobol or adaptive render: resume_read says why not) */
+    if (sidecar_read(&had, a->out) == 0 && p->ro.sampler == SAMPLER_INDEPENDENT && !sidecar_is_sobol(&had) && !had.adaptive[0]
         && render_resume_check(now, &had, a->out))
         return 2;
     if (resume_read(prev, &had, a->out, now, p->ro.sampler, a->variance != NULL, a->ro.split)) return 2;

@@ -118,11 +118,34 @@ $(BUILD)/cmd/version.o: CFLAGS += -DPATHLAB_REVISION='"$(REVISION)"'
 
 -include $(OBJ:.o=.d) $(TEST_BIN:=.d) $(BUILD)/bench-plot.d
 
-# SPP=N for a quicker or cleaner image (default 64: the 512x512 render took 7.6 s on 2 cores, 2026-12-04).
+# SPP=N for a quicker or cleaner image (default 64; its time on 2 cores: README.md, written by scripts/readme-figures.sh).
 SPP ?= 64
 run: $(PROG)
 	./$(PROG) render scenes/cornell.obj --spp $(SPP) -o cornell.png
 	@echo "The Cornell box is in $(CURDIR)/cornell.png (open it with any image viewer)."
+
+# make install [PREFIX=/usr/local] [DESTDIR=]: the program in PREFIX/bin, its man page (tools/man.sh,
+# made from `pathlab help`) in PREFIX/share/man/man1, the bash completion (`pathlab completion bash`,
+# from the flag tables) in PREFIX/share/bash-completion/completions; make uninstall removes those three
+# (same PREFIX and DESTDIR). tests/test_install.sh tries both in a temporary folder.
+PREFIX ?= /usr/local
+BINDIR = $(PREFIX)/bin
+MAN1DIR = $(PREFIX)/share/man/man1
+COMPLETIONDIR = $(PREFIX)/share/bash-completion/completions
+$(BUILD)/pathlab.1: $(PROG) tools/man.sh
+	$(call say,MAN,$@)
+	$(Q)tools/man.sh ./$(PROG) > $@.tmp && mv $@.tmp $@
+$(BUILD)/pathlab.bash: $(PROG)
+	$(call say,GEN,$@)
+	$(Q)./$(PROG) completion bash > $@.tmp && mv $@.tmp $@
+install: $(PROG) $(BUILD)/pathlab.1 $(BUILD)/pathlab.bash
+	install -d '$(DESTDIR)$(BINDIR)' '$(DESTDIR)$(MAN1DIR)' '$(DESTDIR)$(COMPLETIONDIR)'
+	install -m 755 $(PROG) '$(DESTDIR)$(BINDIR)/pathlab'
+	install -m 644 $(BUILD)/pathlab.1 '$(DESTDIR)$(MAN1DIR)/pathlab.1'
+	install -m 644 $(BUILD)/pathlab.bash '$(DESTDIR)$(COMPLETIONDIR)/pathlab'
+	@echo "installed $(DESTDIR)$(BINDIR)/pathlab, its man page and its bash completion (a new shell completes pathlab's flags)"
+uninstall:
+	rm -f '$(DESTDIR)$(BINDIR)/pathlab' '$(DESTDIR)$(MAN1DIR)/pathlab.1' '$(DESTDIR)$(COMPLETIONDIR)/pathlab'
 
 # Tools the tests use but pathlab never links: OpenImageIO's idiff and oiiotool, GNU parallel (the
 # recipe of docs/distributed.md). Installed without a question (apt-get -y) as root or with a
@@ -271,4 +294,4 @@ mutants:
 clean:
 	rm -rf build build-san build-clang-san build-fuzz build-native pathlab
 
-.PHONY: all run test test-estimators test-deps fuzz stress refs bench bench-native bench-portable bench-cycles bench-cycles-deps grade-calibration clean mutants test-parallel test-slurm
+.PHONY: all run install uninstall test test-estimators test-deps fuzz stress refs bench bench-native bench-portable bench-cycles bench-cycles-deps grade-calibration clean mutants test-parallel test-slurm

@@ -95,12 +95,12 @@ mkdir -p $G/compare-plates; cp "$W/cmp-plates/mosaic.png" "$W/cmp-plates/table.m
 
 say "3. compare: mis-plates, --light area (the same reference)"
 "$P" compare $MP --estimators "$C" --bounce 1 --light area --size 128x128 --spp 16 --seed 3 \
-    --threads 2 --ref "$W/cmp-plates/reference.pfm" --ref-var "$W/cmp-plates/reference-var.pfm" -o "$W/cmp-plates-area" 2> "$W/mpa.err"
+    --threads 2 --ref "$W/cmp-plates/reference.pfm" --ref-var "$W/cmp-plates/reference_var.pfm" -o "$W/cmp-plates-area" 2> "$W/mpa.err"
 mkdir -p $G/compare-plates-area; cp "$W/cmp-plates-area/mosaic.png" "$W/cmp-plates-area/table.md" $G/compare-plates-area/
 
 say "3. compare: mis-plates, equal time"
 "$P" compare $MP --estimators "$C" --bounce 1 --light power --size 128x128 --time 1 --seed 3 \
-    --threads 2 --ref "$W/cmp-plates/reference.pfm" --ref-var "$W/cmp-plates/reference-var.pfm" -o "$W/cmp-plates-time" 2> "$W/mpt.err"
+    --threads 2 --ref "$W/cmp-plates/reference.pfm" --ref-var "$W/cmp-plates/reference_var.pfm" -o "$W/cmp-plates-time" 2> "$W/mpt.err"
 mkdir -p $G/compare-plates-time; cp "$W/cmp-plates-time/table.md" $G/compare-plates-time/
 
 # ---- 4. Grading ----------------------------------------------------------------------------------

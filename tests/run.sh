@@ -97,7 +97,8 @@ report() {   # NAME: prints the file's FAIL lines and its count line, adds to th
     read -r rc ms < "$log/$name.end"
     p=$(grep -c '^PASS ' "$log/$name.out"); f=$(grep -c '^FAIL ' "$log/$name.out"); k=$(grep -c '^SKIP ' "$log/$name.out")
     if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then
-        echo "FAIL $name: exited with status $rc without a FAIL line; its last lines:"
+        sig=; [ "$rc" -gt 128 ] && sig=$(kill -l $((rc - 128)) 2> /dev/null) && sig=" (SIG${sig#SIG}: killed by a signal)"
+        echo "FAIL $name: exited with status $rc$sig without a FAIL line; its last lines:"
         tail -n 15 "$log/$name.out" | sed 's/^/    /'
         f=1
     fi
@@ -126,5 +127,17 @@ done
 kill "$hb" 2> /dev/null; wait "$hb" 2> /dev/null; hb=
 report_ended
 [ "$skipped" -gt 0 ] && echo "$skipped checks skipped (a tool missing: see the SKIP lines above)"
+# A whole run of the default build has at least the checks the README says (scripts/readme-figures.sh
+# wrote them): fewer means a test lost checks, or the README is out of date (rerun that script).
+if [ -z "$only" ] && [ -z "${TEST_EXCLUDE:-}" ] && [ "${TEST_SOURCE_ONLY:-run}" = run ] && [ -z "${PATHLAB_FAST:-}" ]; then
+    mark="<!-- scripts/readme-figures.sh make test -->"
+    [ "${EST_ALL:-0}" = 1 ] && mark="<!-- scripts/readme-figures.sh make test EST_ALL=1 -->"
+    said=$(grep -F -- "$mark" README.md | sed -n 's/.*\*\*, \([0-9]*\) checks.*/\1/p' | head -n 1)
+    total=$((passed + failed + skipped))
+    if [ -n "$said" ] && [ "$total" -lt "$said" ]; then
+        echo "FAIL README.md says $said checks, this run had $total: a test lost checks, or rerun scripts/readme-figures.sh"
+        failed=$((failed + 1))
+    fi
+fi
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -55,7 +55,7 @@ WO="0.5 0 0.866"
 run() {
     local name=$1 f=$2 want=$3 pat=$4; shift 4
     $PATHLAB check-sampler "$TMP/$f" "$@" > "$TMP/out" 2> "$TMP/err"; local rc=$?
-    if [ $rc -ne "$want" ]; then fail "$name: exit $rc, wanted $want: $(grep -E 'FAIL|->' "$TMP/out" | head -4) $(head -c 300 "$TMP/err")"
+    if [ $rc -ne "$want" ]; then fail "$name: wanted exit $want: $(grep -E 'FAIL|->' "$TMP/out" | head -4) $(ran "$rc" "$TMP/err" $PATHLAB check-sampler "$TMP/$f" "$@")"
     elif ! grep -qE -- "$pat" "$TMP/out"; then fail "$name: no '$pat' in: $(grep -E 'FAIL|->' "$TMP/out" | head -4)"
     else pass "$name"; fi
 }

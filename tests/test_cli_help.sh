@@ -90,4 +90,56 @@ expect_status "--up along the view: status 2" 2 $PATHLAB render "$TMP/nope.obj" 
 expect_err "--up along the view: named" "--up is parallel"
 expect_status "compare --fov 0: status 2" 2 $PATHLAB compare "$TMP/nope.obj" --estimators light --fov 0 -o "$TMP/cmp2"
 expect_err "compare --fov 0: named" "--fov expects"
+# pathlab help: each command's help under its heading, the same text as `help NAME`; every flag of a
+# command's table (pathlab completion flags NAME) in its help, none described twice
+for c in $commands; do
+    awk -v h="==== pathlab $c ====" '$0 == h { on = 1; next } /^==== pathlab / { on = 0 } on' "$TMP/all" | sed '${/^$/d}' > "$TMP/section"
+    $PATHLAB help $c > "$TMP/h"
+    if [ -s "$TMP/section" ] && cmp -s "$TMP/section" "$TMP/h"; then pass "pathlab help: $c's help under its heading, as help $c"
+    else fail "pathlab help: no heading '==== pathlab $c ====' followed by help $c's text"; fi
+    $PATHLAB completion flags $c > "$TMP/flags"; rc=$?
+    missing= twice=
+    for f in $(cut -d' ' -f1 "$TMP/flags"); do
+        case $f in --help|-h) continue ;; esac
+        [ $c = compare ] && $PATHLAB completion flags render | grep -q -- "^$f\b" && [ $f != -o ] && [ $f != --spp ] && [ $f != --time ] && continue
+        grep -qE -- "(^|[ [|(])$f([ =,]|$)" "$TMP/h" || missing="$missing $f"
+        [ "$(grep -cE -- "^ *$f " "$TMP/h")" -le 1 ] || twice="$twice $f"
+    done
+    if [ $rc = 0 ] && [ -z "$missing$twice" ]; then pass "help $c: each of its $(wc -l < "$TMP/flags") flags there, none described twice"
+    else fail "help $c: status $rc, flags missing:${missing:- none}; described twice:${twice:- none}"; fi
+done
+
+# the bash completion, generated from the flag tables: flags of the command, values of a list
+$PATHLAB completion bash > "$TMP/completion.bash"
+if bash -n "$TMP/completion.bash"; then pass "completion bash: a valid bash script"; else fail "completion bash: not valid bash"; fi
+complete_words() {   # the words bash would offer after the command line "$@" (the last word being typed)
+    bash -c '. "$1"; shift; COMP_WORDS=("$@"); COMP_CWORD=$(($# - 1)); _pathlab; echo "${COMPREPLY[*]}"' _ "$TMP/completion.bash" "$@"
+}
+for t in "render --di|--dir --direct" "render --dir |uniform cosine brdf" "render --sampler sob|sobol sobol1" \
+         "grade --al|--alpha" "ren|render" "help gr|grade" "compare --estim|--estimators" "view --ti|--title"; do
+    line=${t%%|*} want=${t#*|}
+    # shellcheck disable=SC2086
+    if [ "${line: -1}" = " " ]; then got=$(complete_words pathlab $line ""); else got=$(complete_words pathlab $line); fi
+    [ "$got" = "$want" ] && pass "completion: 'pathlab $line' offers '$want'" || fail "completion: 'pathlab $line' offers '$got', want '$want'"
+done
+
+# did you mean, for every flag of every command (two letters swapped) and the values of a list
+for c in $commands; do
+    bad=
+    for f in $($PATHLAB completion flags $c | cut -d' ' -f1); do
+        case $f in --help|-h|-?) continue ;; esac
+        typo="--${f:3:1}${f:2:1}${f:4}"
+        [ "$typo" = "$f" ] && continue
+        $PATHLAB $c "$typo" x > /dev/null 2> "$TMP/err"; rc=$?
+        [ $rc = 2 ] && grep -q -- "did you mean '$f'" "$TMP/err" || bad="$bad $typo->$f($rc: $(head -c 100 "$TMP/err"))"
+    done
+    [ -z "$bad" ] && pass "$c: every flag typed with two letters swapped gets 'did you mean' it" || fail "$c: no did you mean for:$bad"
+done
+typo "render --dir bdrf" "--dir expects one of uniform, cosine, brdf, got 'bdrf'; did you mean brdf\?" $PATHLAB render scenes/cornell.obj --dir bdrf -o "$out"
+typo "render --sampler sobl" "did you mean sobol\?" $PATHLAB render scenes/cornell.obj --sampler sobl -o "$out"
+typo "grade --reference" "unknown flag '--reference'; did you mean '--ref'\?" $PATHLAB grade x.pfm --reference r.pfm
+expect_status "check-sampler --pdf cosin: status 2" 2 $PATHLAB check-sampler x.txt --pdf cosin
+expect_err "check-sampler --pdf cosin: did you mean" "^pathlab check-sampler: --pdf expects one of .*, got 'cosin'; did you mean cosine\?"
+expect_status "compare --estimators ligth: status 2" 2 $PATHLAB compare scenes/cornell.obj --estimators ligth -o "$TMP/cmp"
+expect_err "compare --estimators ligth: did you mean" "unknown name 'ligth'; did you mean light\?"
 exit 0

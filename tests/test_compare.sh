@@ -23,10 +23,25 @@ if [ -z "$bad" ] && [ "$(csv 3 3 "$D/table.csv")" = "$SPP" ]; then pass "compare
 else fail "compare: non-finite or missing metrics: $bad"; fi
 missing=""
 for f in light.pfm light.png heat-light.png brdf.pfm solid-angle.pfm solid-angle.png heat-solid-angle.png \
-         reference.pfm reference-var.pfm mosaic.ppm mosaic.png table.md table.csv; do
+         reference.pfm reference_var.pfm mosaic.ppm mosaic.png table.md table.csv; do
     [ -s "$D/$f" ] || missing="$missing $f"
 done
 if [ -z "$missing" ]; then pass "compare: images, heatmaps, reference, mosaic and tables written"; else fail "compare: missing:$missing"; fi
+# every PFM with its sidecar, each variance NAME_var.pfm named in its image's sidecar
+bad=
+for f in "$D"/*.pfm; do
+    [ -s "$f.meta" ] || { bad="$bad $(basename "$f"): no sidecar;"; continue; }
+    case $f in
+    *_var.pfm) grep -q '^kind variance$' "$f.meta" || bad="$bad $(basename "$f"): not kind variance;" ;;
+    *) grep -q '^kind mean$' "$f.meta" && grep -q "^variance $(basename "${f%.pfm}")_var.pfm$" "$f.meta" \
+           && grep -q '^scene scenes/cornell.obj$' "$f.meta" || bad="$bad $(basename "$f"): $(paste -sd' ' "$f.meta" | cut -c1-200);" ;;
+    esac
+done
+[ -z "$bad" ] && pass "compare: each of its $(ls "$D"/*.pfm | wc -l) PFMs has its sidecar; variances NAME_var.pfm, named by their image's" \
+    || fail "compare: sidecars:$bad"
+expect_status "compare: --ref without --ref-var, exit 0" 0 $C --spp 2 --estimators light --ref "$D/reference.pfm" -o "$TMP/found"
+grep -q "its variance $D/reference_var.pfm" "$TMP/found/table.md" && pass "compare: --ref's variance REF_var.pfm found without --ref-var" \
+    || fail "compare: --ref's variance not found: $(grep reference "$TMP/found/table.md" | head -2)"
 if [ "$(csv 2 3 "$D/table.csv")" = "--direct light --light solid-angle" ] && [ "$(csv 1 3 "$D/table.csv")" = "solid angle" ]; then
     pass "compare: LABEL=FLAGS keeps the label and the flags"
 else fail "compare: row 3 is '$(sed -n 4p "$D/table.csv")'"; fi

@@ -45,4 +45,34 @@ expect_no_file "convert: bad exposure writes nothing" "$TMP/n.png"
 printf 'PF\n8 4\n-1\nshort' > "$TMP/bad.pfm"
 expect_status "convert: truncated PFM, exit 2" 2 $PATHLAB convert "$TMP/bad.pfm" "$TMP/n.png"
 expect_no_file "convert: truncated PFM writes nothing" "$TMP/n.png"
+
+# --exposure auto on each L_k of the Cornell box (64x64, 16 spp, L0..L4): the stops chosen are
+# printed; the picture shows the layer's surfaces: of its pixels that are not black, at most 10%
+# washed out (white: every channel at 255) and their median sRGB luminance between 0.3 and 0.65 (mid-grey, 0.18
+# linear, is 0.46) for L1..L4 (L0 is the lamp alone: not clipped). The rule of the 99th percentile
+# to white, or the brightest pixel to white, leaves L2..L4 dark (median below 0.3).
+$PATHLAB render scenes/cornell.obj --size 64x64 --spp 16 --bounces 0:4 --split --quiet -o "$TMP/lk.pfm"
+cat > "$TMP/ppm.py" <<'PY'
+import sys
+b = open(sys.argv[1], 'rb').read()
+parts = b.split(None, 4); w, h = int(parts[1]), int(parts[2]); px = parts[4][-3 * w * h:]
+lum = lambda i: (0.2126 * px[i] + 0.7152 * px[i + 1] + 0.0722 * px[i + 2]) / 255
+lit = [i for i in range(0, 3 * w * h, 3) if px[i] or px[i + 1] or px[i + 2]]
+if not lit: print("0 0"); sys.exit()
+clipped = sum(1 for i in lit if min(px[i:i + 3]) == 255) / len(lit)
+print("%.3f %.3f" % (clipped, sorted(lum(i) for i in lit)[len(lit) // 2]))
+PY
+for k in 0 1 2 3 4; do
+    out=$($PATHLAB convert "$TMP/lk_L$k.pfm" "$TMP/lk_L$k.ppm" --exposure auto 2> "$TMP/err"); rc=$?
+    stops=$(sed -n 's/^exposure auto: \([-+][0-9.]*\) stops.*/\1/p' <<< "$out")
+    read -r clipped med <<< "$(python3 "$TMP/ppm.py" "$TMP/lk_L$k.ppm")"
+    if [ $k = 0 ]; then ok=$(awk -v c="$clipped" 'BEGIN { print (c <= 0.1) }')
+    else ok=$(awk -v c="$clipped" -v m="$med" 'BEGIN { print (c <= 0.1 && m >= 0.3 && m <= 0.65) }'); fi
+    if [ $rc = 0 ] && [ -n "$stops" ] && [ "$ok" = 1 ]; then pass "convert --exposure auto on L$k: $stops stops; $clipped of the lit pixels clipped, median sRGB $med"
+    else fail "convert --exposure auto on L$k: status $rc, stops '$stops', clipped $clipped, median $med"; fi
+done
+grep -q "^pathlab convert: wrote $TMP/lk_L4.ppm$" "$TMP/err" && pass "convert says what it wrote" || fail "convert: no 'wrote' line: $(cat "$TMP/err")"
+$PATHLAB convert "$TMP/lk.pfm" "$TMP/copy.pfm" > /dev/null 2>&1
+if grep -q '^samples 0:16$' "$TMP/copy.pfm.meta" && ! grep -q '^variance ' "$TMP/copy.pfm.meta"; then pass "convert to PFM: the input's sidecar beside it (no variance named)"
+else fail "convert to PFM: sidecar '$(cat "$TMP/copy.pfm.meta" 2>&1 | head -c 200)'"; fi
 exit 0

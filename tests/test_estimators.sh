@@ -87,9 +87,10 @@ plan_full() {   # scene range: fingerprint the 48 combinations, group identical 
     for m in $DIRECTS; do for l in $LIGHTS; do for d in $DIRS; do
         rm -f "$TMP"/fp*.pfm
         # shellcheck disable=SC2046
-        if ! $PATHLAB render "$(scene_file "$sc")" --quiet --size $SIZE $CAM --spp $FP_SPP --seed 7 $(range_flags "$rg") \
-                --direct "$m" --light "$l" --dir "$d" -o "$TMP/fp.pfm" --variance "$TMP/fpv.pfm" 2> "$TMP/err"; then
-            fail "$sc $rg --direct $m --light $l --dir $d: render failed: $(head -c 300 "$TMP/err")"
+        fcmd="$PATHLAB render $(scene_file "$sc") --quiet --size $SIZE $CAM --spp $FP_SPP --seed 7 $(range_flags "$rg") --direct $m --light $l --dir $d -o $TMP/fp.pfm --variance $TMP/fpv.pfm"
+        $fcmd 2> "$TMP/err"; frc=$?
+        if [ "$frc" -ne 0 ]; then
+            fail "$sc $rg --direct $m --light $l --dir $d: render failed: $(ran "$frc" "$TMP/err" "$fcmd")"
             continue
         fi
         key=$(cat "$TMP"/fp*.pfm | md5sum | cut -c1-32)
@@ -160,9 +161,10 @@ for j in "${jobs[@]}"; do
     else what="$sc $rg $covers [$# named]"; fi
     rm -f "$TMP"/r*.pfm
     # shellcheck disable=SC2046
-    if ! $PATHLAB render "$(scene_file "$sc")" --size $SIZE $CAM --spp $spp --seed $seed $(range_flags "$rg") \
-            --direct "$m" --light "$l" --dir "$d" -o "$TMP/r.pfm" --variance "$TMP/rv.pfm" 2> "$TMP/err"; then
-        fail "$what: render failed: $(head -c 300 "$TMP/err")"
+    rcmd="$PATHLAB render $(scene_file "$sc") --size $SIZE $CAM --spp $spp --seed $seed $(range_flags "$rg") --direct $m --light $l --dir $d -o $TMP/r.pfm --variance $TMP/rv.pfm"
+    $rcmd 2> "$TMP/err"; rrc=$?
+    if [ "$rrc" -ne 0 ]; then
+        fail "$what: render failed: $(ran "$rrc" "$TMP/err" "$rcmd")"
         continue
     fi
     nrender=$((nrender + 1))

@@ -32,7 +32,7 @@ grade_expect() {
     echo "$out" > "$TMP/grade.txt"
     local verdict
     verdict=$(echo "$out" | grep -E '^(PASS|FAIL):|^  (brighter|darker)' | sed 's/^ *//' | paste -sd ';' -)
-    if [ "$rc" -ne "$want" ]; then fail "$name: grade exit $rc, wanted $want: $verdict $(head -c 200 "$TMP/err")"
+    if [ "$rc" -ne "$want" ]; then fail "$name: wanted exit $want: $verdict: $(ran "$rc" "$TMP/err" $PATHLAB grade "$@" --ref "$TMP/ref.pfm")"
     elif [ -n "$pattern" ] && ! echo "$out" | grep -qE -- "$pattern"; then fail "$name: no line matches '$pattern': $verdict"
     else pass "$name [$verdict]"; fi
 }

@@ -27,6 +27,8 @@ verdict() {
 }
 # grade_case IMAGE REF: grades, leaves the status in $rc
 grade_case() { $PATHLAB grade "$1" --ref "$2" > "$TMP/g.out" 2> "$TMP/g.err"; rc=$?; }
+# how: the grade just run, its status (and signal) and its stderr's last lines
+how() { ran "$rc" "$TMP/g.err" "$PATHLAB grade $1 --ref $2"; }
 
 # 1. honest images: at most one false alarm in 20
 false_alarms=0 honest_n=0
@@ -35,11 +37,11 @@ for size in $SIZES; do
     for spp in 1 4 16 64 256; do
         for seed in $SEEDS; do
             img=$TMP/h_${size}_${spp}_$seed.pfm
-            $R --size ${size}x$size --spp $spp --seed $((seed + 1000 * spp + 7 * size)) -o "$img"
+            run_ok "honest render" $R --size ${size}x$size --spp $spp --seed $((seed + 1000 * spp + 7 * size)) -o "$img"
             grade_case "$img" "$ref"
             honest_n=$((honest_n + 1))
             if [ "$rc" = 0 ]; then echo "ok   honest ${size}x$size $spp spp seed $seed: [$(verdict)]"
-            else false_alarms=$((false_alarms + 1)); echo "note honest ${size}x$size $spp spp seed $seed: exit $rc [$(verdict)]"; fi
+            else false_alarms=$((false_alarms + 1)); echo "note honest ${size}x$size $spp spp seed $seed: [$(verdict)] $(how "$img" "$ref")"; fi
         done
     done
 done
@@ -52,7 +54,7 @@ expect_mistake() {   # expect_mistake NAME LABEL IMAGE REF WANT PATTERN: exit WA
     local name=$1 label=$2 img=$3 ref=$4 want=$5 pattern=$6 where
     grade_case "$img" "$ref"
     where=$TMP/g.out; [ "$want" = 2 ] && where=$TMP/g.err
-    if [ "$rc" != "$want" ]; then fail "$name ($label): exit $rc, wanted $want [$(verdict)]"
+    if [ "$rc" != "$want" ]; then fail "$name ($label): wanted exit $want [$(verdict)]: $(how "$img" "$ref")"
     elif ! grep -qE -- "$pattern" "$where"; then
         fail "$name ($label): exit $rc but not named ('$pattern'): $(grep -E '^likely|^/' "$TMP/g.out" | head -3 | paste -sd '|' - | cut -c1-300) $(head -c 200 "$TMP/g.err")"
     else pass "$name ($label): exit $rc, named [$(grep -E -m1 -- "$pattern" "$where" | sed 's/^ *//' | cut -c1-120)]"; fi
@@ -99,7 +101,8 @@ TABLE
             for b in "no-L0 1:inf ^likely mistake: no L0" "direct-only 0:1 ^likely mistake: direct light only" \
                      "stopped-after-3 0:3 ^likely mistake: stopped after 3 bounces" "indirect-only 2:inf ^likely mistake: indirect light only"; do
                 set -- $b
-                $R --size ${size}x$size --spp $spp --seed $((seed + 5000 + spp)) --bounces "$2" -o "$TMP/b.pfm"
+                rm -f "$TMP/b.pfm"
+                run_ok "$1 (--bounces $2, $label): the render" $R --size ${size}x$size --spp $spp --seed $((seed + 5000 + spp)) --bounces "$2" -o "$TMP/b.pfm" || continue
                 expect_mistake "$1 (--bounces $2)" "$label" "$TMP/b.pfm" "$ref" 1 "$3 $4 $5 $6"
             done
             $PFMTOOL const $size $size 0 0 0 "$TMP/black.pfm"

@@ -19,7 +19,7 @@ render_t() {
     rm -f "$OUT"
     timeout "$secs" "$PATHLAB" render "$@" > "$TMP/out" 2> "$TMP/err"; local got=$?
     if [ "$got" -eq 124 ]; then fail "$name: still running after $secs s"; return 1; fi
-    if [ "$got" -ne "$want" ]; then fail "$name: exit status $got, expected $want; stderr: $(head -c 300 "$TMP/err")"; return 1; fi
+    if [ "$got" -ne "$want" ]; then fail "$name: wanted exit $want: $(ran "$got" "$TMP/err" "$PATHLAB" render "$@")"; return 1; fi
     if [ "$want" -ne 0 ] && [ -e "$OUT" ]; then fail "$name: an output was written despite the error"; return 1; fi
     pass "$name (exit $got)"
 }

@@ -117,7 +117,20 @@ close "resumed = the 24-spp render: layer L1" "$TMP/res_L1.pfm" "$TMP/whole_L1.p
 expect_status "--resume when the spp are there already: nothing to do" 0 $R $F --spp 24 -o "$TMP/res.pfm" --resume
 expect_err "--resume: says there is nothing to add" "already has 24 spp"
 expect_status "--resume with other flags refused" 2 $R $F --rr 5 --spp 30 -o "$TMP/res.pfm" --resume
-expect_err "--resume: names the flags" "differ in flags"
+expect_err "--resume: names the flag and both values" "--rr is 5 on the command line but 3 in .*res.pfm's sidecar"
+# --resume -o FILE alone: the scene, camera, size, flags and seed are the sidecar's
+$R $F --spp 10 -o "$TMP/alone.pfm" --variance "$TMP/alone_var.pfm"
+expect_status "--resume -o FILE --spp 24 alone (the rest from its sidecar)" 0 $PATHLAB render --resume --spp 24 -o "$TMP/alone.pfm"
+expect_err "--resume: the stats line says the total and the samples added" " 24 spp in all \(14 added to the 10 it had\)"
+close "--resume alone = the 24-spp render: image" "$TMP/alone.pfm" "$TMP/whole.pfm" $MEAN_TOL
+close "--resume alone = the 24-spp render: layer L3" "$TMP/alone_L3.pfm" "$TMP/whole_L3.pfm" $MEAN_TOL
+for bad in "--size 64x64|--size is 64x64 on the command line but 48x32" "--seed 6|--seed is 6 on the command line but 5" \
+           "--bounces 0:2|--bounces is 0:2 on the command line but 0:3" "--pixel-center|--pixel-center is \(given\) on the command line but \(not given\)" \
+           "--eye 1,2,3|--eye is 1,2,3 on the command line but "; do
+    # shellcheck disable=SC2086
+    expect_status "--resume -o FILE ${bad%%|*}: refused" 2 $PATHLAB render --resume --spp 30 ${bad%%|*} -o "$TMP/alone.pfm"
+    expect_err "--resume -o FILE ${bad%%|*}: names the flag and both values" "${bad#*|}"
+done
 expect_status "--resume of a missing image refused" 2 $R --spp 30 -o "$TMP/none.pfm" --resume
 expect_err "--resume: says there is nothing to resume" "does not exist"
 expect_status "--resume needs --spp or --time" 2 $R -o "$TMP/res.pfm" --resume

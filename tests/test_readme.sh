@@ -9,7 +9,10 @@
 #  - each `make TARGET` of those blocks is a target of the Makefile (make -n TARGET succeeds), and
 #    `make run`'s recipe renders into cornell.png and says where (run here with SPP=2 and the
 #    copied ./pathlab, not rebuilt);
-#  - ./pathlab, not pathlab: a fresh clone has no pathlab on the PATH.
+#  - ./pathlab, not pathlab: a fresh clone has no pathlab on the PATH;
+#  - the README's figures about the tests (time, checks) are on the lines scripts/readme-figures.sh
+#    writes, in its form, and nowhere else; a whole tests/run.sh with fewer checks than they say fails
+#    (tried on a copy with one test file); the count of planted bugs is the number of tests/mutants/ patches.
 . "$(dirname "$0")/lib.sh"
 here=$(pwd)
 copy=$TMP/clone
@@ -22,6 +25,33 @@ n=$(grep -c . "$TMP/lines")
 [ "$n" -ge 10 ] && pass "readme: $n lines in sh blocks" || fail "readme: only $n lines in sh blocks"
 if grep -qE '^(pathlab|[^#]*&& pathlab) ' "$TMP/lines"; then fail "readme: a command starts 'pathlab', not './pathlab'"
 else pass "readme: every command is ./pathlab"; fi
+# the figures: written by scripts/readme-figures.sh, in its form, and nowhere else
+head='in a fresh clone, its build included, on [0-9]+ cores: \*\*'
+tail=', at [0-9a-f]{7,} on 20[0-9-]{8} [0-9:]{5} UTC, load average [0-9.]+ to [0-9.]+\. <!-- scripts/readme-figures.sh make'
+for f in "run -->|^\`make run\` $head[0-9.]+ s\*\* \(the render alone, 512x512 at 64 spp: [0-9.]+ s\)$tail run -->\$" \
+         "test -->|^\`make test\` $head[0-9]+ min [0-9]{2} s\*\*, [0-9]+ checks \([0-9]+ passed\)$tail test -->\$" \
+         "test EST_ALL=1 -->|^EST_ALL=1 \`make test\` $head[0-9]+ min [0-9]{2} s\*\*, [0-9]+ checks \([0-9]+ passed\)$tail test EST_ALL=1 -->\$"; do
+    m="<!-- scripts/readme-figures.sh make ${f%%|*}"
+    l=$(grep -F -- "$m" README.md)
+    if [ "$(grep -cF -- "$m" README.md)" = 1 ] && grep -qE -- "${f#*|}" <<< "$l"; then pass "readme: the figures line '$m' is in the script's form"
+    else fail "readme: the line ending '$m' is missing or not in scripts/readme-figures.sh's form: $l"; fi
+done
+stray=$(grep -nE '[0-9]+ checks|[0-9]+ min [0-9]+ s\b' README.md | grep -vF '<!-- scripts/readme-figures.sh')
+[ -z "$stray" ] && pass "readme: no figure of checks or minutes outside the script's lines" \
+    || fail "readme: figures not written by scripts/readme-figures.sh: $stray"
+bugs=$(sed -n 's/.*plants \([0-9]*\) classic bugs.*/\1/p' README.md); patches=$(ls tests/mutants/*.patch | wc -l)
+[ "$bugs" = "$patches" ] && pass "readme: make mutants plants $bugs bugs, the $patches patches of tests/mutants/" \
+    || fail "readme: make mutants plants '$bugs' bugs, tests/mutants/ has $patches patches"
+# tests/run.sh counts against the README: a copy whose README says more checks than its one test has
+mkdir -p "$TMP/few/tests"; cp tests/run.sh "$TMP/few/tests/"
+printf 'echo "PASS the only check"\n' > "$TMP/few/tests/test_one.sh"
+echo '**1 min 00 s**, 5 checks (5 passed) <!-- scripts/readme-figures.sh make test -->' > "$TMP/few/README.md"
+out=$(cd "$TMP/few" && env -u EST_ALL -u PATHLAB_FAST -u TEST_EXCLUDE BUILD=none TEST_SOURCE_ONLY=run bash tests/run.sh 2>&1); rc=$?
+if [ "$rc" -ne 0 ] && grep -q 'FAIL README.md says 5 checks, this run had 1' <<< "$out"; then pass "run.sh: a whole run with fewer checks than the README says fails"
+else fail "run.sh with fewer checks than the README: status $rc: $(echo "$out" | tail -n 2 | paste -sd' ' -)"; fi
+echo '**1 min 00 s**, 1 checks (1 passed) <!-- scripts/readme-figures.sh make test -->' > "$TMP/few/README.md"
+(cd "$TMP/few" && env -u EST_ALL -u PATHLAB_FAST -u TEST_EXCLUDE BUILD=none TEST_SOURCE_ONLY=run bash tests/run.sh > /dev/null 2>&1) \
+    && pass "run.sh: as many checks as the README says passes" || fail "run.sh: fails with as many checks as the README says"
 cd "$copy" || exit 0
 while IFS= read -r line; do
     case "$line" in ''|'#'*) continue ;; esac

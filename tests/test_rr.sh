@@ -31,8 +31,9 @@ ASUITE=$(awk -v n=$((ncomp * (KMAX + 2))) 'BEGIN { printf "%.3g", 1 - exp(log(0.
 render() {   # OUT SCENE FLAGS...: OUT.pfm, OUT_L0..pfm and their variances OUTv.pfm, OUTv_L0..pfm
     local out=$1 scene=$2; shift 2
     # shellcheck disable=SC2086
-    if ! $PATHLAB render "scenes/$scene.obj" $R "$@" -o "$TMP/$out.pfm" --variance "$TMP/${out}v.pfm" 2> "$TMP/err"; then
-        fail "render $scene $*: $(head -c 300 "$TMP/err")"; return 1
+    $PATHLAB render "scenes/$scene.obj" $R "$@" -o "$TMP/$out.pfm" --variance "$TMP/${out}v.pfm" 2> "$TMP/err"; local rc=$?
+    if [ "$rc" -ne 0 ]; then
+        fail "render $scene $*: $(ran "$rc" "$TMP/err" $PATHLAB render "scenes/$scene.obj" $R "$@" -o "$TMP/$out.pfm" --variance "$TMP/${out}v.pfm")"; return 1
     fi
     grep -q ' 0 NaN/Inf samples' "$TMP/err" || fail "render $scene $*: NaN or infinite samples: $(tail -1 "$TMP/err")"
 }

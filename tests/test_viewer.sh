@@ -73,13 +73,15 @@ if [ -z "$CHROME" ] || ! command -v "$CHROME" >/dev/null 2>&1; then
     exit 0
 fi
 
+# the exposure convert --exposure auto picks for the first image: the viewer's automatic one must agree
+AUTO=$($PATHLAB convert "$TMP/c.pfm" "$TMP/c_auto.png" --exposure auto 2> /dev/null | sed -n 's/^exposure auto: \([-+][0-9.]*\) stops.*/\1/p')
 # test_page PAGE KIND OUT [NAME FILE.pfm]...: PAGE with a listener of blocked requests first in its
 # head, and at its end the PFM files' bytes (base64) and tests/viewer/test.js.
 test_page() {
     local page=$1 kind=$2 out=$3; shift 3
     {
         sed -e '$d' -e 's#<head>#<head><script>window.__pathlabBlocked = []; document.addEventListener("securitypolicyviolation", function (e) { __pathlabBlocked.push(e.blockedURI); });</script>#' "$page"
-        echo "<script>var TEST = {kind: '$kind', bound: $LOAD_BOUND}, PFM = {"
+        echo "<script>var TEST = {kind: '$kind', bound: $LOAD_BOUND, convertAuto: ${AUTO:-0}}, PFM = {"
         while [ $# -gt 0 ]; do echo "$1: '$(base64 -w0 "$2")',"; shift 2; done
         echo "};</script><script>"
         cat tests/viewer/test.js

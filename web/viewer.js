@@ -61,10 +61,15 @@
     vals = vals.subarray(0, n).sort();
     return vals[Math.min(n - 1, Math.floor(q * n))];
   }
-  /* The exposure (stops) that brings the 99th percentile of the pixels' mean of R, G, B to 1. */
+  /* The exposure (stops, to 0.1) that brings the median luminance of the pixels that are not black
+   * to mid-grey, 0.18: the rule of pathlab convert --exposure auto (src/image/exposure.h), which
+   * shows a layer's surfaces, not its brightest emitter. */
   function autoExposure(im) {
-    var p = quantile(function (i) { return (im.rgb[3 * i] + im.rgb[3 * i + 1] + im.rgb[3 * i + 2]) / 3; }, 0.99);
-    return p > 0 ? Math.round(-Math.log2(p) * 10) / 10 : 0;
+    var p = quantile(function (i) {
+      var y = 0.2126 * im.rgb[3 * i] + 0.7152 * im.rgb[3 * i + 1] + 0.0722 * im.rgb[3 * i + 2];
+      return y > 0 ? y : NaN;
+    }, 0.5);
+    return p > 0 ? Math.round(Math.log2(0.18 / p) * 10) / 10 : 0;
   }
   /* The difference's full scale: the 99th percentile of |image - reference| (mean of R, G, B). */
   function autoDiffScale(im) {

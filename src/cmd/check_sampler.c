@@ -32,8 +32,12 @@ static int parse_pdf(void *ctx, const char *flag, const char *value)
 {
     options *o = ctx;
     char err[ERR_LEN];
-    (void)flag;
+    static const char *const names[] = {"uniform", "hemisphere", "cosine", "cosm:M", "blinn:M", NULL};
+    size_t len = strcspn(value, ":");
+    int k;
     if (student_pdf_parse(value, &o->pdf, err, sizeof err)) {
+        for (k = 0; names[k] && (strncmp(names[k], value, len) || (names[k][len] && names[k][len] != ':')); k++) continue;
+        if (!names[k]) return cli_fail_choice("check-sampler", flag, value, names);   /* not a name: the closest */
         fprintf(stderr, "pathlab check-sampler: %s\n", err);
         return 1;
     }

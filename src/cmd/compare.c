@@ -24,9 +24,14 @@
 #include "compare/compare_files.h"
 #include "compare/compare_outputs.h"
 #include "compare/compare_render.h"
+#include "compare/view_images.h"
+#include "image/exposure.h"
 #include "cmd/estimators.h"
 #include "cmd/help.h"
 #include "cmd/render_args.h"
+#include "cmd/version.h"
+#include "files/render_files.h"
+#include "files/render_meta.h"
 #include "render/render.h"
 #include "util/cli.h"
 #include "sys/output_path.h"
@@ -49,6 +54,7 @@ typedef struct {
     estimator_spec spec[MAX_EST];          /* each estimator's label, file name and render flags */
     compare_estimator est[MAX_EST];        /* and its results */
     camera cam;                            /* one view for all */
+    char ref_var_found[PATH_CAP];          /* --ref's variance when --ref-var is not given: REF_var.pfm or its sidecar's */
 } comparison;
 
 /* ---- the command line ---- */
@@ -101,6 +107,13 @@ static int parse_flags(comparison *c, int argc, char **argv)
     int nmine = 1, nrest = 1, nwords, i, err;
     if (!mine) { fprintf(stderr, "pathlab: compare: out of memory\n"); return 1; }
     mine[0] = rest[0] = argv[0];
+    if (cli_listing()) {   /* the shell's completion: compare's flags and the render flags (util/cli.h) */
+        char *dash[] = {argv[0], "--", NULL};
+        i = 1, c->base.cmd = "compare", c->base.more_flags = own;
+        render_parse_flag(&c->base, 2, dash, &i);
+        free(mine);
+        return 1;
+    }
     err = split_args(argc, argv, own, mine, &nmine, rest, &nrest)
           || cli_parse("compare", nmine, mine, tables, c, NULL, 0, &nwords);
     c->base.cmd = "compare";
@@ -195,11 +208,30 @@ static int choose_spp(comparison *c, const scene *s)
     return 0;
 }
 
+/* DIR/SLUG.pfm and, if var has pixels, DIR/SLUG_var.pfm, each with its sidecar as render writes them
+ * (scene, flags, camera, seed, samples: grade, merge and view find the variance and read what made
+ * the image); then DIR/SLUG.png. 0, or 1 after printing why. */
+static int save_render(comparison *c, const scene *s, const render_opts *ro, const char *slug, const image *img,
+                       const image *var, int dof)
+{
+    char out[PATH_CAP], var_out[PATH_CAP];
+    sidecar m;
+    if (compare_out_path(out, c->dir, "", slug, ".pfm") || compare_out_path(var_out, c->dir, slug, "_var", ".pfm")) return 1;
+    render_meta_describe(&m, ro, c->base.scene, mesh_fingerprint(&s->m), &c->spec[0].a.cam.vw, pathlab_revision());
+    m.nranges = 1;
+    m.range[0][0] = ro->first;
+    m.range[0][1] = ro->first + (uint64_t)ro->spp;
+    m.variance_dof = dof;
+    if (isnan(c->base.exposure)) c->base.exposure = img_auto_exposure(img);   /* --exposure auto: the first image's, for all */
+    return render_files_write(out, var->px ? var_out : NULL, 0.0f, &m, img, var, 1, 0)
+           || compare_save_image(c->dir, "", slug, ".png", img, c->base.exposure);
+}
+
 /* The best estimator, 16 x the largest spp (or --ref-spp), its own seed; written as DIR/reference.*. */
-static int render_reference(const comparison *c, const scene *s, compare_reference *ref)
+static int render_reference(comparison *c, const scene *s, compare_reference *ref)
 {
     estimator_spec best;
-    int i, n, max_spp = 0;
+    int i, n, max_spp = 0, dof = 0;
     if (estimators_parse(REFERENCE_FLAGS, &c->base, &best, 1, &n)) return 1;
     for (i = 0; i < c->nest; i++)
         if (c->est[i].row.spp > max_spp) max_spp = c->est[i].row.spp;
@@ -208,25 +240,23 @@ static int render_reference(const comparison *c, const scene *s, compare_referen
     best.a.ro.quiet = c->base.ro.quiet;
     snprintf(ref->label, sizeof ref->label, "reference %d spp", ref->spp);
     if (!c->base.ro.quiet) fprintf(stderr, "compare: rendering the reference: %d spp of %s\n", ref->spp, REFERENCE_FLAGS);
-    return compare_render_image(s, &c->cam, &best.a.ro, &ref->img, &ref->var, &ref->secs)
-           || compare_save_image(c->dir, "", "reference", ".pfm", &ref->img, 0.0f)
-           || compare_save_image(c->dir, "", "reference-var", ".pfm", &ref->var, 0.0f)
-           || compare_save_image(c->dir, "", "reference", ".png", &ref->img, c->base.exposure);
+    return compare_render_image(s, &c->cam, &best.a.ro, &ref->img, &ref->var, &dof, &ref->secs)
+           || save_render(c, s, &best.a.ro, "reference", &ref->img, &ref->var, dof);
 }
 
 /* Each estimator at its spp, written as DIR/SLUG.pfm and .png, and measured. */
 static int render_estimators(comparison *c, const scene *s, const compare_reference *ref)
 {
-    int i;
+    int i, dof = 0;
     for (i = 0; i < c->nest; i++) {
         compare_estimator *e = &c->est[i];
         const estimator_spec *sp = &c->spec[i];
         render_opts ro = sp->a.ro;
         ro.spp = e->row.spp;
-        if (compare_render_image(s, &c->cam, &ro, &e->img, &e->var, &e->row.secs)) return 1;
+        if (compare_render_image(s, &c->cam, &ro, &e->img, &e->var, &dof, &e->row.secs)) return 1;
         compare_measure(&e->row, &e->img, ref);
         if (!c->base.ro.quiet) fprintf(stderr, "compare: %s: %d spp in %.3f s, RMSE %.4g\n", shown(sp->label), e->row.spp, e->row.secs, e->row.rmse);
-        if (compare_save_image(c->dir, "", sp->slug, ".pfm", &e->img, 0.0f) || compare_save_image(c->dir, "", sp->slug, ".png", &e->img, c->base.exposure)) return 1;
+        if (save_render(c, s, &ro, sp->slug, &e->img, &e->var, dof)) return 1;
     }
     return 0;
 }
@@ -253,11 +283,13 @@ static int run(comparison *c)
     int rc = 2;
     memset(&ref, 0, sizeof ref);
     if (load_scene(c, &s)) return 2;
+    if (c->ref && !c->ref_var && view_find_variance(c->ref, c->ref_var_found, sizeof c->ref_var_found) == 1) c->ref_var = c->ref_var_found;
     /* the inputs, checked before anything is written */
     if (make_camera(c, &s) || (c->ref && compare_read_reference(&ref, c->ref, c->ref_var, c->cam.width, c->cam.height))
         || compare_make_dir(c->dir)) goto done;
     rc = 1;
     /* the renders: how many samples each, the reference unless given, then each estimator */
+    if (c->ref && isnan(c->base.exposure)) c->base.exposure = img_auto_exposure(&ref.img);   /* --exposure auto */
     if (choose_spp(c, &s) || (!c->ref && render_reference(c, &s, &ref))) goto done;
     compare_reference_noise(&ref);   /* its own noise, taken off each MSE */
     if (render_estimators(c, &s, &ref)) goto done;

@@ -12,7 +12,7 @@
     "                [--ref REF.pfm [--ref-var VAR.pfm] | --ref-spp M] [--scale S] [render flags]   (below)\n"
 #define COMPARE_HELP \
     "compare: renders each estimator at equal spp (default 16) or equal time, and writes into DIR each image\n" \
-    "(LABEL.pfm, .png), its error heatmap (heat-LABEL.png), a labelled mosaic (mosaic.ppm, .png) and the table\n" \
+    "(LABEL.pfm and its variance LABEL_var.pfm, each with its sidecar as render writes them, LABEL.png), its error heatmap (heat-LABEL.png), a labelled mosaic (mosaic.ppm, .png) and the table\n" \
     "(table.md, .csv: RMSE, relMSE, MAE, efficiency 1/(MSE*time)) and a page, index.html: the images in the viewer,\n" \
     "the table, the error against time. Estimators are comma-separated, each a list of\n" \
     "render flags and names: {direct } = --direct X; {light } = --light X;\n" \
@@ -21,7 +21,7 @@
     "\"solid angle=--direct light --light solid-angle\". Flags outside --estimators apply to all; an estimator's\n" \
     "own flags win. Without --ref the reference is rendered with --direct mis-power --light solid-angle\n" \
     "--dir brdf at 16x the largest spp (--ref-spp M) into DIR/reference.pfm; the reference's variance (its own,\n" \
-    "or --ref-var) is taken off each MSE. --scale S: the heatmaps' white (default 3x the largest RMSE).\n"
+    "--ref-var, or found as render names it: REF_var.pfm or its sidecar's) is taken off each MSE. --scale S: the heatmaps' white (default 3x the largest RMSE).\n"
 /* argv[0] is "compare". Exit status: 0 done, 1 a render or a write failed, 2 bad input. */
 int compare_main(int argc, char **argv);
 #endif

@@ -3,20 +3,24 @@
 #include "sys/shown.h"
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
+#include "files/sidecar.h"
+#include "image/exposure.h"
 #include "image/image.h"
 #include "util/cli.h"
 #include "sys/output_path.h"
 
 #define CONVERT_USAGE "usage: pathlab convert IN.pfm OUT.png|OUT.ppm|OUT.pfm [--exposure STOPS]\n"
 
-/* --exposure STOPS: a number strictly between -100 and 100 */
+/* --exposure STOPS: a number strictly between -100 and 100, or auto (image/exposure.h: NAN until the image is read) */
 static int parse_exposure(void *ctx, const char *flag, const char *v)
 {
     float *exposure = ctx;
     const cli_flag f = {flag, CLI_FLOAT, exposure, 0, 0, NULL, NULL, NULL};
+    if (!strcmp(v, "auto")) { *exposure = NAN; return 0; }
     if (cli_parse_value("convert", &f, v, NULL)) return 1;
     if (*exposure > -100.0f && *exposure < 100.0f) return 0;
-    return cli_fail("convert", flag, "a number of stops between -100 and 100", v);
+    return cli_fail("convert", flag, "a number of stops between -100 and 100, or auto", v);
 }
 
 /* The size, then each channel's mean, min and max. */
@@ -37,6 +41,20 @@ static void print_figures(const image *im, const char *path)
         printf("  %-5s mean %.6g  min %.6g  max %.6g\n", ch == 0 ? "red" : ch == 1 ? "green" : "blue", sum[ch] / (double)n, lo[ch], hi[ch]);
 }
 
+/* A PFM written: the input's sidecar beside it, if the input has one (the same pixels, made the same
+ * way; the input's variance and sample counts are not copied, so the sidecar names none). 0, or 1
+ * after saying why. */
+static int write_sidecar(const char *in, const char *out)
+{
+    sidecar m;
+    char meta[4096];
+    if (img_format_of(out) != IMG_PFM || sidecar_read(&m, in) != 0) return 0;
+    m.variance[0] = m.sample_count[0] = '\0';
+    m.layers_n = 0;
+    sidecar_path(meta, sizeof meta, out);
+    return sidecar_write_to(&m, out, meta);
+}
+
 int convert_main(int argc, char **argv)
 {
     float exposure = 0.0f;
@@ -55,7 +73,13 @@ int convert_main(int argc, char **argv)
     if (output_path_check("convert", "output", path[1], IMG_EXTENSIONS)) return 2;
     if (img_read_pfm(&im, path[0])) return 2;
     print_figures(&im, path[0]);
-    err = img_write(&im, path[1], exposure);
+    if (isnan(exposure)) {
+        exposure = img_auto_exposure(&im);
+        printf("exposure auto: %+.1f stops (the median luminance of the pixels that are not black to mid-grey, %g)\n", exposure,
+               EXPOSURE_MID_GREY);
+    }
+    err = img_write(&im, path[1], exposure) || write_sidecar(path[0], path[1]);
+    if (!err) fprintf(stderr, "pathlab convert: wrote %s\n", path[1]);
     img_free(&im);
     return err ? 2 : 0;   /* a failed write: said, with the file and the system's reason */
 }

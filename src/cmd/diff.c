@@ -61,6 +61,7 @@ static int diff_one(const char *image_path, const char *ref_path, const char *he
         if (heat && img_heatmap(&hm, &im[0], &im[1], scale)) rc = 2;
         else if (heat) {
             if (img_write(&hm, heat, 0.0f)) rc = 2;
+            else fprintf(stderr, "pathlab diff: wrote the heatmap %s\n", shown(heat));
             img_free(&hm);
         }
     }

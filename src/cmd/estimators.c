@@ -4,6 +4,7 @@
 #include "sys/shown.h"
 #include <stdio.h>
 #include <string.h>
+#include "util/cli.h"
 #include "tracer/integrator.h"
 #include "tracer/light.h"
 #include "sampler/sampler.h"
@@ -53,6 +54,19 @@ static void print_names(void)
     fprintf(stderr, "  or render flags, e.g. \"--direct light --light solid-angle\"\n");
 }
 
+/* "; did you mean NAME?" and the end of the line: the name closest to the n characters at w, if one is close. */
+static void suggest_name(const char *w, size_t n)
+{
+    char word[64];
+    const char *best = NULL;
+    int t, k, d = 0;
+    snprintf(word, sizeof word, "%.*s", (int)(n < sizeof word ? n : sizeof word - 1), w);
+    for (t = 0; t < NSTRATEGIES; t++)
+        for (k = 0; STRATEGIES[t].names[k]; k++) cli_consider(word, shorthand(t, STRATEGIES[t].names[k]), &best, &d);
+    if (best) fprintf(stderr, "; did you mean %s?", best);
+    fputc('\n', stderr);
+}
+
 /* One name (n characters at w) -> its flag and its value. */
 static int expand_name(flag_list *f, const char *w, size_t n)
 {
@@ -62,7 +76,8 @@ static int expand_name(flag_list *f, const char *w, size_t n)
             const char *name = STRATEGIES[t].names[k], *word = shorthand(t, name);
             if (strlen(word) == n && !strncmp(word, w, n)) return add_flag(f, STRATEGIES[t].flag) || add_flag(f, name);
         }
-    fprintf(stderr, "pathlab: compare: estimator '%s': unknown name '%.*s'\n", shown(f->label), (int)n, w);
+    fprintf(stderr, "pathlab: compare: estimator '%s': unknown name '%.*s'", shown(f->label), (int)n, w);
+    suggest_name(w, n);
     print_names();
     return 1;
 }

@@ -25,6 +25,7 @@
 static const char HEADER[] = "pathlab — a teaching path tracer (see README.md)\n\nusage:\n";
 static const char FOOTER[] =
     "  pathlab help [COMMAND] | COMMAND --help | --version\n"
+    "  pathlab completion bash   the bash completion script (make install puts it in place)\n"
     "\n"
     "  Any command takes --isa NAME: the instruction set of the ray traversal (avx512, avx2, sse2 on\n"
     "  x86-64; default: the best this CPU runs; every one gives the same images; --version lists them).\n"
@@ -42,7 +43,7 @@ static const char SYN_GRADE[] =
     "                [--pages DIR] [--heatmap OUT.png|FOLDER] [--block B] [--var REF_VAR.pfm] [--layers PREFIX] [--details]\n"
     "                is each IMAGE - REF noise or bias, and if bias, the likely mistake (pathlab grade --help; docs/grading.md)\n";
 static const char SYN_CONVERT[] =
-    "  pathlab convert IN.pfm OUT.png|OUT.ppm|OUT.pfm [--exposure STOPS]   view a PFM (e.g. a --split layer);\n"
+    "  pathlab convert IN.pfm OUT.png|OUT.ppm|OUT.pfm [--exposure STOPS|auto]   view a PFM (e.g. a --split layer);\n"
     "                prints the size and each channel's mean, min and max\n";
 static const char MORE_BENCH[] =
     "  -r RES        the rays: a RES x RES grid of camera rays (default 1024)\n"
@@ -55,7 +56,9 @@ static const char MORE_DIFF[] =
 static const char MORE_MERGE[] =
     "  --variance OUT_var.pfm   also write the variance of the merged mean (the inputs' variances, found beside them)\n";
 static const char MORE_CONVERT[] =
-    "  --exposure STOPS   PPM and PNG: multiply by 2^STOPS before the sRGB curve (default 0)\n";
+    "  --exposure STOPS   PPM and PNG: multiply by 2^STOPS before the sRGB curve (default 0); auto: the\n"
+    "                     median luminance of the pixels that are not black to mid-grey (it prints the stops)\n"
+    "  OUT.pfm gets IN.pfm's sidecar, if it has one\n";
 static const char MORE_VIEW[] =
     "  --ref REF.pfm   the reference: split view, signed difference, its value under the mouse\n"
     "  --var VAR.pfm   the first image's variance (for the z-score; else STEM_var.pfm or its sidecar's)\n"
@@ -70,14 +73,18 @@ static const char USAGE_RENDER[] =
     "render flags:\n"
     "  -o FILE              output image; .pfm (linear float), .ppm or .png (8-bit sRGB)\n"
     "  --spp N              samples per pixel (default 16), rendered in passes: every pixel gets sample i\n"
-    "                       before any gets i+1; Ctrl-C writes the image at the spp reached, a 2nd quits\n"
+    "                       before any gets i+1; Ctrl-C writes the image at the spp reached, a 2nd quits;\n"
+    "                       with adaptive sampling (below), the most a pixel gets (default 65536 with\n"
+    "                       --target-error, none with --time alone)\n"
     "  --time SEC           as many passes as fit in SEC seconds (up to --spp if given)\n"
     "  --samples A:B        only the sample indices A..B-1 (pieces for pathlab merge)\n"
-    "  --resume             add samples to the render at -o (up to --spp in all, or for --time)\n"
+    "  --resume             add samples to the render at -o (up to --spp in all, or for --time); the scene,\n"
+    "                       camera, size, flags and seed are those of its sidecar (a flag given must agree)\n"
     "  --seed S             random seed (default 1); same seed, same image, any thread count\n"
     "  --threads N          worker threads (default: every core)\n"
     "  --quiet              no progress bar and no stats line\n"
-    "  --exposure STOPS     PPM and PNG: multiply by 2^STOPS before the sRGB curve (default 0)\n"
+    "  --exposure STOPS     PPM and PNG: multiply by 2^STOPS before the sRGB curve (default 0); auto: the\n"
+    "                       median luminance of the pixels that are not black to mid-grey (it prints the stops)\n"
     "camera (defaults from SCENE.view, else framing the whole scene):\n"
     "  --eye X,Y,Z  --target X,Y,Z  --up X,Y,Z  --fov DEGREES (vertical)  --size WxH\n"
     "  --view FILE          the camera of a view file instead of SCENE.view\n"
@@ -111,7 +118,6 @@ static const char USAGE_ADAPTIVE[] =
     "                       R, G, B; pixels darker than 0.1x the image's mean are held to that level); implies --adaptive\n"
     "  --adaptive           with --time SEC alone: the time after the pilot is shared out, n(x) proportional to the\n"
     "                       pilot's relative standard deviation; with --target-error, --time stops it early\n"
-    "  --spp N              the cap of n(x) (default 65536 with --target-error, none with --time alone)\n"
     "  --pilot P            pilot samples per pixel (default 16)     --min-spp N   the fewest per pixel (default 4)\n"
     "  --sample-count F.pfm also write each pixel's number of samples (counts are multiples of 4)\n"
     "  not with --samples, --resume or merge: pixels with different counts do not combine\n";

@@ -4,6 +4,7 @@
 #include "cmd/render_args.h"
 #include "sys/shown.h"
 #include "sys/parallel.h"
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -62,6 +63,15 @@ static int parse_bounce(void *ctx, const char *flag, const char *v)
 }
 
 /* --rr D|off: Russian roulette after D bounces, or never (-1) */
+/* --exposure STOPS, or auto: NAN until the image is there (image/exposure.h picks it then) */
+static int parse_exposure(void *ctx, const char *flag, const char *v)
+{
+    render_args *a = ctx;
+    const cli_flag f = {flag, CLI_FLOAT, &a->exposure, 0, 0, NULL, NULL, NULL};
+    if (!strcmp(v, "auto")) { a->exposure = NAN; return 0; }
+    return cli_parse_value(a->cmd, &f, v, NULL);
+}
+
 static int parse_rr(void *ctx, const char *flag, const char *v)
 {
     render_args *a = ctx;
@@ -173,7 +183,7 @@ void render_flag_table(render_args *a, cli_flag t[RENDER_NFLAGS])
         {"--seed", CLI_U64, &a->ro.seed, 0, 0, NULL, NULL, NULL},
         {"--threads", CLI_INT, &a->ro.threads, 1, PARALLEL_MAX_THREADS, NULL, NULL, NULL},
         {"--quiet", CLI_SWITCH, &a->ro.quiet, 0, 0, NULL, NULL, NULL},
-        {"--exposure", CLI_FLOAT, &a->exposure, 0, 0, NULL, NULL, NULL},
+        {"--exposure", CLI_CUSTOM, NULL, 0, 0, NULL, parse_exposure, NULL},
         {"--eye", CLI_VEC3, &a->cam.flags.eye, 0, 0, NULL, NULL, &a->cam.eye},
         {"--target", CLI_VEC3, &a->cam.flags.target, 0, 0, NULL, NULL, &a->cam.target},
         {"--up", CLI_VEC3, &a->cam.flags.up, 0, 0, NULL, NULL, &a->cam.up},
@@ -183,16 +193,16 @@ void render_flag_table(render_args *a, cli_flag t[RENDER_NFLAGS])
         {"--bounces", CLI_CUSTOM, NULL, 0, 0, NULL, parse_bounces, NULL},
         {"--bounce", CLI_CUSTOM, NULL, 0, 0, NULL, parse_bounce, NULL},
         {"--split", CLI_SWITCH, &a->ro.split, 0, 0, NULL, NULL, NULL},
-        {"--light", CLI_CUSTOM, NULL, 0, 0, NULL, parse_light, NULL},
-        {"--dir", CLI_CUSTOM, NULL, 0, 0, NULL, parse_dir, NULL},
-        {"--direct", CLI_CUSTOM, NULL, 0, 0, NULL, parse_direct, NULL},
+        {"--light", CLI_CUSTOM, NULL, 0, 0, LIGHT_STRATEGY_NAMES, parse_light, NULL},
+        {"--dir", CLI_CUSTOM, NULL, 0, 0, DIR_STRATEGY_NAMES, parse_dir, NULL},
+        {"--direct", CLI_CUSTOM, NULL, 0, 0, DIRECT_STRATEGY_NAMES, parse_direct, NULL},
         {"--rr", CLI_CUSTOM, NULL, 0, 0, NULL, parse_rr, NULL},
         {"--rr-below", CLI_CUSTOM, NULL, 0, 0, NULL, parse_rr_below, NULL},
         {"--orbiter", CLI_CUSTOM, NULL, 0, 0, NULL, parse_camera_file, NULL},
         {"--view", CLI_CUSTOM, NULL, 0, 0, NULL, parse_camera_file, NULL},
         {"--write-view", CLI_STRING, &a->cam.write_view, 0, 0, NULL, NULL, NULL},
         {"--pixel-offset", CLI_CUSTOM, NULL, 0, 0, NULL, parse_pixel_offset, NULL},
-        {"--sampler", CLI_CUSTOM, NULL, 0, 0, NULL, parse_sampler, NULL},
+        {"--sampler", CLI_CUSTOM, NULL, 0, 0, SAMPLER_NAMES, parse_sampler, NULL},
         {NULL, CLI_SWITCH, NULL, 0, 0, NULL, NULL, NULL}};
     memcpy(t, flags, sizeof flags);
 }

@@ -3,11 +3,14 @@
 #include "cmd/render_cmd.h"
 #include "sys/shown.h"
 #include <inttypes.h>
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 #include "cmd/render_args.h"
 #include "cmd/render_adaptive.h"
 #include "files/render_meta.h"
+#include "image/exposure.h"
+#include "cmd/render_resume.h"
 #include "files/resume.h"
 #include "render/plan.h"
 #include "cmd/version.h"
@@ -102,6 +105,10 @@ static int prepare_resume(render_args *a, render_plan *p, const sidecar *now, re
 {
     sidecar had;
     int64_t have;
+    /* a flag that disagrees with the sidecar, named (a Sobol or adaptive render: resume_read says why not) */
+    if (sidecar_read(&had, a->out) == 0 && p->ro.sampler == SAMPLER_INDEPENDENT && !sidecar_is_sobol(&had) && !had.adaptive[0]
+        && render_resume_check(now, &had, a->out))
+        return 2;
     if (resume_read(prev, &had, a->out, now, p->ro.sampler, a->variance != NULL, a->ro.split)) return 2;
     if (had.variance[0] && !a->variance) {   /* keep its variance up to date: STEM_var.pfm beside -o */
         if (resume_variance_out(var_out, cap, a->out, &had)) return 2;
@@ -158,6 +165,17 @@ static void report_stop(const render_args *a, const render_plan *p, const render
         fprintf(stderr, "pathlab render: --time %.9g s: %" PRId64 " of %" PRId64 " spp fitted, written %s\n", a->ro.time_limit, spp, asked, a->out);
 }
 
+/* "pathlab render: wrote FILE (and its variance, layers, sidecars)". */
+static void say_written(const render_args *a, const render_plan *p)
+{
+    int nl = a->ro.split ? p->ro.io.bmax - p->ro.io.bmin + 1 : 0;
+    fprintf(stderr, "pathlab render: wrote %s", a->out);
+    if (a->variance) fprintf(stderr, ", its variance %s", a->variance);
+    if (nl > 0) fprintf(stderr, ", %d layer%s (L%d..L%d)", nl, nl > 1 ? "s" : "", p->ro.io.bmin, p->ro.io.bmax);
+    if (a->sample_count) fprintf(stderr, ", the sample counts %s", a->sample_count);
+    fprintf(stderr, "%s\n", img_format_of(a->out) == IMG_PFM ? ", each PFM with its sidecar .meta" : "");
+}
+
 static int render_and_write(render_args *a, render_plan *p, const scene *s, const camera *cam)
 {
     render_files prev;
@@ -176,11 +194,16 @@ static int render_and_write(render_args *a, render_plan *p, const scene *s, cons
     interrupt_install();   /* from here, a first Ctrl-C stops after the pass and writes what it reached */
     if (p->adaptive ? adaptive_render(s, cam, &p->ro, &p->ao, &r, &ar) : render(s, cam, &p->ro, &r)) { render_files_free(&prev); return 2; }   /* out of memory: said */
     if (!p->ro.quiet && p->adaptive) adaptive_print_summary(&ar, r.seconds);
-    else if (!p->ro.quiet) render_print_stats(&r, r.spp, cam->width * cam->height);
+    else if (!p->ro.quiet) render_print_stats(&r, r.spp, p->had, cam->width * cam->height);
     err = finish_meta(&m, a, p, &r, &prev, &ar) || (prev.nlayers && resume_combine(&prev, sidecar_spp(&prev.meta), &r));
+    if (isnan(a->exposure)) {   /* --exposure auto: of the image written (image/exposure.h) */
+        a->exposure = img_auto_exposure(&r.mean[0]);
+        if (!p->ro.quiet) fprintf(stderr, "exposure auto: %+.1f stops (the median luminance of the pixels that are not black to mid-grey)\n", a->exposure);
+    }
     err = err || render_files_write_all(a->out, a->variance, a->sample_count, &ar.count, a->exposure, &m, r.mean, r.var,
                                         r.nlayers, p->ro.io.bmin);
     if (!err) report_stop(a, p, &r, &m, &ar);
+    if (!err && !p->ro.quiet && !r.interrupted && !m.stopped[0]) say_written(a, p);   /* else report_stop said it */
     if (!err && r.interrupted) rc = 128 + r.interrupted;
     render_result_free(&r);
     render_files_free(&prev);
@@ -194,8 +217,11 @@ int render_main(int argc, char **argv)
     render_plan p;
     scene s;
     camera cam;
-    int rc;
-    if (parse_render_args(&a, &p, argc, argv)) return 2;
+    int rc, nargs;
+    char *args[RESUME_MAX_ARGS], words[3 * SIDECAR_TEXT];
+    /* --resume -o FILE: what the command line leaves out is FILE's sidecar's (cmd/render_resume.h) */
+    if (render_resume_args(argc, argv, args, &nargs, words, sizeof words)) return 2;
+    if (parse_render_args(&a, &p, nargs, args)) return 2;
     if (scene_load(&s, a.scene, a.ro.threads, a.ro.quiet)) return 2;
     if (!a.ro.quiet)
         fprintf(stderr, "%s: %d triangles (%d degenerate dropped), %d emitting, %d materials; loaded in %.0f ms, BVH in %.0f ms\n",

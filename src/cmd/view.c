@@ -6,6 +6,7 @@
 #include <string.h>
 #include "compare/view_images.h"
 #include "sys/output_path.h"
+#include "sys/shown.h"
 #include "util/cli.h"
 #include "util/path.h"
 
@@ -52,6 +53,8 @@ int view_main(int argc, char **argv)
         page.strip = d->strip;
         page.nstrip = d->nlayers;
         rc = html_page_write(a.out, &page) ? 2 : 0;   /* said why: "PAGE: cannot write: No space left on device" */
+        if (!rc) fprintf(stderr, "pathlab view: wrote %s (%d image%s%s, %d layer%s; open it in any browser)\n", shown(a.out), a.nwords,
+                         a.nwords > 1 ? "s" : "", a.ref ? " and the reference" : "", d->nlayers, d->nlayers == 1 ? "" : "s");
     }
     view_data_free(d);
     return rc;

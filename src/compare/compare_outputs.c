@@ -55,7 +55,7 @@ static void write_notes(outputs *w)
         note(w, "- reference: %s (given)%s%s.\n", o->ref_path, has_var ? ", its variance " : "", has_var ? o->ref_var_path : "");
     else
         note(w, "- reference: rendered with `%s` at %d spp (%s), seed %llu, in %.2f s; written as reference.pfm "
-                "(its variance: reference-var.pfm).\n", o->ref_flags, ref->spp, o->ref_spp_given ? "--ref-spp" : "16 x the largest spp",
+                "(its variance: reference_var.pfm).\n", o->ref_flags, ref->spp, o->ref_spp_given ? "--ref-spp" : "16 x the largest spp",
              (unsigned long long)ref->seed, ref->secs);
     if (has_var)
         note(w, "- MSE = RMSE^2 - %.4g, the mean variance of the reference's pixels: its own noise, which adds to every squared "

@@ -29,7 +29,7 @@ static int read_sized(image *im, const char *path, const char **first, const ima
  * planted there to a teacher's file is refused), else the one its sidecar names (an
  * input confined to the image's folder, whose own sidecar says it is this image's variance:
  * render_files_named_variance). 1 if found, 0 if none, 2 after printing why it is refused. */
-static int variance_of(const char *path, char *out, size_t cap)
+int view_find_variance(const char *path, char *out, size_t cap)
 {
     size_t n = strlen(path), stem = n > 4 && !strcmp(path + n - 4, ".pfm") ? n - 4 : n;
     sidecar m;
@@ -57,7 +57,7 @@ static int read_image(view_data *d, html_image *h, image *im, image *var, const 
     h->name = path_file_name(path);
     h->img = im;
     if (read_sized(im, path, first, &d->img[0])) return 2;
-    if (!var_path && (rc = variance_of(path, found, sizeof found)) == 2) return 2;
+    if (!var_path && (rc = view_find_variance(path, found, sizeof found)) == 2) return 2;
     if (!var_path && rc == 1) var_path = found;
     if (!var_path) return 0;
     if (read_sized(var, var_path, first, &d->img[0])) return 2;

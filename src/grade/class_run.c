@@ -120,6 +120,7 @@ static void check_integrity(grade_row *row, const image *img, const run *s)
     }
     if (!grade_integrity_remark(text, sizeof text, img, R->refs.ref, R->refs.var)) return;
     add_remark(row, text);
+    row->flagged = 1;
     if (s->loud) printf("FLAGGED: %s\n", text);
 }
 
@@ -134,8 +135,9 @@ static void mark_copies(grade_row *rows, int k)
         if (!rows[j].hashed || memcmp(rows[j].sha, rows[k].sha, sizeof rows[k].sha)) continue;
         snprintf(text, sizeof text, "%s%s, pixel for pixel (the SHA-256 of the pixels)", said, rows[j].path);
         add_remark(&rows[k], text);
+        rows[k].flagged = 1;
         snprintf(text, sizeof text, "%s%s, pixel for pixel (the SHA-256 of the pixels)", said, rows[k].path);
-        if (!strstr(rows[j].remark, said)) add_remark(&rows[j], text);
+        if (!strstr(rows[j].remark, said)) add_remark(&rows[j], text), rows[j].flagged = 1;
         return;
     }
 }

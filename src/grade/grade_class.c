@@ -163,10 +163,10 @@ void grade_print_class_header(const grade_opts *o, const char *ref_path, int nim
 void grade_print_summary(const grade_row *rows, int n, const grade_opts *o)
 {
     int k, count[3] = {0, 0, 0}, flagged = 0;
-    for (k = 0; k < n; k++) count[rows[k].status]++, flagged += rows[k].remark[0] != '\0';
+    for (k = 0; k < n; k++) count[rows[k].status]++, flagged += rows[k].flagged;
     printf("summary: %d images, %d pass, %d fail, %d could not be read (alpha %g per image)", n, count[0], count[1], count[2], o->alpha);
     if (flagged) printf("; %d FLAGGED:", flagged);
-    for (k = 0; k < n; k++) if (rows[k].remark[0]) printf(" %s", shown(rows[k].path));
+    for (k = 0; k < n; k++) if (rows[k].flagged) printf(" %s", shown(rows[k].path));
     printf("\n");
 }
 
@@ -203,7 +203,7 @@ static void write_md(FILE *f, const grade_row *rows, int n, const grade_opts *o,
         grade_bias_text(bias, sizeof bias, r);
         fputs("| ", f);
         md_put_text(f, r->path);
-        fprintf(f, " | %s%s | %s | ", verdict_word(r->status), r->remark[0] ? " (FLAGGED)" : "", bias);
+        fprintf(f, " | %s%s | %s | ", verdict_word(r->status), r->flagged ? " (FLAGGED)" : "", bias);
         md_put_text(f, r->where);
         fputs(" | ", f);
         md_put_text(f, r->mistake);

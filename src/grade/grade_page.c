@@ -106,9 +106,13 @@ static int put_verdict(FILE *f, const grade_page *p)
     err |= html_put_escaped(f, p->ref_path);
     fprintf(f, " at family-wise level alpha %g", p->r->alpha);
     if (bias[0]) { fputs("; bias ", f); err |= html_put_escaped(f, bias); }
-    if (p->row->where[0]) { fputs(" in ", f); err |= html_put_escaped(f, p->row->where); }
+    if (p->row->where[0]) { fputs("; significant in ", f); err |= html_put_escaped(f, p->row->where); }   /* its own scope */
     fputs(".</p>\n", f);
-    if (p->row->remark[0]) { fputs("<p class=\"flagged\"><b>FLAGGED</b>: ", f); err |= html_put_escaped(f, p->row->remark); fputs("</p>\n", f); }
+    if (p->row->remark[0]) {
+        fprintf(f, "<p class=\"flagged\"><b>%s</b>: ", p->row->flagged ? "FLAGGED" : "Note");
+        err |= html_put_escaped(f, p->row->remark);
+        fputs("</p>\n", f);
+    }
     if (p->row->status == 1) fputs(p->nh ? "<p>Likely mistake:</p>\n<ul class=\"mistakes\">\n" : "<p>None of the catalogue of mistakes explains "
                                    "the difference (pathlab grade; docs/grading.md).</p>\n", f);
     for (k = 0; k < p->nh; k++) {
@@ -160,7 +164,7 @@ static int put_class_table(FILE *f, const grade_row *rows, int n)
         fputs("<tr><td>", f);
         if (r->page[0]) { fputs("<a href=\"", f); err |= html_put_escaped(f, r->page); fputs("\">", f); }
         err |= html_put_escaped(f, r->path);
-        fprintf(f, "%s</td><td>%s%s</td><td>", r->page[0] ? "</a>" : "", verdict_word(r->status), r->remark[0] ? " (FLAGGED)" : "");
+        fprintf(f, "%s</td><td>%s%s</td><td>", r->page[0] ? "</a>" : "", verdict_word(r->status), r->flagged ? " (FLAGGED)" : "");
         err |= html_put_escaped(f, bias);
         fputs("</td><td>", f);
         err |= html_put_escaped(f, r->where);

@@ -207,7 +207,7 @@ static void print_verdict(const grade_report *r)
                100 * r->image_eps[worst], 100 * r->image_eps_se[worst], CHANNELS[worst], fabs(r->image_z[worst]), r->image_zlimit[worst]);
     for (ch = 0; ch < 3; ch++)
         if (r->plain_limit[ch] > 0.0 && fabs(r->plain_t[ch]) > r->plain_limit[ch]) {
-            printf("  %s on the image's plain mean: %+.2f%% in %s (|t| %.1f > %.2f)\n", r->plain_t[ch] > 0 ? "brighter" : "darker",
+            printf("  %s on the whole image's plain mean: %+.2f%% in %s (|t| %.1f > %.2f)\n", r->plain_t[ch] > 0 ? "brighter" : "darker",
                    100.0 * r->image_diff[ch] / r->image_ref[ch], CHANNELS[ch], fabs(r->plain_t[ch]), r->plain_limit[ch]);
             break;
         }
@@ -309,24 +309,29 @@ void grade_fill_row(grade_row *row, const grade_report *r)
 void grade_print_row(const grade_row *row)
 {
     const char *name = shown(row->path);
+    /* each number says what it is computed over (the whole image, or the significant blocks and where
+     * they are); a place stands beside the number only when the number is computed there */
     if (row->status == 2) printf("%s: UNREADABLE, %s", name, shown(row->mistake));
-    else if (row->status == 0) printf("%s: PASS (%+.2f%% +- %.2f%% in %s)", name, 100 * row->bias, 100 * row->bias_se, row->channel);
+    else if (row->status == 0) printf("%s: PASS (%+.2f%% +- %.2f%% in %s over the whole image)", name, 100 * row->bias, 100 * row->bias_se, row->channel);
     else {
         printf("%s: FAIL", name);
-        if (row->channel[0] && row->bias_se == -2.0) printf(", %+.2f%% where significant", 100 * row->bias);
-        else if (row->channel[0] && row->bias_se < 0.0) printf(", %+.2f%% on the image's mean", 100 * row->bias);
-        else if (row->channel[0]) printf(", %+.2f%% +- %.2f%% in %s", 100 * row->bias, 100 * row->bias_se, row->channel);
-        if (row->where[0]) printf(" (%s)", row->where);
+        if (row->channel[0] && row->bias_se == -2.0)
+            printf(", %+.2f%% over its significant blocks%s%s%s", 100 * row->bias, row->where[0] ? " (" : "", row->where, row->where[0] ? ")" : "");
+        else {
+            if (row->channel[0] && row->bias_se < 0.0) printf(", %+.2f%% on the whole image's plain mean", 100 * row->bias);
+            else if (row->channel[0]) printf(", %+.2f%% +- %.2f%% in %s over the whole image", 100 * row->bias, 100 * row->bias_se, row->channel);
+            if (row->where[0]) printf("; %s: %s", strcmp(row->where, "spread over the image") ? "significant in" : "the bias", row->where);
+        }
         printf("%s%s", row->mistake[0] ? "; likely: " : "", shown(row->mistake));
     }
-    printf("%s%s\n", row->remark[0] ? "; FLAGGED: " : "", shown(row->remark));
+    printf("%s%s\n", row->flagged ? "; FLAGGED: " : row->remark[0] ? "; " : "", shown(row->remark));
 }
 
 void grade_bias_text(char *out, size_t cap, const grade_row *r)
 {
     out[0] = '\0';
     if (r->status == 2 || !r->channel[0]) return;
-    if (r->bias_se == -2.0) snprintf(out, cap, "%+.2f%% (where significant)", 100 * r->bias);
-    else if (r->bias_se < 0.0) snprintf(out, cap, "%+.2f%% (plain mean)", 100 * r->bias);
-    else snprintf(out, cap, "%+.2f%% +- %.2f%% (%s)", 100 * r->bias, 100 * r->bias_se, r->channel);
+    if (r->bias_se == -2.0) snprintf(out, cap, "%+.2f%% (over the significant blocks)", 100 * r->bias);
+    else if (r->bias_se < 0.0) snprintf(out, cap, "%+.2f%% (the whole image's plain mean)", 100 * r->bias);
+    else snprintf(out, cap, "%+.2f%% +- %.2f%% (%s, the whole image)", 100 * r->bias, 100 * r->bias_se, r->channel);
 }

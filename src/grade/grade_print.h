@@ -23,6 +23,7 @@ typedef struct {
                                 from the reference) or an output not written and why; "" if none */
     unsigned char sha[32];   /* the SHA-256 of its pixels, when hashed */
     int hashed;
+    int flagged;             /* 1: the remark holds an integrity flag (a copy, or made from the reference) */
     int output_failed;       /* 1: its page or heatmap could not be written (the remark says why): exit 2 */
 } grade_row;
 

@@ -322,14 +322,16 @@ void render_result_free(render_result *r)
     free(r->var);
 }
 
-void render_print_stats(const render_result *r, int spp, int npixels)
+void render_print_stats(const render_result *r, int spp, int64_t had, int npixels)
 {
     const trace_stats *st = &r->st;
     double secs = r->seconds > 0 ? r->seconds : 1e-9;
     uint64_t rays = st->camera_rays + st->continuation_rays + st->shadow_rays;
-    fprintf(stderr, "%.2f s, %d spp, %.2f Msamples/s, %.2f Mrays/s (camera %llu, continuation %llu, shadow %llu), "
+    if (had > 0) fprintf(stderr, "%.2f s, %lld spp in all (%d added to the %lld it had)", r->seconds, (long long)(had + spp), spp, (long long)had);
+    else fprintf(stderr, "%.2f s, %d spp", r->seconds, spp);
+    fprintf(stderr, ", %.2f Msamples/s, %.2f Mrays/s (camera %llu, continuation %llu, shadow %llu), "
             "%llu NaN/Inf samples, %llu paths cut at %d bounces\n",
-            r->seconds, spp, (double)spp * npixels / secs * 1e-6, (double)rays / secs * 1e-6,
+            (double)spp * npixels / secs * 1e-6, (double)rays / secs * 1e-6,
             (unsigned long long)st->camera_rays, (unsigned long long)st->continuation_rays,
             (unsigned long long)st->shadow_rays, (unsigned long long)r->nonfinite,
             (unsigned long long)st->paths_cut, BOUNCES_CAP);

@@ -60,6 +60,7 @@ static inline int render_bounce_of_layer(int layer, int bmin) { return bmin + la
  * printing why) if memory ran out. */
 int render(const scene *sc, const camera *cam, const render_opts *o, render_result *out);
 void render_result_free(render_result *r);
-/* The one-line summary: time, samples/s, Mrays/s and the rays of each kind. */
-void render_print_stats(const render_result *r, int spp, int npixels);
+/* The one-line summary: time, samples per pixel (spp rendered now; after --resume, had + spp in all
+ * and how many were added), samples/s, Mrays/s and the rays of each kind. */
+void render_print_stats(const render_result *r, int spp, int64_t had, int npixels);
 #endif

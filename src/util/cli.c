@@ -87,17 +87,13 @@ static const char *size_of(const char *s, int *w, int *h)
     return NULL;
 }
 
-static const char *choice_of(const char *s, const char *const *names, int *out, char *what)
+/* The index of s in names, or -1. */
+static int choice_of(const char *s, const char *const *names)
 {
     int i;
     for (i = 0; names[i]; i++)
-        if (!strcmp(s, names[i])) { *out = i; return NULL; }
-    strcpy(what, "one of");
-    for (i = 0; names[i] && strlen(what) + strlen(names[i]) + 3 < WHAT; i++) {
-        strcat(what, i ? ", " : " ");
-        strcat(what, names[i]);
-    }
-    return what;
+        if (!strcmp(s, names[i])) return i;
+    return -1;
 }
 
 /* ---- messages ---- */
@@ -118,6 +114,33 @@ int cli_fail(const char *cmd, const char *flag, const char *what, const char *va
 
 /* ---- a table of flags ---- */
 
+static const cli_flag *find_flag(const cli_flag *const *tables, const char *f, size_t len);
+static FILE *list_to;   /* cli_list_flags: where the tables are listed instead of parsed, or NULL */
+
+void cli_list_flags(FILE *f)
+{
+    list_to = f;
+}
+
+int cli_listing(void)
+{
+    return list_to != NULL;
+}
+
+/* Each flag of the tables on a line of list_to, its values after it if it takes one of a list; 1. */
+static int list_tables(const cli_flag *const *tables)
+{
+    int t, k, j;
+    for (t = 0; tables[t]; t++)
+        for (k = 0; tables[t][k].name; k++) {
+            if (find_flag(tables, tables[t][k].name, strlen(tables[t][k].name)) != &tables[t][k]) continue;   /* listed */
+            fputs(tables[t][k].name, list_to);
+            for (j = 0; tables[t][k].choices && tables[t][k].choices[j]; j++) fprintf(list_to, " %s", tables[t][k].choices[j]);
+            fputc('\n', list_to);
+        }
+    return 1;
+}
+
 int cli_is_word(const char *arg)
 {
     return arg[0] != '-' || !arg[1];
@@ -136,7 +159,10 @@ int cli_parse_value(const char *cmd, const cli_flag *f, const char *v, void *ctx
     case CLI_DOUBLE: e = double_of(v, f->lo, f->hi, (double *)f->dest, what); break;
     case CLI_VEC3: e = vec3_of(v, (vec3 *)f->dest); break;
     case CLI_SIZE: e = size_of(v, (int *)f->dest, (int *)f->dest + 1); break;
-    case CLI_CHOICE: e = choice_of(v, f->choices, (int *)f->dest, what); break;
+    case CLI_CHOICE:
+        if (choice_of(v, f->choices) < 0) return cli_fail_choice(cmd, f->name, v, f->choices);
+        *(int *)f->dest = choice_of(v, f->choices);
+        break;
     case CLI_CUSTOM: return f->custom(ctx, f->name, v);
     }
     return e ? cli_fail(cmd, f->name, e, v) : 0;
@@ -176,9 +202,28 @@ void cli_consider(const char *word, const char *name, const char **best, int *be
     len = (int)strlen(n);
     d = cli_distance(w, n);
     if (strlen(w) >= 2 && !strncmp(n, w, strlen(w))) d = 1;   /* a prefix: --var for --variance */
-    /* close enough to be what was meant: one edit in a short name, two in a name of 6 or more */
-    if (d > (len >= 6 ? 2 : 1) || d >= len) return;
+    /* close enough to be what was meant: one edit in a short name, two in a name of 6 or more, or
+     * the name and a few more letters (--reference for --ref, --alphas for --alpha) */
+    if (len >= 3 && (int)strlen(w) > len && (int)strlen(w) <= len + 7 && !strncmp(w, n, (size_t)len)) d = 2;
+    else if (d > (len >= 6 ? 2 : 1) || d >= len) return;
     if (!*best || d < *best_d) { *best = name; *best_d = d; }
+}
+
+int cli_fail_choice(const char *cmd, const char *flag, const char *value, const char *const *names)
+{
+    char what[WHAT];
+    const char *best = NULL;
+    size_t n;
+    int i, d = 0;
+    for (i = 0; names[i]; i++) cli_consider(value, names[i], &best, &d);
+    snprintf(what, sizeof what, "one of");
+    for (i = 0; names[i] && (n = strlen(what)) + strlen(names[i]) + 3 < sizeof what; i++)
+        snprintf(what + n, sizeof what - n, "%s%s", i ? ", " : " ", names[i]);
+    say_who(cmd);
+    fprintf(stderr, "%s expects %s, got '%.200s'", flag, what, value);
+    if (best) fprintf(stderr, "; did you mean %s?", best);
+    fputc('\n', stderr);
+    return 1;
 }
 
 /* The flag of the tables named by f, the first `len` characters of it, or NULL. */
@@ -226,6 +271,7 @@ int cli_parse_flag(const char *cmd, int argc, char **argv, int *i, const cli_fla
     const char *arg = argv[*i];
     size_t len = cli_flag_length(arg);
     const cli_flag *f = find_flag(tables, arg, len);
+    if (list_to) return list_tables(tables);
     if (!f) return unknown_flag(cmd, tables, arg, len);
     if (f->given) *f->given = 1;
     if (arg[len] == '=') {   /* --flag=value, the same as --flag value */
@@ -248,6 +294,7 @@ int cli_parse(const char *cmd, int argc, char **argv, const cli_flag *const *tab
 {
     int i;
     *nwords = 0;
+    if (list_to) return list_tables(tables);
     for (i = 1; i < argc; i++) {
         if (!cli_is_word(argv[i])) {
             if (cli_parse_flag(cmd, argc, argv, &i, tables, ctx)) return 1;

@@ -89,12 +89,16 @@
     check('probe: the second image (values x 1e-3) within 1e-3 relative + 3e-8', !bad.length, bad.slice(0, 4).join('; '));
     V.setImage(0);
     exposureTests(img);
-    var means = [];
-    for (var i = 0; i < W * H; i++) means.push((img.px[3 * i] + img.px[3 * i + 1] + img.px[3 * i + 2]) / 3);
-    means.sort(function (a, b) { return a - b; });
-    var auto = -Math.log2(means[Math.floor(0.99 * means.length)]);
-    check('exposure: automatic, the 99th percentile to 1 (' + V.autoExposure() + ' stops, from the PFM ' + auto.toFixed(3) + ')',
-          Math.abs(V.autoExposure() - auto) <= 0.1, V.autoExposure() + ' vs ' + auto);
+    var lums = [];
+    for (var i = 0; i < W * H; i++) {
+      var y = 0.2126 * img.px[3 * i] + 0.7152 * img.px[3 * i + 1] + 0.0722 * img.px[3 * i + 2];
+      if (y > 0) lums.push(y);
+    }
+    lums.sort(function (a, b) { return a - b; });
+    var auto = Math.log2(0.18 / lums[lums.length >> 1]);
+    check('exposure: automatic, the median luminance of the pixels not black to 0.18 (' + V.autoExposure() + ' stops, from the PFM ' +
+          auto.toFixed(3) + ', convert --exposure auto ' + TEST.convertAuto + ')',
+          Math.abs(V.autoExposure() - auto) <= 0.1 && Math.abs(V.autoExposure() - TEST.convertAuto) <= 0.1, V.autoExposure() + ' vs ' + auto);
     channelTests(img);
     splitTests(img, ref);
     diffTests(img, ref);

@@ -77,8 +77,9 @@ static int decode_bytes(image *im, const unsigned char *b, size_t n, const char 
     switch (fmt) {
     case FMT_PPM: return img_decode_ppm(im, b, n, path, info);
     case FMT_TGA: return img_decode_tga(im, b, n, path, info);
-    case FMT_PNG: case FMT_JPEG:
-        fprintf(stderr, "%s: %s: not read yet by this build\n", path, fmt == FMT_PNG ? "PNG" : "JPEG");
+    case FMT_PNG: return img_decode_png(im, b, n, path, info);
+    case FMT_JPEG:
+        fprintf(stderr, "%s: JPEG: not read yet by this build\n", path);
         return 1;
     default: return unknown_format(path, b, n);
     }

@@ -78,9 +78,7 @@ static int decode_bytes(image *im, const unsigned char *b, size_t n, const char 
     case FMT_PPM: return img_decode_ppm(im, b, n, path, info);
     case FMT_TGA: return img_decode_tga(im, b, n, path, info);
     case FMT_PNG: return img_decode_png(im, b, n, path, info);
-    case FMT_JPEG:
-        fprintf(stderr, "%s: JPEG: not read yet by this build\n", path);
-        return 1;
+    case FMT_JPEG: return img_decode_jpeg(im, b, n, path, info);
     default: return unknown_format(path, b, n);
     }
 }

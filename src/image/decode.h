@@ -40,8 +40,9 @@ int img_decode_file(image *im, const char *path, img_decoded *info);
 /* The decoders on a whole file in memory (b, n bytes), for img_decode_file and the fuzz harnesses:
  * the same contract (path names the file in messages; info is filled, never NULL). */
 int img_decode_ppm(image *im, const unsigned char *b, size_t n, const char *path, img_decoded *info);
-/* PNG: png_decode.c; TGA: tga.c; PPM/PGM: pnm.c */
+/* PNG: png_decode.c; JPEG: jpeg.c; TGA: tga.c; PPM/PGM: pnm.c */
 int img_decode_png(image *im, const unsigned char *b, size_t n, const char *path, img_decoded *info);
+int img_decode_jpeg(image *im, const unsigned char *b, size_t n, const char *path, img_decoded *info);
 int img_decode_tga(image *im, const unsigned char *b, size_t n, const char *path, img_decoded *info);
 /* 1 when b (n bytes) starts like a TGA header (TGA has no magic number: its fields are checked). */
 int img_looks_like_tga(const unsigned char *b, size_t n);

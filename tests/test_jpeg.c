@@ -65,6 +65,14 @@ static void make_source(void)
     img_free(&src);
 }
 
+static void f_write(const char *path, const unsigned char *b, size_t n)
+{
+    FILE *f = fopen(path, "wb");
+    if (f) fwrite(b, 1, n, f), fclose(f);
+}
+
+static void refused(const char *name, const unsigned char *b, size_t n, const char *want);
+
 /* Writes NAME with oiiotool's options, decodes it both ways; mean and max |difference| in codes. */
 static void same_within(const char *name, const char *opts, double mean_tol, int max_tol)
 {
@@ -138,6 +146,32 @@ static void test_hostile(void)
     free(b);
 }
 
+/* Written by hand: 16 x 16 grey, one block an MCU, a restart marker after each (DRI 1). Each
+ * block's DC difference is +4 (category 3, bits 100): with the prediction reset at every restart
+ * every block is 4 x 8 (its quantiser) / 8 = +4 over 128; without, they would climb 132, 136, ... */
+static void test_restart(void)
+{
+    static const unsigned char head[] = {0xff, 0xd8, 0xff, 0xdb, 0, 0x43, 0},
+        rest[] = {0xff, 0xc0, 0, 11, 8, 0, 16, 0, 16, 1, 1, 0x11, 0,
+                  0xff, 0xc4, 0, 21, 0x00, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 3,
+                  0xff, 0xc4, 0, 20, 0x10, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
+                  0xff, 0xdd, 0, 4, 0, 1, 0xff, 0xda, 0, 8, 1, 1, 0, 0, 63, 0,
+                  0x63, 0xff, 0xd0, 0x63, 0xff, 0xd1, 0x63, 0xff, 0xd2, 0x63, 0xff, 0xd9};
+    unsigned char file[256];
+    image im;
+    int i, bad = 0, r;
+    memcpy(file, head, sizeof head);
+    memset(file + sizeof head, 8, 64);
+    memcpy(file + sizeof head + 64, rest, sizeof rest);
+    f_write(in_dir("restart.jpg"), file, sizeof head + 64 + sizeof rest);
+    r = img_decode_file(&im, in_dir("restart.jpg"), NULL);
+    for (i = 0; r == 0 && i < 16 * 16 * 3; i++) bad += im.px[i] != 132.0f / 255.0f;
+    check(r == 0 && bad == 0, "jpeg_restart_markers", "4 MCUs, DRI 1: %d values not 132", bad);
+    if (r == 0) img_free(&im);
+    file[sizeof head + 64 + sizeof rest - 7] = 0xd5;   /* RST1 -> RST5: the order is not checked; cut after it */
+    refused("restart_cut.jpg", file, sizeof head + 64 + sizeof rest - 5, "restart marker is missing");
+}
+
 static void remove_dir(void)
 {
     DIR *d = opendir(dir);
@@ -155,9 +189,10 @@ int main(void)
         check(0, "mkdtemp", "cannot create a folder in /tmp");
         return 1;
     }
+    test_restart();
     if (system("command -v oiiotool >/dev/null 2>&1") != 0) {
         printf("SKIP jpeg_oiiotool: no oiiotool\n");
-        rmdir(dir);
+        remove_dir();
         return check_summary();
     }
     make_source();

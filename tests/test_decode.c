@@ -122,7 +122,7 @@ static void test_hostile(void)
     refused("empty.ppm", "", 0, "an empty file");
     refused("tga_declared_size.tga", "\0\0\x02\0\0\0\0\0\0\0\0\0\xff\xff\xff\xff\x18\x20\1\2\3", 21, "truncated: 65535 x 65535");
     refused("tga_rle_declared_size.tga", "\0\0\x0a\0\0\0\0\0\0\0\0\0\xff\xff\xff\xff\x18\x20\xff\1\2\3", 22, "need at least");
-    refused("tga_rle_short.tga", "\0\0\x0a\0\0\0\0\0\0\0\0\0\x08\0\x01\0\x18\x20\x81\1\2\3\x02\1\2\3\4\5\6\0\0", 33, "ends after 5 of 8 pixels");
+    refused("tga_rle_short.tga", "\0\0\x0a\0\0\0\0\0\0\0\0\0\x08\0\x01\0\x18\x20\x81\1\2\3\x02\1\2\3\4\5\6\0\0", 31, "ends after 4 of 8 pixels");
     refused("tga_index.tga", "\0\1\x01\0\0\1\0\x18\0\0\0\0\x01\0\x01\0\x08\x20\1\2\3\x05", 22, "outside the colour map");
 }
 

@@ -352,7 +352,7 @@ static void test_convert(void)
     static float v[12 * 5 * 3];
     char cmd[1200];
     rgbe_img im;
-    image d, p;
+    image d = {0, 0, NULL}, p = {0, 0, NULL};
     int r;
     make_image(&im, v, 12, 5);
     write_hdr(in_dir("conv.hdr"), &im, "+Y -X", RLE, "");
@@ -361,6 +361,8 @@ static void test_convert(void)
     r = system(cmd);
     check(r == 0 && img_read_pfm(&p, in_dir("conv.pfm")) == 0 && img_read_hdr(&d, in_dir("conv.hdr")) == 0
           && memcmp(d.px, p.px, sizeof(float) * 3 * 60) == 0, "convert_hdr_to_pfm", "exit %d", r);
+    img_free(&d);
+    img_free(&p);
     free(im.q);
 }
 

@@ -168,7 +168,7 @@ test-deps:
 
 # The fuzz harnesses (tests/fuzz/fuzz_TARGET.c): with FUZZ=1 linked to libFuzzer, in any build also
 # to tests/fuzz/replay.c, a main() that runs them on files (tests/test_fuzz_seeds.sh replays the seeds).
-FUZZ_TARGETS = scene mtl view orbiter pfm sidecar report
+FUZZ_TARGETS = scene mtl view orbiter pfm sidecar report hdr png tga ppm jpeg
 FUZZ_COMMON = tests/fuzz/fuzz_common.c
 FUZZ_DEPS = $(FUZZ_COMMON) tests/fuzz/fuzz_common.h $(wildcard src/*/*.h) $(LIB_OBJ)
 $(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(FUZZ_DEPS)

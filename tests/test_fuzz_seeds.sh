@@ -5,7 +5,7 @@
 # harness's private temporary folder is gone afterwards. A few seconds; `make fuzz` is the real fuzzing.
 . "$(dirname "$0")/lib.sh"
 mkdir -p "$TMP/t"
-for t in scene mtl view orbiter pfm sidecar report; do
+for t in scene mtl view orbiter pfm sidecar report hdr png tga ppm jpeg; do
     bin=$BUILD/fuzz/replay_$t
     n=$(ls tests/fuzz/corpus/$t | wc -l)
     if [ ! -x "$bin" ]; then fail "fuzz seeds $t: $bin is missing (make test builds it)"; continue; fi

@@ -1,0 +1,22 @@
+/* fuzz_jpeg.c — libFuzzer harness: one JPEG file decoded from memory by img_decode_jpeg.
+ * A decode that succeeds has a size >= 1, all its pixels, and values that are finite and >= 0
+ * (integers / maxval: also <= 1). */
+#include <math.h>
+#include <stdlib.h>
+#include "fuzz_common.h"
+#include "image/decode.h"
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    image im;
+    img_decoded info;
+    size_t i;
+    (void)info;
+    if (img_decode_jpeg(&im, data, size, "f.jpg", &info) == 0) {
+        if (im.w < 1 || im.h < 1 || !im.px) abort();
+        for (i = 0; i < (size_t)im.w * im.h * 3; i++)
+            if (!(im.px[i] >= 0.0f) || !isfinite(im.px[i]) || im.px[i] > 1.0f) abort();
+        img_free(&im);
+    }
+    return 0;
+}

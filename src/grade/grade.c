@@ -78,6 +78,7 @@
 #define GRADE_LEVELS 48        /* level 0: luminance <= 0; level k: [2^(k-25), 2^(k-24)), ends open */
 #define GRADE_EXACT_REL 1e-4   /* an exact pixel may differ by this much, relative... */
 #define GRADE_EXACT_ABS 1e-6   /* ... plus this much of the reference's mean */
+#define GRADE_HITS_RADIUS 5    /* the window (11 x 11) where the dimmest lit pixel of a black one is sought */
 
 static int imin(int a, int b) { return a < b ? a : b; }
 static int imax(int a, int b) { return a > b ? a : b; }
@@ -112,29 +113,122 @@ static int zero_variance(const image *var, size_t p)
     return var->px[3 * p] == 0.0f && var->px[3 * p + 1] == 0.0f && var->px[3 * p + 2] == 0.0f;
 }
 
-/* Exact pixels: inside a flat region of the reference, the pixel and its 8 neighbours equal bit for
- * bit and (with the variance) each of variance 0. A variance of 0 alone is not enough: where light
- * is rare, a reference can draw only zeros in a pixel (at 16 spp, thousands of them) and an honest
- * image that found the light there would fail. In the interior of the background or of an emitter
- * without reflectance, every unbiased renderer gives the same value. */
+/* The number of light-finding samples a pixel of the reference drew, estimated from its mean m and
+ * the variance of its mean v: for a pixel whose samples are c with probability q and 0 otherwise,
+ * m^2 / v = n q / (1 - q), about the hits among its n samples (the largest over the channels). 0
+ * for a black pixel; huge for a pixel of variance 0 that is not black (nothing random there). */
+static float hits_of(const image *ref, const image *var, size_t p)
+{
+    double h = 0.0;
+    int ch;
+    for (ch = 0; ch < 3; ch++) {
+        double m = ref->px[3 * p + ch], v = var->px[3 * p + ch];
+        if (m != 0.0) h = fmax(h, v > 0.0 ? m * m / v : 1e30);
+    }
+    return (float)fmin(h, 1e30);
+}
+
+/* dst = the smallest positive value of src within GRADE_HITS_RADIUS along one axis (stride step,
+ * len values per line, lines lines of stride pitch), +inf where none is positive. */
+static void min_positive_1d(float *dst, const float *src, int len, int lines, size_t step, size_t pitch)
+{
+    int i, j, k;
+    for (j = 0; j < lines; j++)
+        for (i = 0; i < len; i++) {
+            float m = HUGE_VALF;
+            for (k = imax(0, i - GRADE_HITS_RADIUS); k <= imin(len - 1, i + GRADE_HITS_RADIUS); k++) {
+                float v = src[j * pitch + k * step];
+                if (v > 0.0f && v < m) m = v;
+            }
+            dst[j * pitch + i * step] = m;
+        }
+}
+
+/* Per pixel, the hits of the dimmest lit pixel of the reference within GRADE_HITS_RADIUS (a square
+ * window, two passes): what a black pixel there would have drawn, had it any light. NULL when out
+ * of memory. */
+static float *dimmest_lit(const grade_report *r, const image *ref, const image *var)
+{
+    size_t p, n = (size_t)r->w * r->h;
+    float *h = malloc(n * sizeof *h), *t = malloc(n * sizeof *t);
+    if (!h || !t) { free(h); free(t); return NULL; }
+    for (p = 0; p < n; p++) h[p] = hits_of(ref, var, p);
+    min_positive_1d(t, h, r->w, r->h, 1, (size_t)r->w);
+    min_positive_1d(h, t, r->h, r->w, (size_t)r->w, 1);
+    free(t);
+    return h;
+}
+
+/* 1 if the pixel and its 8 neighbours equal bit for bit in the reference and (with the variance)
+ * are each of variance 0. */
+static int flat_at(const grade_report *r, const image *ref, const image *var, int x, int y)
+{
+    size_t p = (size_t)y * r->w + x;
+    int u, v, flat = !var || zero_variance(var, p);
+    for (v = y - 1; v <= y + 1 && flat; v++)
+        for (u = x - 1; u <= x + 1 && flat; u++) {
+            size_t q = (size_t)v * r->w + u;
+            if (u < 0 || v < 0 || u >= r->w || v >= r->h) continue;
+            flat = !memcmp(&ref->px[3 * p], &ref->px[3 * q], 3 * sizeof(float)) && (!var || zero_variance(var, q));
+        }
+    return flat;
+}
+
+/* Exact pixels: where the reference shows that the value cannot vary. Flat (flat_at) is necessary:
+ * in the interior of the background or of an emitter without reflectance, every unbiased renderer
+ * gives the same value. It is not enough for a black pixel: where light is rare, a reference can
+ * draw only zeros (a deep penumbra at 2,044 spp, a third of its neighbours lit by a few samples
+ * each) and an honest image that found the light there would fail. A black flat pixel is exact only
+ * where zero hits are themselves unlikely: the dimmest lit pixel around it drew lambda hits, and
+ * exp(-lambda) is below the level alpha / (black flat pixels) (Bonferroni). Without the variance the
+ * hits are unknown and no black pixel is exact. The others are judged in their groups, as rare
+ * events, with the noise floor of their neighbours (floor_var). */
 static int mark_exact(grade_report *r, const image *ref, const image *var)
 {
-    int x, y, u, v;
-    r->exact = calloc((size_t)r->w * r->h, 1);
+    size_t p, n = (size_t)r->w * r->h;
+    long black = 0;
+    float *lit = NULL;
+    double lambda;
+    r->exact = calloc(n, 1);
     if (!r->exact) return 1;
     r->exact_from_var = var != NULL;
-    for (y = 0; y < r->h; y++)
-        for (x = 0; x < r->w; x++) {
-            size_t p = (size_t)y * r->w + x;
-            int flat = !var || zero_variance(var, p);
-            for (v = y - 1; v <= y + 1 && flat; v++)
-                for (u = x - 1; u <= x + 1 && flat; u++) {
-                    size_t q = (size_t)v * r->w + u;
-                    if (u < 0 || v < 0 || u >= r->w || v >= r->h) continue;
-                    flat = !memcmp(&ref->px[3 * p], &ref->px[3 * q], 3 * sizeof(float)) && (!var || zero_variance(var, q));
-                }
-            r->exact[p] = (unsigned char)flat;
+    for (p = 0; p < n; p++) {
+        r->exact[p] = (unsigned char)flat_at(r, ref, var, (int)(p % (size_t)r->w), (int)(p / (size_t)r->w));
+        if (r->exact[p] && ref->px[3 * p] == 0.0f && ref->px[3 * p + 1] == 0.0f && ref->px[3 * p + 2] == 0.0f) {
+            r->exact[p] = 2;   /* black and flat: decided below */
+            black++;
         }
+    }
+    if (black && var && !(lit = dimmest_lit(r, ref, var))) return 1;
+    lambda = -log(r->alpha / (double)(black > 0 ? black : 1));
+    for (p = 0; p < n; p++)
+        if (r->exact[p] == 2) {
+            r->exact[p] = lit && lit[p] >= lambda && lit[p] < HUGE_VALF;
+            r->black_rare += !r->exact[p];
+        }
+    free(lit);
+    return 0;
+}
+
+/* The variance the noise floor uses: the reference's, and where it is 0 at a pixel that is not
+ * exact (a black pixel where light is rare, the reference drew none), the smallest positive one
+ * within GRADE_HITS_RADIUS, per channel: a rare event there is as likely as at its dimmest lit
+ * neighbour. 0 where no pixel around is lit. Returns 1 when out of memory. */
+static int floor_var(image *out, const grade_report *r, const image *var)
+{
+    size_t p, n = (size_t)r->w * r->h;
+    float *t = malloc(3 * n * sizeof *t);
+    int ch;
+    if (!t || img_alloc(out, r->w, r->h)) { free(t); return 1; }
+    for (ch = 0; ch < 3; ch++) {
+        min_positive_1d(t + ch, var->px + ch, r->w, r->h, 3, 3 * (size_t)r->w);
+        min_positive_1d(out->px + ch, t + ch, r->h, r->w, 3 * (size_t)r->w, 3);
+    }
+    free(t);
+    for (p = 0; p < 3 * n; p++) {
+        float v = var->px[p];
+        out->px[p] = v > 0.0f || r->exact[p / 3] ? v : out->px[p] < HUGE_VALF ? out->px[p] : 0.0f;
+    }
     return 0;
 }
 
@@ -610,6 +704,7 @@ static void choose_blocks(grade_report *r, const grade_opts *o)
 int grade_compute(grade_report *r, const image *img, const image *ref, const image *ref_var, const grade_opts *o)
 {
     int *id, k, oom = 0;
+    image vf = {0, 0, NULL};   /* the noise floor's variance (floor_var) */
     memset(r, 0, sizeof *r);
     if (img->w != ref->w || img->h != ref->h) return 1;
     if (ref_var && (ref_var->w != ref->w || ref_var->h != ref->h)) return 1;
@@ -630,13 +725,14 @@ int grade_compute(grade_report *r, const image *img, const image *ref, const ima
         return 1;
     }
     test_exact(r, img, ref);
-    if (ref_var && floor_scale(r, img, ref, ref_var)) { free(id); grade_free(r); return 1; }
-    test_blocks(r, img, ref, ref_var, id);
-    test_coarse(r, img, ref, ref_var, id);
-    test_levels(r, img, ref, ref_var, id);
+    if (ref_var && (floor_scale(r, img, ref, ref_var) || floor_var(&vf, r, ref_var))) { free(id); grade_free(r); return 1; }
+    test_blocks(r, img, ref, ref_var ? &vf : NULL, id);
+    test_coarse(r, img, ref, ref_var ? &vf : NULL, id);
+    test_levels(r, img, ref, ref_var ? &vf : NULL, id);
     test_image(r, img, ref);
     test_plain(r, img, ref);
     free(id);
+    img_free(&vf);
     if (ref_var && o->spp > 0 && o->ref_spp > 0) test_pixels(r, img, ref, ref_var, o);
     return 0;
 }

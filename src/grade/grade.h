@@ -62,6 +62,7 @@ typedef struct {
     unsigned char *exact;                /* per pixel: 1 if the reference is noise-free there */
     int exact_from_var;                  /* 1: told by the reference's variance; 0: guessed */
     long nexact, exact_fail;             /* exact pixels, and those the image misses */
+    long black_rare;                     /* black and flat in the reference, yet light may be rare there: not exact */
     int exact_x, exact_y;                /* the worst miss */
     long exact_side[2];                  /* misses darker (0) and brighter (1) than the reference */
     int exact_box[2][4];                 /* the box around each: x0, y0, x1, y1 (exclusive) */

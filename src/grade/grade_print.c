@@ -142,6 +142,9 @@ static void print_tests(const grade_report *r, const char *image, const char *re
            r->nlevels_tested, r->level_excess, r->level_level, r->level_brighter, r->level_darker);
     printf("exact pixels (flat in the reference: equal to their 8 neighbours%s): %ld, compared as numbers (|d| <= 1e-4 |ref| "
            "+ 1e-6 mean): %ld differ\n", r->exact_from_var ? ", variance 0" : "; no REF_var.pfm", r->nexact, r->exact_fail);
+    if (r->black_rare)
+        printf("black flat pixels not exact: %ld (the reference drew no light there, but its dimmest lit pixel within 5 pixels drew "
+               "too few hits for that to prove the pixel dark: judged in their blocks, as rare events)\n", r->black_rare);
     if (r->floor_k[0] > 0.0)
         printf("noise floor: at least %.3g %.3g %.3g x the reference's variance per pixel (robust fit; guards rare-event noise)\n",
                r->floor_k[0], r->floor_k[1], r->floor_k[2]);

@@ -1,6 +1,7 @@
 /* grade_class.c — a class's images read and checked, its lines and its report (see grade_class.h). */
 #include "grade/grade_class.h"
 #include "grade/grade_page.h"
+#include "grade/negatives.h"
 #include "files/sidecar.h"
 #include <math.h>
 #include <stdio.h>
@@ -131,7 +132,8 @@ int grade_read_image(image *img, grade_row *row, const grade_refs *refs, const c
         return 1;
     }
     if (img_check_radiance(img, row->path, 4)) {
-        snprintf(row->mistake, sizeof row->mistake, "NaN, infinite or negative values (positions on stderr): radiance is finite and >= 0");
+        if (first_bad(img, 0, &(const char *){NULL}) >= 0 || !grade_explain_negatives(row->mistake, sizeof row->mistake, img, refs->ref))
+            snprintf(row->mistake, sizeof row->mistake, "NaN, infinite or negative values (positions on stderr): radiance is finite and >= 0");
         img_free(img);
         return row->status = 2;
     }

@@ -41,6 +41,11 @@ static void describe_box(char *s, size_t cap, int x0, int y0, int x1, int y1, in
     else snprintf(s, cap, "the %s-%s", rows[ty], cols[tx]);
 }
 
+void grade_describe_box(char *s, size_t cap, int x0, int y0, int x1, int y1, int w, int h)
+{
+    describe_box(s, cap, x0, y0, x1, y1, w, h);
+}
+
 /* The box around the groups of one sign, its area in pixels and the number of groups; 0 if none. */
 static int sign_box(const grade_block *g, int ng, int sign, int box[4], long *area)
 {

@@ -770,6 +770,21 @@ double grade_excess(const grade_report *r)
     return e;
 }
 
+double grade_bias_energy(const grade_report *r, double *sd)
+{
+    double e = 0.0;
+    long n = 0;
+    int b, ch;
+    for (b = 0; b < r->nblocks; b++)
+        for (ch = 0; ch < 3 && r->blocks[b].df >= 1 && !r->blocks[b].rare; ch++) {
+            double t = r->blocks[b].t[ch];
+            e += isfinite(t) ? t * t - 1.0 : 1e12;
+            n++;
+        }
+    *sd = sqrt(2.0 * n);
+    return e;
+}
+
 /* Paints the significant blocks of one scale: red brighter, blue darker, over what is there, with
  * weight `strength` (the coarse scales lighter, so that the finest show their detail on them). */
 static void paint_blocks(image *out, const grade_block *g, int ng, int w, float strength)

@@ -82,6 +82,10 @@ int grade_failed(const grade_report *r);
 /* How far the worst statistic is beyond its limit: <= 1 passes the tests with a level (a missed
  * exact pixel counts as 1e9). The diagnosis compares hypotheses with it. */
 double grade_excess(const grade_report *r);
+/* How much bias the image holds, in units of its noise: the sum over the finest blocks and channels
+ * of t^2 - 1 (0 on average without bias: a chi-square's excess), and its standard deviation without
+ * bias in *sd. The diagnosis asks that a mistake remove 99% of it. */
+double grade_bias_energy(const grade_report *r, double *sd);
 /* The reference in grey, with significantly brighter blocks in red and darker ones in blue (the
  * coarser scales in lighter tints under the finest). */
 int grade_heatmap(image *out, const grade_report *r, const image *ref);

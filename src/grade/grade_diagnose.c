@@ -293,6 +293,73 @@ static void try_bounces(diag *d)
     }
 }
 
+/* ---- the pixel convention: centres against jittered samples ---- */
+
+static double lum_of(const image *im, size_t p)
+{
+    return luminance(v3(im->px[3 * p], im->px[3 * p + 1], im->px[3 * p + 2]));
+}
+
+/* The variance of a pixel's luminance from the reference's per-channel variance (channels taken
+ * as independent), 0 without it. */
+static double lum_var(const image *var, size_t p)
+{
+    static const double w[3] = {0.2126, 0.7152, 0.0722};
+    double v = 0.0;
+    int ch;
+    for (ch = 0; var && ch < 3; ch++) v += w[ch] * w[ch] * var->px[3 * p + ch];
+    return v;
+}
+
+/* 1 if pixel p of the reference lies on an edge: an 8-neighbour differs by more than a fifth of
+ * their sum and by more than 4 standard deviations of the reference's noise. An edge crosses the
+ * pixel, which a pixel-centre sample sees on one side and a jittered one averages. */
+static int on_edge(const image *ref, const image *var, int x, int y)
+{
+    double l = lum_of(ref, (size_t)y * ref->w + x), vl = lum_var(var, (size_t)y * ref->w + x);
+    int u, v;
+    for (v = y - 1; v <= y + 1; v++)
+        for (u = x - 1; u <= x + 1; u++) {
+            size_t q = (size_t)v * ref->w + u;
+            double m;
+            if (u < 0 || v < 0 || u >= ref->w || v >= ref->h || (u == x && v == y)) continue;
+            m = lum_of(ref, q);
+            if (fabs(l - m) > 0.2 * (l + m) && (l - m) * (l - m) > 16.0 * (vl + lum_var(var, q))) return 1;
+        }
+    return 0;
+}
+
+/* Pixel centres against a jittered reference, or the reverse: the image differs on the edges only,
+ * brighter on some and darker on others (which side of the pixel's centre the edge passes), and
+ * the interiors agree. Tested by grading with the edge pixels given the reference's values, once
+ * the differences there are seen to have both signs (at least 5% of them each way: a straight edge
+ * along a row of pixels is off the same way all along, so one sign may well dominate). */
+static void try_pixel_convention(diag *d)
+{
+    const image *ref = d->refs->ref, *img = d->img;
+    size_t p, n = (size_t)img->w * img->h, nedge = 0;
+    double up = 0.0, down = 0.0;
+    char what[160], graded[160];
+    memcpy(d->a.px, img->px, 3 * n * sizeof *img->px);
+    for (p = 0; p < n; p++) {
+        double dl;
+        if (!on_edge(ref, d->refs->var, (int)(p % (size_t)img->w), (int)(p / (size_t)img->w))) continue;
+        nedge++;
+        dl = lum_of(img, p) - lum_of(ref, p);
+        up += fmax(dl, 0.0);
+        down += fmax(-dl, 0.0);
+        memcpy(&d->a.px[3 * p], &ref->px[3 * p], 3 * sizeof(float));
+    }
+    if (nedge == 0 || 10 * nedge > 3 * n || fmin(up, down) < 0.05 * (up + down)) return;
+    snprintf(what, sizeof what, "%s", d->refs->pixel_center == 1
+             ? "jittered in the pixel against a reference shot through pixel centres: render the reference without --pixel-center"
+             : d->refs->pixel_center == 0 ? "pixel centres against a jittered reference (gKit's Point(x + .5f, y + .5f)): render the reference with --pixel-center"
+             : "pixel centres against a jittered reference, or the reverse: render the reference with --pixel-center (or without)");
+    snprintf(graded, sizeof graded, "the image with its %zu edge pixels (%.1f%%; %.0f%% of their difference up, %.0f%% down) given the reference's values", nedge,
+             100.0 * nedge / n, 100.0 * up / (up + down), 100.0 * down / (up + down));
+    judge(d, &d->a, ref, what, graded);
+}
+
 /* ---- evidence from the values alone ---- */
 
 static int all_values(const image *im, int (*test)(float))
@@ -480,6 +547,7 @@ int grade_diagnose(const image *img, const grade_refs *refs, const grade_opts *o
     try_values(&d);
     try_rgbe(&d);
     try_geometry(&d);
+    try_pixel_convention(&d);
     try_curves(&d);
     try_bounces(&d);
     try_factors(&d);

@@ -55,6 +55,7 @@ int grade_reference_read(grade_reference *R, const char *path, const char *var, 
     R->refs.ref = &R->ref;
     R->refs.channels = info.channels;
     R->has_meta = sidecar_read(&R->meta, path) == 0;
+    R->refs.pixel_center = R->has_meta ? strstr(R->meta.flags, "--pixel-center") != NULL : -1;
     if (read_variance(R, path, var, stem) || read_layers(R, path, layers, stem)) return 2;
     return grade_check_reference(&R->refs, path, R->var_path);
 }

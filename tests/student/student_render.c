@@ -1,4 +1,4 @@
-/* student_render.c — a renderer of the kind a student writes in gKit's direct-light tutorial,
+/* tests/student/student_render.c — a renderer of the kind a student writes in gKit's direct-light tutorial,
  * written apart from pathlab (none of its code, its own RNG, camera and RGBE writer) so that the
  * tests grade a whole path from a student's program to a verdict (tests/test_student.sh):
  *   L = Le(first hit) + Kd/pi Le(s) cos(theta_p) cos(theta_s) / |s - p|^2 / pdf(s), one light

@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# A student's renderer graded, from its program to the verdict: tests/student/student_render.c (direct
+# light only, Lambert, one light triangle picked uniformly, pixel centres, its own RNG and camera, a
+# truncating RGBE writer as gKit's) renders the box of tests/student/box_scene.py through a gKit
+# orbiter file; pathlab renders the reference (--bounces 0:1, --pixel-center, independent samples,
+# --variance) and grades:
+#   honest, PFM (2 seeds) and .hdr: pass          no 1/pi: fail, pi named
+#   no cosine at the light: fail                  unclamped cosine at the light: exit 2, explained
+#   through a truncating .hdr decoded without the half step: fail, named
+#   pixel centres against a jittered reference (160x120): fail, --pixel-center named
+# Statistics: alpha 0.01 per image, seeds fixed (the test is deterministic); the 3 honest images
+# pass together with probability >= 0.97 after a change to pathlab's random streams. Images of
+# 64x48 (student 128 spp, reference 2048 spp) and 160x120 (256 and 512 spp).
+. "$(dirname "$0")/lib.sh"
+S=$TMP/student
+mkdir -p "$S"
+if ! ${CC:-cc} -std=c99 -D_DEFAULT_SOURCE -O2 -o "$S/render" tests/student/student_render.c -lm 2> "$TMP/err"; then
+    fail "the student renderer does not build: $(head -c 300 "$TMP/err")"; exit 0
+fi
+python3 tests/student/box_scene.py "$S/box"
+printf 'c 278 274.4 279.6\np 0 0\nr 0 180\ns 1079.6 600\nf 39.3 64 48\n' > "$S/orbiter.txt"
+printf 'c 278 274.4 279.6\np 0 0\nr 0 180\ns 1079.6 600\nf 39.3 160 120\n' > "$S/orbiter160.txt"
+REF="$PATHLAB render $S/box.obj --bounces 0:1 --sampler independent --quiet"
+$REF --orbiter "$S/orbiter.txt" --pixel-center --spp 2048 -o "$S/ref.pfm" --variance "$S/ref_var.pfm"
+$REF --orbiter "$S/orbiter160.txt" --spp 512 --seed 7 -o "$S/jittered.pfm" --variance "$S/jittered_var.pfm"
+
+# student NAME SPP SEED OUT [MISTAKE...]: the student's image
+student() { local name=$1; shift; "$S/render" "$S/box.obj" "$S/$name" "$@" 2> "$TMP/err" || fail "student_render $*: $(head -c 200 "$TMP/err")"; }
+# graded NAME WANT PATTERN IMAGE [REF]: grade's exit status is WANT and its output (stdout and stderr)
+# matches PATTERN (grep -E)
+graded() {
+    local name=$1 want=$2 pattern=$3 img=$4 ref=${5:-ref} rc
+    $PATHLAB grade "$img" --ref "$S/$ref.pfm" > "$TMP/out" 2>&1; rc=$?
+    local verdict
+    verdict=$(grep -E '^(PASS|FAIL)|UNREADABLE|^likely' "$TMP/out" | cut -c1-160 | paste -sd ';' -)
+    if [ "$rc" -ne "$want" ]; then fail "$name: grade exit $rc, wanted $want: $verdict"
+    elif [ -n "$pattern" ] && ! grep -qE -- "$pattern" "$TMP/out"; then fail "$name: no line matches '$pattern': $verdict"
+    else pass "$name [$verdict]"; fi
+}
+
+for seed in 1 2; do
+    student orbiter.txt 128 $seed "$S/honest$seed.pfm"
+    graded "the student's honest image, seed $seed: pass" 0 "" "$S/honest$seed.pfm"
+done
+student orbiter.txt 128 3 "$S/honest.hdr"
+if $PATHLAB convert "$S/honest.hdr" "$S/honest_hdr.pfm" > /dev/null 2>&1; then
+    graded "the student's honest .hdr (truncating RGBE, read with the half step): pass" 0 "" "$S/honest.hdr"
+else
+    fail "pathlab does not read the student's .hdr: $($PATHLAB convert "$S/honest.hdr" "$S/x.pfm" 2>&1 | head -c 200)"
+fi
+student orbiter.txt 128 4 "$S/nopi.pfm" no-pi
+graded "no 1/pi: fail, pi named" 1 "^likely mistake: pi times the reference" "$S/nopi.pfm"
+student orbiter.txt 128 5 "$S/nocos.pfm" no-light-cos
+graded "no cosine at the light: fail" 1 "" "$S/nocos.pfm"
+student orbiter.txt 128 6 "$S/unclamped.pfm" unclamped
+graded "an unclamped cosine at the light: exit 2, negative light behind the light, the cosine named" 2 \
+    "negative radiance in [0-9]+ pixels.*behind the light.*unclamped cos theta at the light" "$S/unclamped.pfm"
+student orbiter.txt 128 7 "$S/via_rgbe.pfm" via-rgbe
+graded "through a truncating .hdr decoded without the half step: fail, named" 1 "^likely mistake: RGBE truncated without the half step" "$S/via_rgbe.pfm"
+student orbiter160.txt 256 1 "$S/centres.pfm"
+graded "pixel centres against a jittered reference: fail, --pixel-center named" 1 "^likely mistake: pixel centres against a jittered reference.*--pixel-center" \
+    "$S/centres.pfm" jittered

@@ -26,7 +26,7 @@ static void heatmap_path(char *out, size_t cap, const grade_job *j, const char *
 {
     const char *base = path_file_name(image);
     size_t stem = path_ends_with(base, ".pfm") ? strlen(base) - 4 : strlen(base);
-    if (j->nimages == 1) snprintf(out, cap, "%s", j->heatmap);
+    if (!path_is_dir(j->heatmap)) snprintf(out, cap, "%s", j->heatmap);
     else snprintf(out, cap, "%s/%.*s.png", j->heatmap, (int)stem, base);
 }
 
@@ -57,7 +57,10 @@ static int write_heatmap(const grade_report *r, const run *s, const char *image_
     if (!s->job.heatmap) return 0;
     heatmap_path(path, sizeof path, &s->job, image_path);
     err = grade_heatmap(&heat, r, &s->R.ref) || img_write(&heat, path, 0.0f);
-    if (!err && s->loud) printf("heatmap: %s (red: significantly brighter blocks, blue: darker, grey: the reference)\n", path);
+    if (!err && s->loud)
+        printf("heatmap: %s (each %dx%d block tinted by its signed t: red brighter, blue darker, light below the limit |t| %.2f, "
+               "full colour at %.2f; grey: the reference, its mean luminance %.3g at mid-grey)\n", path, r->block, r->block,
+               r->block_tcrit, 2.0 * r->block_tcrit, grade_heatmap_mid(&s->R.ref));
     img_free(&heat);
     return err ? 2 : 0;
 }

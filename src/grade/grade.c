@@ -802,16 +802,50 @@ static void paint_blocks(image *out, const grade_block *g, int ng, int w, float 
     }
 }
 
+/* The signed t of a block: its channel farthest from 0. */
+static double signed_t(const grade_block *g)
+{
+    int ch, best = 0;
+    for (ch = 1; ch < 3; ch++) if (fabs(g->t[ch]) > fabs(g->t[best])) best = ch;
+    return isfinite(g->t[best]) ? g->t[best] : copysign(1e9, g->t[best]);
+}
+
+/* The finest blocks' signed t as a tint: light (at most GRADE_HEAT_FAINT) below the limit, from
+ * 0.6 at the limit to full colour at twice the limit; blocks not judged (exact, rare) untouched. */
+#define GRADE_HEAT_FAINT 0.35f
+static void paint_t(image *out, const grade_report *r)
+{
+    int b;
+    for (b = 0; b < r->nblocks; b++) {
+        const grade_block *g = &r->blocks[b];
+        double u = fabs(signed_t(g)) / r->block_tcrit;
+        float a = (float)(u < 1.0 ? GRADE_HEAT_FAINT * u : fmin(1.0, 0.6 + 0.4 * (u - 1.0)));
+        grade_block one = *g;
+        if (g->df < 1 || g->rare || !(r->block_tcrit > 0.0) || a <= 0.0f) continue;
+        one.sign = signed_t(g) > 0 ? 1 : -1;
+        paint_blocks(out, &one, 1, r->w, a);
+    }
+}
+
+double grade_heatmap_mid(const image *ref)
+{
+    size_t p, n = (size_t)ref->w * ref->h;
+    double sum = 0.0;
+    for (p = 0; p < n; p++) sum += fmax(ref_luminance(ref, p), 0.0);
+    return n ? sum / n : 0.0;
+}
+
 int grade_heatmap(image *out, const grade_report *r, const image *ref)
 {
     size_t p;
     int k, ch;
+    double mid = grade_heatmap_mid(ref);
     if (img_alloc(out, r->w, r->h)) return 1;
-    for (p = 0; p < (size_t)r->w * r->h; p++) {
-        float Y = (float)ref_luminance(ref, p);
-        for (ch = 0; ch < 3; ch++) out->px[3 * p + ch] = 0.5f * fminf(fmaxf(Y, 0.0f), 1.0f);   /* dimmed: colours stand out */
+    for (p = 0; p < (size_t)r->w * r->h; p++) {   /* tone-mapped at the mean: a dark scene stays visible */
+        double Y = fmax(ref_luminance(ref, p), 0.0);
+        for (ch = 0; ch < 3; ch++) out->px[3 * p + ch] = (float)(0.6 * (mid > 0.0 ? Y / (Y + mid) : 0.0));
     }
     for (k = r->ncoarse - 1; k >= 0; k--) paint_blocks(out, r->coarse[k].blocks, r->coarse[k].nblocks, r->w, 0.3f);
-    paint_blocks(out, r->blocks, r->nblocks, r->w, 0.8f);
+    paint_t(out, r);
     return 0;
 }

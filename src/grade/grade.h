@@ -86,7 +86,10 @@ double grade_excess(const grade_report *r);
  * of t^2 - 1 (0 on average without bias: a chi-square's excess), and its standard deviation without
  * bias in *sd. The diagnosis asks that a mistake remove 99% of it. */
 double grade_bias_energy(const grade_report *r, double *sd);
-/* The reference in grey, with significantly brighter blocks in red and darker ones in blue (the
- * coarser scales in lighter tints under the finest). */
+/* The heatmap: the reference in grey, tone-mapped Y / (Y + mid) (mid = grade_heatmap_mid: its mean
+ * luminance shows as mid-grey, so a dark scene stays visible), each finest block tinted by its
+ * signed t (red brighter, blue darker): lightly below the limit (|t| / limit x 0.35), from 0.6 at
+ * the limit to full colour at twice it; the coarser scales' significant blocks in light tints. */
+double grade_heatmap_mid(const image *ref);
 int grade_heatmap(image *out, const grade_report *r, const image *ref);
 #endif

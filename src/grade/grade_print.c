@@ -7,6 +7,15 @@
 
 static const char *const CHANNELS[3] = {"red", "green", "blue"};
 
+/* "+1.23% +- 0.45%": the error bar to 2 significant digits, the value to the same decimal place (an
+ * error bar of 0.000012% is printed as such, not as "0.00%"). */
+static const char *pct_pm(char *s, size_t cap, double value, double se)
+{
+    int decimals = se > 0.0 ? (int)fmin(8.0, fmax(0.0, 1.0 - floor(log10(100.0 * se)))) : 0;
+    snprintf(s, cap, "%+.*f%% +- %.*f%%", decimals, 100.0 * value, decimals, 100.0 * se);
+    return s;
+}
+
 /* Channel-averaged relative difference over the groups of one sign (0: over the whole image). */
 static double relative_diff(const grade_report *r, const grade_block *g, int ng, int sign)
 {
@@ -112,12 +121,13 @@ static void print_levels(const grade_report *r)
 /* The whole-image line: the fitted relative bias per channel, and the plain mean difference. */
 static void print_image_test(const grade_report *r)
 {
+    char pm[64];
     int ch;
     if (!r->image_nfit) {
         printf("whole image: no relative-bias fit (no block has noise to weigh it: exact, or black around it)\n");
     } else {
         printf("whole image: relative bias fitted to the block means (weights ref / noise):");
-        for (ch = 0; ch < 3; ch++) printf(" %c %+.2f%% +- %.2f%%", "RGB"[ch], 100 * r->image_eps[ch], 100 * r->image_eps_se[ch]);
+        for (ch = 0; ch < 3; ch++) printf(" %c %s", "RGB"[ch], pct_pm(pm, sizeof pm, r->image_eps[ch], r->image_eps_se[ch]));
         printf("; z %+.2f %+.2f %+.2f, limits %.2f %.2f %.2f (Student %.2f at level %.2g, widened by skewness)\n", r->image_z[0],
                r->image_z[1], r->image_z[2], r->image_zlimit[0], r->image_zlimit[1], r->image_zlimit[2], r->image_zcrit, r->image_level);
     }
@@ -190,6 +200,7 @@ static int worst_fit_channel(const grade_report *r)
 
 static void print_verdict(const grade_report *r)
 {
+    char pm[64];
     long n = 3L * r->w * r->h;
     int ch, k, worst = 0;
     if (rare_pixels(r))
@@ -210,8 +221,8 @@ static void print_verdict(const grade_report *r)
     for (ch = 1; ch >= 0; ch--) print_exact_side(r, ch);
     worst = worst_fit_channel(r);
     if (fabs(r->image_z[worst]) > r->image_zlimit[worst])
-        printf("  %s over the whole image: %+.2f%% +- %.2f%% in %s (|z| %.1f > %.2f)\n", r->image_z[worst] > 0 ? "brighter" : "darker",
-               100 * r->image_eps[worst], 100 * r->image_eps_se[worst], CHANNELS[worst], fabs(r->image_z[worst]), r->image_zlimit[worst]);
+        printf("  %s over the whole image: %s in %s (|z| %.1f > %.2f)\n", r->image_z[worst] > 0 ? "brighter" : "darker",
+               pct_pm(pm, sizeof pm, r->image_eps[worst], r->image_eps_se[worst]), CHANNELS[worst], fabs(r->image_z[worst]), r->image_zlimit[worst]);
     for (ch = 0; ch < 3; ch++)
         if (r->plain_limit[ch] > 0.0 && fabs(r->plain_t[ch]) > r->plain_limit[ch]) {
             printf("  %s on the image's plain mean: %+.2f%% in %s (|t| %.1f > %.2f)\n", r->plain_t[ch] > 0 ? "brighter" : "darker",
@@ -315,21 +326,23 @@ void grade_fill_row(grade_row *row, const grade_report *r)
 
 void grade_print_row(const grade_row *row)
 {
+    char pm[64];
     if (row->status == 2) { printf("%s: UNREADABLE, %s\n", row->path, row->mistake); return; }
-    if (row->status == 0) { printf("%s: PASS (%+.2f%% +- %.2f%% in %s)\n", row->path, 100 * row->bias, 100 * row->bias_se, row->channel); return; }
+    if (row->status == 0) { printf("%s: PASS (%s in %s)\n", row->path, pct_pm(pm, sizeof pm, row->bias, row->bias_se), row->channel); return; }
     printf("%s: FAIL", row->path);
     if (row->channel[0] && row->bias_se == -2.0) printf(", %+.2f%% where significant", 100 * row->bias);
     else if (row->channel[0] && row->bias_se < 0.0) printf(", %+.2f%% on the image's mean", 100 * row->bias);
-    else if (row->channel[0]) printf(", %+.2f%% +- %.2f%% in %s", 100 * row->bias, 100 * row->bias_se, row->channel);
+    else if (row->channel[0]) printf(", %s in %s", pct_pm(pm, sizeof pm, row->bias, row->bias_se), row->channel);
     if (row->where[0]) printf(" (%s)", row->where);
     printf("%s%s\n", row->mistake[0] ? "; likely: " : "", row->mistake);
 }
 
 void grade_bias_text(char *out, size_t cap, const grade_row *r)
 {
+    char pm[64];
     out[0] = '\0';
     if (r->status == 2 || !r->channel[0]) return;
     if (r->bias_se == -2.0) snprintf(out, cap, "%+.2f%% (where significant)", 100 * r->bias);
     else if (r->bias_se < 0.0) snprintf(out, cap, "%+.2f%% (plain mean)", 100 * r->bias);
-    else snprintf(out, cap, "%+.2f%% +- %.2f%% (%s)", 100 * r->bias, 100 * r->bias_se, r->channel);
+    else snprintf(out, cap, "%s (%s)", pct_pm(pm, sizeof pm, r->bias, r->bias_se), r->channel);
 }

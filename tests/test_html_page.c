@@ -48,7 +48,8 @@ static int count(const char *text, const char *what)
 static void page_checks(const char *path, image *a, image *b, int full)
 {
     html_image im[2] = {{"alice.pfm", NULL, NULL, "alice.html"}, {"bob.pfm", NULL, NULL, NULL}}, ref = {"ref.pfm", NULL, NULL, NULL};
-    html_mark marks[2] = {{4, 4, 16, 8, "too bright: +4.2 sigma"}, {30, 20, 10, 10, "too dark <b>"}};
+    html_mark marks[3] = {{4, 4, 16, 8, "too bright: +4.2 sigma"}, {30, 20, 10, 10, "too dark <b>"},
+                          {2040, 1016, 8, 8, "too bright in the bottom-right corner: +9.9 sigma, +3.1% in red"}};
     static const char svg[] = "<svg xmlns='http://www.w3.org/2000/svg' width='4' height='3'><rect width='4' height='3' fill='red'/></svg>";
     char *uri = html_data_uri("image/svg+xml", svg, strlen(svg)), before[400], *text;
     html_page p = {"grade: alice & bob </script>", NULL, 2, NULL, NULL, 0, NULL, 2, before, "<p id=\"notes\">notes</p>"};
@@ -56,7 +57,7 @@ static void page_checks(const char *path, image *a, image *b, int full)
     free(uri);
     im[0].img = a; im[0].var = b; im[1].img = b; ref.img = a;
     p.images = im; p.ref = full ? &ref : NULL; p.marks = marks;
-    if (!full) p.nimages = 1, im[0].var = NULL;
+    if (!full) p.nimages = 1, im[0].var = NULL, p.nmarks = 3;   /* the browser's 2048x1024 page: a mark in its corner too */
     check(html_page_write(path, &p) == 0, "html_page: a page of two images, a reference, marks written", NULL);
     text = read_all(path);
     if (!check(text != NULL, "html_page: the page can be read back", NULL)) return;

@@ -60,3 +60,12 @@ graded "through a truncating .hdr decoded without the half step: fail, named" 1 
 student orbiter160.txt 256 1 "$S/centres.pfm"
 graded "pixel centres against a jittered reference: fail, --pixel-center named" 1 "^likely mistake: pixel centres against a jittered reference.*--pixel-center" \
     "$S/centres.pfm" jittered
+# its page labels a coarse block with its own size (16x16, 32x32: the scales grade printed), not
+# that size times the finest block's
+mkdir -p "$S/pages"
+$PATHLAB grade "$S/centres.pfm" --ref "$S/jittered.pfm" --pages "$S/pages" > "$TMP/out" 2>&1
+sizes=$(grep -oE '\([0-9]+x[0-9]+ blocks\)' "$S"/pages/*.html | grep -oE '[0-9]+x[0-9]+' | sort -u | tr '\n' ' ')
+scales=$(grep -oE '^  (brighter|darker) in [0-9]+ of [0-9]+ blocks of [0-9]+x[0-9]+' "$TMP/out" | grep -oE '[0-9]+x[0-9]+$' | sort -u | tr '\n' ' ')
+bad=$(for z in $sizes; do echo " $scales" | grep -q " $z " || echo "$z"; done)
+if [ -n "$sizes" ] && [ -z "$bad" ]; then pass "the page's coarse labels name the scales grade printed: $sizes"
+else fail "the page's coarse labels '$sizes' against the scales printed '$scales'"; fi

@@ -243,6 +243,7 @@
     stage.style.transform = 'translate(' + st.panX + 'px,' + st.panY + 'px) scale(' + st.zoom + ')';
     root.style.setProperty('--pl-px', (1 / st.zoom) + 'px');
     rowLine.style.top = st.row + 'px';
+    layoutLabels();
   }
   function fit() {
     var vw = view.clientWidth, vh = view.clientHeight;
@@ -253,12 +254,43 @@
   }
 
   /* The marks (grade's significant regions): outlined boxes with their labels, over the image. */
+  var labels = [];
   function buildMarks() {
     settings.marks.forEach(function (m) {
       var box = el('div', 'pl-mark', stage);
       box.style.left = m.x + 'px'; box.style.top = m.y + 'px';
       box.style.width = m.w + 'px'; box.style.height = m.h + 'px';
-      el('span', 'pl-mark-label', box, m.label);
+      box.title = m.label;
+      labels.push({ m: m, span: el('span', 'pl-mark-label', box, m.label) });
+    });
+  }
+  /* The labels inside the image and clear of each other. Each tries above its box, inside its top,
+   * below it, inside its bottom, then down the image from the top, always shifted left to end within
+   * the image; the first place that meets no label already placed wins, and a label with no such
+   * place is hidden (its box keeps the text as a tooltip). Their size follows the zoom (--pl-px),
+   * so they are placed again at every zoom. */
+  function layoutLabels() {
+    var placed = [];
+    var gap = 1 / st.zoom;   // one screen pixel between labels
+    function free(x, y, w, h) {
+      return !placed.some(function (r) { return x < r.x + r.w + gap && r.x < x + w + gap && y < r.y + r.h + gap && r.y < y + h + gap; });
+    }
+    labels.forEach(function (L) {
+      var m = L.m, s = L.span, w, h, x, y = null, k, tries;
+      s.style.display = '';
+      var b = s.getBoundingClientRect();   // on screen: divided by the zoom, in image pixels (offsetWidth rounds)
+      w = b.width / st.zoom; h = b.height / st.zoom;
+      x = Math.max(0, Math.min(m.x, W - w));
+      tries = [m.y - h, m.y, m.y + m.h, m.y + m.h - h];
+      for (k = 0; h > 0 && k * h / 2 <= H; k++) tries.push(k * h / 2);
+      for (k = 0; k < tries.length && y === null; k++) {
+        var c = Math.max(0, Math.min(tries[k], H - h));
+        if (free(x, c, w, h)) y = c;
+      }
+      if (y === null || w > W) { s.style.display = 'none'; return; }
+      placed.push({ x: x, y: y, w: w, h: h });
+      var bw = 2 / st.zoom;   // the box's border (viewer.css): the label is placed from inside it
+      s.style.left = (x - m.x - bw) + 'px'; s.style.top = (y - m.y - bw) + 'px'; s.style.bottom = 'auto';
     });
   }
 

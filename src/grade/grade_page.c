@@ -76,7 +76,7 @@ static void grade_make_marks(grade_marks *out, const grade_report *r)
             const grade_block *b = &r->coarse[s].blocks[k];
             if (!b->sign) continue;
             for (free_of_marks = 1, j = 0; j < out->n; j++) free_of_marks &= !overlaps(&out->m[j], b->x0, b->y0, b->x1, b->y1);
-            side = r->coarse[s].side * r->block;   /* in pixels */
+            side = r->coarse[s].side;   /* in pixels already */
             if (free_of_marks) add_mark(out, b->x0, b->y0, b->x1, b->y1, b, side);
         }
     for (s = 0; s < 2 && out->n < GRADE_MAX_MARKS; s++) {

@@ -217,7 +217,14 @@
   }
 
   function marksTests() {
-    check('marks: 2 regions outlined', V.marks() === 2, V.marks() + ' marks');
+    check('marks: 3 regions outlined', V.marks() === 3, V.marks() + ' marks');
+    var img = document.querySelector('.pl-main').getBoundingClientRect();
+    var rects = Array.prototype.map.call(document.querySelectorAll('.pl-mark-label'), function (e) { return e.getBoundingClientRect(); });
+    var outside = rects.filter(function (r) { return r.left < img.left - 1 || r.right > img.right + 1 || r.top < img.top - 1 || r.bottom > img.bottom + 1; });
+    var overlaps = 0;
+    rects.forEach(function (a, i) { rects.slice(i + 1).forEach(function (b) { overlaps += a.left < b.right - 0.5 && b.left < a.right - 0.5 && a.top < b.bottom - 0.5 && b.top < a.bottom - 0.5; }); });
+    check('marks: every label inside the image (one at its right edge, one at its top)', outside.length === 0 && rects.length === 3, outside.length + ' outside of ' + rects.length + ': ' + outside.map(function (r) { return [r.left, r.top, r.right, r.bottom].map(Math.round).join(','); }).join(' ') + ' image ' + [img.left, img.top, img.right, img.bottom].map(Math.round).join(','));
+    check('marks: no two labels overlap', overlaps === 0, overlaps + ' overlapping pairs');
     var labels = Array.prototype.map.call(document.querySelectorAll('.pl-mark-label'), function (e) { return e.textContent; });
     check('marks: labels shown as text (escaped): ' + labels.join(' | '), labels[1] === 'too dark <b>', labels.join(' | '));
     var link = document.querySelector('.pl-link');

@@ -1,11 +1,13 @@
-"""tests/student/box_scene.py OUT: writes OUT.obj and OUT.mtl, a Cornell-like box for the student
+"""tests/student/box_scene.py OUT [LIGHT_MM]: writes OUT.obj and OUT.mtl, a Cornell-like box for the student
 renderer's test (tests/test_student.sh): the five walls, a block that casts penumbrae, and the light
 hung 100 mm under the ceiling facing down, so that the ceiling above it sees the light's back (an
 unclamped cosine at the light gives negative light there). Every face is a quad, its front side by
-the winding (normal u x v)."""
+the winding (normal u x v). LIGHT_MM: a square light of that side, centred where the default
+130 x 105 mm one is (a small light: deep penumbrae, light found by chance by BSDF sampling)."""
 import sys
 
 out = sys.argv[1]
+side = float(sys.argv[2]) if len(sys.argv) > 2 else None
 V, F = [], []
 
 
@@ -28,7 +30,10 @@ quad("white", [x0, 0, z0], [x1 - x0, 0, 0], [0, y1, 0])
 quad("white", [x0, 0, z1], [0, y1, 0], [x1 - x0, 0, 0])
 quad("white", [x0, 0, z0], [0, y1, 0], [0, 0, z1 - z0])
 quad("white", [x1, 0, z0], [0, 0, z1 - z0], [0, y1, 0])
-quad("light", [213, 450, 227], [130, 0, 0], [0, 0, 105])   # facing down
+if side is None:
+    quad("light", [213, 450, 227], [130, 0, 0], [0, 0, 105])   # facing down
+else:
+    quad("light", [278 - side / 2, 450, 279.5 - side / 2], [side, 0, 0], [0, 0, side])
 with open(out + ".obj", "w") as f:
     f.write("mtllib %s.mtl\n" % out.split("/")[-1])
     for v in V:

@@ -69,3 +69,10 @@ scales=$(grep -oE '^  (brighter|darker) in [0-9]+ of [0-9]+ blocks of [0-9]+x[0-
 bad=$(for z in $sizes; do echo " $scales" | grep -q " $z " || echo "$z"; done)
 if [ -n "$sizes" ] && [ -z "$bad" ]; then pass "the page's coarse labels name the scales grade printed: $sizes"
 else fail "the page's coarse labels '$sizes' against the scales printed '$scales'"; fi
+# a 1024x768 grade page (image and reference) stays under 8 MB: compact, RGBE in base 85
+$PFMTOOL const 1024 768 0.5 0.25 0.125 "$S/flat1024.pfm" && cp "$S/flat1024.pfm" "$S/flat1024_img.pfm"
+mkdir -p "$S/bigpages"
+$PATHLAB grade "$S/flat1024_img.pfm" --ref "$S/flat1024.pfm" --pages "$S/bigpages" > /dev/null 2>&1
+size=$(stat -c %s "$S/bigpages/flat1024_img.html" 2>/dev/null || echo 0)
+if [ "$size" -gt 0 ] && [ "$size" -le 8000000 ]; then pass "a 1024x768 grade page: $size bytes (<= 8 MB)"
+else fail "a 1024x768 grade page: $size bytes (wanted 1 to 8,000,000)"; fi

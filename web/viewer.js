@@ -6,7 +6,8 @@
  *     each image is {name, link, rgb: id, sd: id or null}
  *   <script type="application/octet-stream" id="pathlab-rgb-N">  base64 of little-endian half floats,
  *     3 per pixel (R, G, B), row 0 = the top row; "pathlab-sd-N" the standard deviation of each
- *     pixel's mean (the square root of pathlab's variance image), for the probe's z-score.
+ *     pixel's mean (the square root of pathlab's variance image), for the probe's z-score. A compact
+ *     page (enc "rgbe85": grade's pages of large images) holds RGBE pixels in base 85 and no sd.
  *
  * The images are decoded once into Float32Arrays; the canvas is redrawn (one ImageData) only when
  * something that changes its pixels changes (exposure, gamma, mode, image, channels, split). Zoom and
@@ -41,8 +42,32 @@
     for (var i = 0; i < n; i++) out[i] = HALF[bin.charCodeAt(2 * i) | (bin.charCodeAt(2 * i + 1) << 8)];
     return out;
   }
+  /* A compact page's image (src/image/html_page.c, max_bytes): RGBE pixels, 4 bytes each (big-endian)
+   * as 5 base-85 digits of B85; read as (m + 0.5) 2^(e - 136), Ward's centring. Line breaks skipped. */
+  var B85 = "#$%'()*+,-./0123456789:;=?@ABCDEFGHIJKLMNOPQRSTUVWXYZ[]^_`abcdefghijklmnopqrstuvwxyz{";
+  var DIGIT = new Int16Array(128).fill(-1), EXP = new Float32Array(256);
+  for (var d = 0; d < 85; d++) DIGIT[B85.charCodeAt(d)] = d;
+  for (var e = 1; e < 256; e++) EXP[e] = Math.pow(2, e - 136);
+  function decodeRgbe85(id) {
+    var block = document.getElementById(id), text = block.textContent, out = new Float32Array(3 * N);
+    var w = 0, nd = 0, p = 0;
+    block.remove();
+    for (var i = 0; i < text.length && p < N; i++) {
+      var v = DIGIT[text.charCodeAt(i) & 127];
+      if (v < 0) continue;
+      w = w * 85 + v;
+      if (++nd < 5) continue;
+      var ex = w % 256, f = EXP[ex];
+      out[3 * p] = ex ? (Math.floor(w / 16777216) + 0.5) * f : 0;
+      out[3 * p + 1] = ex ? (Math.floor(w / 65536) % 256 + 0.5) * f : 0;
+      out[3 * p + 2] = ex ? (Math.floor(w / 256) % 256 + 0.5) * f : 0;
+      p++; w = 0; nd = 0;
+    }
+    return out;
+  }
   function load(desc) {
-    return desc ? { name: desc.name, link: desc.link, rgb: decode(desc.rgb), sd: decode(desc.sd) } : null;
+    if (!desc) return null;
+    return { name: desc.name, link: desc.link, rgb: desc.enc === 'rgbe85' ? decodeRgbe85(desc.rgb) : decode(desc.rgb), sd: decode(desc.sd) };
   }
   var images = settings.images.map(load);
   var ref = load(settings.ref);

@@ -216,7 +216,21 @@
     check('2048x1024: one redraw (exposure changed) in ' + t.toFixed(0) + ' ms (bound 1000 ms)', t < 1000, t.toFixed(0) + ' ms');
   }
 
+  /* The compact page (RGBE in base 85): its values within half an RGBE step (1/512 of 2^e, the
+   * largest channel in [2^(e-1), 2^e)) of test_html_page's pattern, at a few pixels. */
+  function compactTests() {
+    var worst = 0;
+    [[0, 0], [7, 3], [100, 200], [2047, 1023], [1500, 77]].forEach(function (xy) {
+      var v = V.probe(xy[0], xy[1]).value, want = [0, 1, 2].map(function (c) {
+        return Math.pow(10, 3 * Math.sin(0.01 * xy[0] + c) * Math.cos(0.013 * xy[1]));
+      }), top = Math.max.apply(null, want);
+      want.forEach(function (w, c) { worst = Math.max(worst, Math.abs(v[c] - w) / top); });
+    });
+    check('compact page: values within half an RGBE step of the largest channel (worst ' + worst.toExponential(2) + ')', worst <= 1 / 256, worst);
+  }
+
   function marksTests() {
+    compactTests();
     check('marks: 3 regions outlined', V.marks() === 3, V.marks() + ' marks');
     var img = document.querySelector('.pl-main').getBoundingClientRect();
     var rects = Array.prototype.map.call(document.querySelectorAll('.pl-mark-label'), function (e) { return e.getBoundingClientRect(); });

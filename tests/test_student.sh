@@ -4,7 +4,8 @@
 # truncating RGBE writer as gKit's) renders the box of tests/student/box_scene.py through a gKit
 # orbiter file; pathlab renders the reference (--bounces 0:1, --pixel-center, independent samples,
 # --variance) and grades:
-#   honest, PFM (2 seeds) and .hdr: pass          no 1/pi: fail, pi named
+#   honest, PFM (2 seeds) and .hdr: pass          no 1/pi (PFM and .hdr): fail, pi named
+#   a flat .hdr against a flat reference: pass, 2% off: fail (RGBE quantisation in the tolerance)
 #   no cosine at the light: fail                  unclamped cosine at the light: exit 2, explained
 #   through a truncating .hdr decoded without the half step: fail, named
 #   pixel centres against a jittered reference (160x120): fail, --pixel-center named
@@ -48,6 +49,21 @@ if $PATHLAB convert "$S/honest.hdr" "$S/honest_hdr.pfm" > /dev/null 2>&1; then
 else
     fail "pathlab does not read the student's .hdr: $($PATHLAB convert "$S/honest.hdr" "$S/x.pfm" 2>&1 | head -c 200)"
 fi
+student orbiter.txt 128 8 "$S/nopi.hdr" no-pi
+graded "no 1/pi, written as .hdr: fail, pi named" 1 "^likely mistake: pi times the reference" "$S/nopi.hdr"
+# a flat .hdr against a flat reference (every pixel exact): within half an RGBE step it passes, 2% off
+# it fails (the student's truncating encoder, in python)
+python3 - "$S/flat.hdr" "$S/flat_bright.hdr" <<'PY'
+import math, sys
+for path, gain in zip(sys.argv[1:], (1.0, 1.02)):
+    v = [0.3 * gain, 0.2 * gain, 0.1 * gain]
+    m, e = math.frexp(max(v))
+    px = bytes([int(c * 256 / 2 ** e) for c in v] + [e + 128])
+    open(path, "wb").write(b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 64 +X 64\n" + px * 4096)
+PY
+$PFMTOOL const 64 64 0.3 0.2 0.1 "$S/flat.pfm"
+graded "a flat .hdr, every pixel exact: pass (half an RGBE step allowed)" 0 "" "$S/flat.hdr" flat
+graded "a flat .hdr 2% too bright: fail" 1 "" "$S/flat_bright.hdr" flat
 student orbiter.txt 128 4 "$S/nopi.pfm" no-pi
 graded "no 1/pi: fail, pi named" 1 "^likely mistake: pi times the reference" "$S/nopi.pfm"
 student orbiter.txt 128 5 "$S/nocos.pfm" no-light-cos

@@ -9,6 +9,7 @@
 #include "grade/grade_print.h"
 #include "grade/page_paths.h"
 #include "grade/reference.h"
+#include "image/linear_file.h"
 #include "util/path.h"
 
 #define GRADE_MAX_HYP 6
@@ -32,10 +33,10 @@ static void heatmap_path(char *out, size_t cap, const grade_job *j, const char *
 
 /* The likely mistakes of a failing image: printed in full (one image, or --details) and joined into
  * the row. */
-static int diagnose(grade_row *row, const image *img, const run *s, double excess, grade_hypothesis *h, int *nh)
+static int diagnose(grade_row *row, const image *img, const run *s, const grade_opts *o, double excess, grade_hypothesis *h, int *nh)
 {
     const grade_reference *R = &s->R;
-    int n = *nh = grade_diagnose(img, &R->refs, &s->job.o, excess, h, GRADE_MAX_HYP), k;
+    int n = *nh = grade_diagnose(img, &R->refs, o, excess, h, GRADE_MAX_HYP), k;
     size_t used = 0;
     if (n < 0) { fprintf(stderr, "pathlab grade: out of memory\n"); *nh = 0; return 2; }
     if (s->loud) grade_print_hypotheses(h, n);
@@ -87,23 +88,27 @@ static int grade_one(grade_row *row, const run *s, const char *path, int same_na
 {
     const grade_job *j = &s->job;
     grade_hypothesis h[GRADE_MAX_HYP];
-    image img;
+    image img, steps = {0, 0, NULL};
     grade_report r;
+    grade_opts o = j->o;
     int rc, nh = 0;
     memset(row, 0, sizeof *row);
     row->path = path;
     rc = grade_read_image(&img, row, &s->R.refs, j->ref);
     if (rc && s->loud && j->nimages == 1) grade_print_row(row);
     if (rc) return row->status = rc;
-    if (grade_compute(&r, &img, &s->R.ref, s->R.refs.var, &j->o)) {
+    if (img_is_rgbe(path)) o.step = &steps;   /* RGBE: its quantisation is part of its noise */
+    if ((o.step && grade_rgbe_steps(&steps, &img)) || grade_compute(&r, &img, &s->R.ref, s->R.refs.var, &o)) {
         fprintf(stderr, "pathlab grade: out of memory\n");
         img_free(&img);
+        img_free(&steps);
         return row->status = 2;
     }
-    if (s->loud) grade_print_report(&r, row->path, j->ref, &j->o);
+    if (s->loud) grade_print_report(&r, row->path, j->ref, &o);
     grade_fill_row(row, &r);
     row->status = grade_failed(&r);
-    if (row->status == 1 && diagnose(row, &img, s, grade_excess(&r), h, &nh)) row->status = 2;
+    if (row->status == 1 && diagnose(row, &img, s, &o, grade_excess(&r), h, &nh)) row->status = 2;
+    img_free(&steps);
     if (write_heatmap(&r, s, row->path) || write_page(row, &r, &img, s, h, nh, same_name)) row->status = 2;
     grade_free(&r);
     if (keep && row->status < 2) { *keep = img; img.px = NULL; }

@@ -233,7 +233,7 @@ static int floor_var(image *out, const grade_report *r, const image *var)
 }
 
 /* Compares the exact pixels as numbers; keeps the worst miss (largest |d| relative to the limit). */
-static void test_exact(grade_report *r, const image *img, const image *ref)
+static void test_exact(grade_report *r, const image *img, const image *ref, const image *step)
 {
     size_t p, n = (size_t)r->w * r->h;
     double mean = 0.0, worst = 1.0;
@@ -246,7 +246,7 @@ static void test_exact(grade_report *r, const image *img, const image *ref)
         r->nexact++;
         for (ch = 0; ch < 3; ch++) {
             double a = img->px[3 * p + ch], b = ref->px[3 * p + ch];
-            e = fabs(a - b) / (GRADE_EXACT_REL * fabs(b) + GRADE_EXACT_ABS * mean + 1e-30);
+            e = fabs(a - b) / (GRADE_EXACT_REL * fabs(b) + GRADE_EXACT_ABS * mean + 1e-30 + (step ? 0.5 * step->px[3 * p + ch] : 0.0));
             if (e > excess) { excess = e; side = a > b; }
         }
         if (excess <= 1.0) continue;
@@ -305,6 +305,7 @@ static void group_stats(const grade_report *r, grade_block *g, int ng, const int
             g[id[p]].ref[ch] += b;
             g[id[p]].round[ch] += GRADE_ROUNDING * (fabs(a) + fabs(b));
             if (var) g[id[p]].floor[ch] += r->floor_k[ch] * var->px[3 * p + ch];
+            if (r->step) g[id[p]].quant[ch] += r->step->px[3 * p + ch] * r->step->px[3 * p + ch] / 12.0;
         }
     }
     for (k = 0; k < ng; k++)
@@ -313,6 +314,7 @@ static void group_stats(const grade_report *r, grade_block *g, int ng, const int
             g[k].ref[ch] /= g[k].n;
             g[k].round[ch] /= g[k].n;
             g[k].floor[ch] /= (double)g[k].n * g[k].n;
+            g[k].quant[ch] /= (double)g[k].n * g[k].n;
         }
     for (p = 0; p < n; p++)
         for (ch = 0; ch < 3 && id[p] >= 0; ch++) {
@@ -409,7 +411,7 @@ static double block_noise(const grade_report *r, int bx, int by, int ch)
 {
     const grade_block *b = &r->blocks[by * r->nbx + bx];
     double var = fmax(b->var[ch], pooled_var(r, bx, by, ch, 1));
-    return b->n > 0 ? fmax(var / b->n, b->floor[ch]) + b->round[ch] * b->round[ch] : 0.0;
+    return b->n > 0 ? fmax(var / b->n, b->floor[ch]) + b->quant[ch] + b->round[ch] * b->round[ch] : 0.0;
 }
 
 static void test_blocks(grade_report *r, const image *img, const image *ref, const image *var, int *id)
@@ -489,7 +491,7 @@ static void test_coarse(grade_report *r, const image *img, const image *ref, con
             grade_block *g = &s->blocks[b];
             for (ch = 0; ch < 3; ch++) {
                 double v = fmax(g->var[ch], pooled_in(s->blocks, s->nbx, s->nby, b % s->nbx, b / s->nbx, ch, 1));
-                g->noise[ch] = g->n > 0 ? fmax(v / g->n, g->floor[ch]) + g->round[ch] * g->round[ch] : 0.0;
+                g->noise[ch] = g->n > 0 ? fmax(v / g->n, g->floor[ch]) + g->quant[ch] + g->round[ch] * g->round[ch] : 0.0;
             }
             judge_group(g, s->level, &memo, &(double){0.0}, &s->excess);
             s->brighter += g->sign > 0;
@@ -539,7 +541,7 @@ static void test_levels(grade_report *r, const image *img, const image *ref, con
     for (k = 0; k < GRADE_LEVELS; k++) {
         grade_block *g = &r->levels[k];
         for (ch = 0; ch < 3; ch++)
-            g->noise[ch] = g->n > 0 ? fmax(g->var[ch] / g->n, g->floor[ch]) + g->round[ch] * g->round[ch] : 0.0;
+            g->noise[ch] = g->n > 0 ? fmax(g->var[ch] / g->n, g->floor[ch]) + g->quant[ch] + g->round[ch] * g->round[ch] : 0.0;
         judge_group(g, r->level_level, &memo, &r->level_tmax, &r->level_excess);
         r->level_brighter += g->sign > 0;
         r->level_darker += g->sign < 0;
@@ -709,6 +711,7 @@ int grade_compute(grade_report *r, const image *img, const image *ref, const ima
     if (img->w != ref->w || img->h != ref->h) return 1;
     if (ref_var && (ref_var->w != ref->w || ref_var->h != ref->h)) return 1;
     r->alpha = o->alpha;
+    r->step = o->step && o->step->w == img->w && o->step->h == img->h ? o->step : NULL;
     r->w = img->w;
     r->h = img->h;
     choose_blocks(r, o);
@@ -724,7 +727,7 @@ int grade_compute(grade_report *r, const image *img, const image *ref, const ima
         grade_free(r);
         return 1;
     }
-    test_exact(r, img, ref);
+    test_exact(r, img, ref, o->step);
     if (ref_var && (floor_scale(r, img, ref, ref_var) || floor_var(&vf, r, ref_var))) { free(id); grade_free(r); return 1; }
     test_blocks(r, img, ref, ref_var ? &vf : NULL, id);
     test_coarse(r, img, ref, ref_var ? &vf : NULL, id);
@@ -768,6 +771,19 @@ double grade_excess(const grade_report *r)
     for (ch = 0; ch < 3; ch++) e = fmax(e, fabs(r->image_z[ch]) / r->image_zlimit[ch]);
     for (ch = 0; ch < 3; ch++) if (r->plain_limit[ch] > 0.0) e = fmax(e, fabs(r->plain_t[ch]) / r->plain_limit[ch]);
     return e;
+}
+
+int grade_rgbe_steps(image *steps, const image *img)
+{
+    size_t p;
+    int ch, e;
+    if (img_alloc(steps, img->w, img->h)) return 1;
+    for (p = 0; p < (size_t)img->w * img->h; p++) {
+        double m = fmax(img->px[3 * p], fmax(img->px[3 * p + 1], img->px[3 * p + 2]));
+        frexp(m, &e);
+        for (ch = 0; ch < 3; ch++) steps->px[3 * p + ch] = m > 0.0 ? (float)ldexp(1.0, e - 8) : 0.0f;
+    }
+    return 0;
 }
 
 double grade_bias_energy(const grade_report *r, double *sd)

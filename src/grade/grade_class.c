@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include "image/linear_file.h"
 #include "image/radiance.h"
 #include "sys/output_path.h"
 #include "util/textfile.h"
@@ -112,7 +113,7 @@ static int wrong_size(grade_row *row, const image *img, const grade_refs *refs, 
 int grade_read_image(image *img, grade_row *row, const grade_refs *refs, const char *ref_path)
 {
     img_pfm_info info;
-    if (img_read_pfm_info(img, row->path, &info)) {
+    if (img_read_linear(img, row->path, &info)) {
         snprintf(row->mistake, sizeof row->mistake, "not a readable PFM: missing, byte order, header line ends, truncated or "
                  "trailing bytes (pathlab's message on stderr says which)");
         return row->status = 2;

@@ -163,6 +163,9 @@ static void print_tests(const grade_report *r, const char *image, const char *re
     if (r->floor_k[0] > 0.0)
         printf("noise floor: at least %.3g %.3g %.3g x the reference's variance per pixel (robust fit; guards rare-event noise)\n",
                r->floor_k[0], r->floor_k[1], r->floor_k[2]);
+    if (r->step)
+        printf("RGBE (.hdr): its quantisation, a uniform error of one step per channel (step^2 / 12), added to the noise; exact "
+               "pixels allowed half a step\n");
     if (r->pixel_test)
         printf("pixels (information only, not in the verdict; assumes the reference's estimator at %d spp): "
                "%ld of %ld pixel-channels beyond |z| %.2f\n", o->spp, r->pixel_fail, r->pixel_n, r->pixel_zcrit);

@@ -1,5 +1,6 @@
 /* reference.c — the reference, its variance, its layers and its sidecar read (reference.h). */
 #include "grade/reference.h"
+#include "image/linear_file.h"
 #include <stdio.h>
 #include <string.h>
 #include "files/render_files.h"
@@ -51,7 +52,7 @@ int grade_reference_read(grade_reference *R, const char *path, const char *var, 
     size_t stem = path_ends_with(path, ".pfm") ? strlen(path) - 4 : strlen(path);
     img_pfm_info info;
     memset(R, 0, sizeof *R);
-    if (img_read_pfm_info(&R->ref, path, &info)) return 2;
+    if (img_read_linear(&R->ref, path, &info)) return 2;
     R->refs.ref = &R->ref;
     R->refs.channels = info.channels;
     R->has_meta = sidecar_read(&R->meta, path) == 0;

@@ -4,7 +4,7 @@
 # truncating RGBE writer as gKit's) renders the box of tests/student/box_scene.py through a gKit
 # orbiter file; pathlab renders the reference (--bounces 0:1, --pixel-center, independent samples,
 # --variance) and grades:
-#   honest, PFM (2 seeds) and .hdr: pass          no 1/pi (PFM and .hdr): fail, pi named
+#   honest, PFM (2 seeds) and .hdr: pass          no 1/pi (PFM, .hdr, 3 hot pixels added): fail, pi named
 #   a flat .hdr against a flat reference: pass, 2% off: fail (RGBE quantisation in the tolerance)
 #   no cosine at the light: fail                  unclamped cosine at the light: exit 2, explained
 #   through a truncating .hdr decoded without the half step: fail, named
@@ -66,6 +66,16 @@ graded "a flat .hdr, every pixel exact: pass (half an RGBE step allowed)" 0 "" "
 graded "a flat .hdr 2% too bright: fail" 1 "" "$S/flat_bright.hdr" flat
 student orbiter.txt 128 4 "$S/nopi.pfm" no-pi
 graded "no 1/pi: fail, pi named" 1 "^likely mistake: pi times the reference" "$S/nopi.pfm"
+# ... with 3 hot pixels (other reasons): pi still named, once they are left out
+python3 - "$S/nopi.pfm" "$S/nopi_hot.pfm" <<'PY'
+import struct, sys
+d = open(sys.argv[1], "rb").read(); head = d[:d.index(b"-1.0\n") + 5]
+px = list(struct.unpack("<%df" % ((len(d) - len(head)) // 4), d[len(head):]))
+for x, y in ((5, 5), (30, 20), (50, 40)):
+    px[3 * (y * 64 + x):3 * (y * 64 + x) + 3] = [50.0] * 3
+open(sys.argv[2], "wb").write(head + struct.pack("<%df" % len(px), *px))
+PY
+graded "no 1/pi and 3 hot pixels: fail, pi named once they are left out" 1 "^likely mistake: pi times the reference" "$S/nopi_hot.pfm"
 student orbiter.txt 128 5 "$S/nocos.pfm" no-light-cos
 graded "no cosine at the light: fail" 1 "" "$S/nocos.pfm"
 student orbiter.txt 128 6 "$S/unclamped.pfm" unclamped

@@ -18,6 +18,15 @@
 #     spp, estimators default, brdf, light and cosine, 2 seeds each (160 images); graded against
 #     ref/NAME.pfm. They count in the overall false-alarm line and the exit status.
 #
+# (d) Penumbrae and small lights: the box of tests/student/ (a block's penumbrae, the light hung under
+#     the ceiling) with its light (130 x 105 mm) and with a 20 mm one, 64x48, against pathlab references
+#     rendered here (--bounces 0:1 --pixel-center, 4096 spp, --variance: black pixels with rare light
+#     around them): honest images of the student renderer (tests/student/student_render.c: pixel
+#     centres, direct light) at 16, 64 and 256 spp and of pathlab --direct brdf (light found by chance)
+#     at 16 and 64 spp; and a real 1024x768 case, the box against a 1024-spp reference, the student's
+#     images at 128 spp (4 seeds). They count in the overall line and the exit status.
+#     CALIB_PARTS=d runs (d) alone (any of a b c d; default all): measured on 2 cores shared with
+#     other work, about 25 minutes with an empty cache, most of it the 1024x768 reference.
 # Honest renders are cached in $CALIB_DIR (default /tmp/pathlab-calib), named by size, spp,
 # estimator and seed: a rerun after a change to grade only re-grades. CALIB_FAST=1: a smoke test
 # (fewer spp, estimators and images; 40 + 40 images; about 1.5 minutes on 2 cores with an empty cache,
@@ -45,6 +54,8 @@ done
 [ -x "$PATHLAB" ] || { echo "grade_calibration.sh: $PATHLAB missing (make)" >&2; exit 2; }
 t_start=$(date +%s)
 : > "$WORK/render_times"
+# part X: 0 if section X runs (CALIB_PARTS, default abcd); a skipped section leaves its table empty
+part() { case "${CALIB_PARTS:-abcd}" in *"$1"*) return 0 ;; esac; return 1; }
 
 # Estimators, label=flags (the label names the cache files)
 ESTIMATORS=(
@@ -104,8 +115,9 @@ grade() {
 
 # ---- (a) false alarms -------------------------------------------------------------------------
 FA="$WORK/fa.tsv"     # size spp label seed rc verdict
+: > "$FA"
 seed=200000
-for size in 64 128; do
+for size in $(part a && echo 64 128); do
     ref=$(ref_of $size)
     for spp in $FA_SPP; do
         nest=$FA_NEST
@@ -124,8 +136,9 @@ done
 # ---- (b) power --------------------------------------------------------------------------------
 PW="$WORK/power.tsv"  # size spp region bias fails n
 PWSUM="$WORK/power_summary.tsv"   # size spp region smallest-bias n
+: > "$PW"; : > "$PWSUM"
 seed=300000
-for size in 64 128; do
+for size in $(part b && echo 64 128); do
     ref=$(ref_of $size)
     for spp in $PW_SPP; do
         n=$PW_N
@@ -160,7 +173,7 @@ done
 OT="$WORK/other.tsv"  # scene spp label seed rc verdict
 : > "$OT"
 seed=400000
-for SCENE in $OTHER_SCENES; do
+for SCENE in $(part c && echo $OTHER_SCENES); do
     for spp in $OT_SPP; do
         for ((e = 0; e < ${#OT_ESTIMATORS[@]}; e++)); do
             label=${OT_ESTIMATORS[$e]%%=*} flags=${OT_ESTIMATORS[$e]#*=}
@@ -175,6 +188,53 @@ for SCENE in $OTHER_SCENES; do
     echo "other scenes: $SCENE graded ($(($(date +%s) - t_start)) s so far)" >&2
 done
 SCENE=cornell
+
+# ---- (d) penumbrae and small lights: the student renderer's box --------------------------------
+ST="$DIR/student"
+mkdir -p "$ST"
+# box_ref NAME W H SPP: the reference NAME-WxH.pfm of the box NAME (its variance beside it), cached
+box_ref() {
+    local f="$ST/$1-$2x$3.pfm"
+    printf 'c 278 274.4 279.6\np 0 0\nr 0 180\ns 1079.6 600\nf 39.3 %s %s\n' "$2" "$3" > "$ST/orbiter-$2x$3.txt"
+    [ -s "$f" ] || $PATHLAB render "$ST/$1.obj" --orbiter "$ST/orbiter-$2x$3.txt" --bounces 0:1 --pixel-center --sampler independent \
+        --spp "$4" --seed 99 --quiet -o "$f" --variance "$ST/$1-$2x$3_var.pfm" >&2 || exit 2
+    echo "$f"
+}
+# box_honest NAME W H SPP KIND SEED: an honest image of the box, cached (student: tests/student/student_render.c;
+# brdf: pathlab --direct brdf)
+box_honest() {
+    local f="$ST/$1-$2x$3-$5-spp$4-seed$6.pfm"
+    if [ ! -s "$f" ]; then
+        if [ "$5" = student ]; then "$ST/render" "$ST/$1.obj" "$ST/orbiter-$2x$3.txt" "$4" "$6" "$f" >&2 || exit 2
+        else $PATHLAB render "$ST/$1.obj" --orbiter "$ST/orbiter-$2x$3.txt" --bounces 0:1 --pixel-center --sampler independent \
+                 --direct brdf --spp "$4" --seed "$6" --quiet -o "$f" >&2 || exit 2; fi
+    fi
+    echo "$f"
+}
+if part d; then
+    ${CC:-cc} -std=c99 -D_DEFAULT_SOURCE -O2 -o "$ST/render" tests/student/student_render.c -lm || exit 2
+    python3 tests/student/box_scene.py "$ST/box" && python3 tests/student/box_scene.py "$ST/small" 20 || exit 2
+    if [ "$FAST" != 0 ]; then ST_SEEDS=2; ST_BIG_SEEDS=1; else ST_SEEDS=10; ST_BIG_SEEDS=4; fi
+    seed=500000
+    for box in box small; do
+        ref=$(box_ref "$box" 64 48 4096) || exit 2
+        for kind_spp in student:16 student:64 student:256 brdf:16 brdf:64; do
+            for ((i = 0; i < ST_SEEDS; i++)); do
+                seed=$((seed + 1))
+                img=$(box_honest "$box" 64 48 "${kind_spp#*:}" "${kind_spp%%:*}" "$seed") || exit 2
+                printf '%s\t%s\t%s\t%s\t%s\n' "$box-64x48" "${kind_spp#*:}" "${kind_spp%%:*}" "$seed" "$(grade "$img" "$ref")" >> "$OT"
+            done
+        done
+        echo "penumbrae: $box graded ($(($(date +%s) - t_start)) s so far)" >&2
+    done
+    t_big=$(date +%s)
+    ref=$(box_ref box 1024 768 1024) || exit 2
+    for ((i = 0; i < ST_BIG_SEEDS; i++)); do
+        img=$(box_honest box 1024 768 128 student $((600000 + i))) || exit 2
+        printf '%s\t%s\t%s\t%s\t%s\n' "box-1024x768" 128 student $((600000 + i)) "$(grade "$img" "$ref")" >> "$OT"
+    done
+    echo "penumbrae: 1024x768 graded in $(($(date +%s) - t_big)) s ($(($(date +%s) - t_start)) s so far)" >&2
+fi
 t_total=$(($(date +%s) - t_start))
 t_render=$(awk '{ s += $1 } END { printf "%.0f", s }' "$WORK/render_times")
 
@@ -248,7 +308,7 @@ print("Estimators: default = --direct mis-power --light area --dir brdf --rr 3; 
       " light-sa = --direct light --light solid-angle; solid-angle, triangle, power = --light X; cosine, uniform = --dir X;"
       " rr-off = --rr off; rr1-light-sa-cos = --rr 1 --direct light --light solid-angle --dir cosine.")
 print()
-print("### Other scenes (64x64, against ref/NAME.pfm)")
+print("### Other scenes (64x64 against ref/NAME.pfm; box, small: the student renderer's box, its light and a 20 mm one, against references rendered here)")
 print()
 ospp = sorted(set(r[1] for r in orows), key=int)
 oscenes = list(collections.OrderedDict.fromkeys(r[0] for r in orows))
@@ -275,8 +335,8 @@ if ofails:
     for r in ofails:
         print("- %s 64x64, %s spp, %s, seed %s: exit %s: %s" % (r[0], r[1], r[2], r[3], r[4], r[5]))
     print()
-print("Estimators: default, brdf = --direct brdf, light = --direct light, cosine = --dir cosine; %s seed(s) each."
-      % (len(orows) // max(len(oscenes) * len(ospp) * 4, 1)))
+print("Estimators: default, brdf = --direct brdf, light = --direct light, cosine = --dir cosine; student = tests/student/student_render.c"
+      " (pixel centres, direct light); the box's references: --bounces 0:1 --pixel-center, 4096 spp at 64x48, 1024 spp at 1024x768.")
 print()
 print("## Power: the smallest relative bias that >= 90% of the images fail")
 print()

@@ -176,6 +176,40 @@ static void lamp(void)
     img_free(&ref);
 }
 
+/* A deep penumbra: the right half black and of variance 0 in the reference, the left half lit by
+ * a few hits per pixel (m^2 / var = 2) or, the second time, lit with no noise at all (a hard shadow
+ * beside a deterministic region). An honest image that found the light once at x 36 in the black
+ * half: in the penumbra that is a rare event, not a missed exact pixel (pass); beside the
+ * noise-free region the black pixel is exact and the hit a miss (fail). */
+static void penumbra(void)
+{
+    grade_opts o = {0.01, 0, 0, 0, 0};
+    image ref, im, var;
+    grade_report r;
+    int p, hard;
+    for (hard = 0; hard < 2; hard++) {
+        img_alloc(&ref, 64, 64);
+        img_alloc(&var, 64, 64);
+        for (p = 0; p < 3 * 64 * 64; p++) {
+            int x = p / 3 % 64;
+            ref.px[p] = x < 32 ? 0.5f + 0.001f * x : 0.0f;
+            var.px[p] = x < 32 ? (hard ? 1e-12f : 0.125f) : 0.0f;
+        }
+        img_alloc(&im, 64, 64);
+        memcpy(im.px, ref.px, 3 * 64 * 64 * sizeof(float));
+        for (p = 0; p < 3; p++) im.px[3 * (32 * 64 + 36) + p] = 0.3f;
+        grade_compute(&r, &im, &ref, &var, &o);
+        check(grade_failed(&r) == hard && (hard ? r.exact_fail == 1 : r.black_rare > 0),
+              hard ? "a black pixel beside noise-free light is exact" : "a black pixel in a penumbra is not exact",
+              "%s; %ld exact, %ld missed, %ld black flat pixels judged as rare events", grade_failed(&r) ? "FAIL" : "PASS",
+              r.nexact, r.exact_fail, r.black_rare);
+        grade_free(&r);
+        img_free(&im);
+        img_free(&var);
+        img_free(&ref);
+    }
+}
+
 /* The class row names the channel farthest past its own limit: limits differ by channel (each is
  * widened by its skewness), so the largest |z| (red: 4.5 < 4.82) is not the failing one (green:
  * 4.2 > 4.13). A regression: the row and the verdict line once followed the largest |z|. */
@@ -205,5 +239,6 @@ int main(void)
     quadrant(1.2, 1);
     quadrant(0.8, -1);
     lamp();
+    penumbra();
     return check_summary();
 }

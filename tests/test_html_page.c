@@ -48,15 +48,17 @@ static int count(const char *text, const char *what)
 static void page_checks(const char *path, image *a, image *b, int full)
 {
     html_image im[2] = {{"alice.pfm", NULL, NULL, "alice.html"}, {"bob.pfm", NULL, NULL, NULL}}, ref = {"ref.pfm", NULL, NULL, NULL};
-    html_mark marks[2] = {{4, 4, 16, 8, "too bright: +4.2 sigma"}, {30, 20, 10, 10, "too dark <b>"}};
+    html_mark marks[3] = {{4, 4, 16, 8, "too bright: +4.2 sigma"}, {30, 20, 10, 10, "too dark <b>"},
+                          {2040, 1016, 8, 8, "too bright in the bottom-right corner: +9.9 sigma, +3.1% in red"}};
     static const char svg[] = "<svg xmlns='http://www.w3.org/2000/svg' width='4' height='3'><rect width='4' height='3' fill='red'/></svg>";
     char *uri = html_data_uri("image/svg+xml", svg, strlen(svg)), before[400], *text;
-    html_page p = {"grade: alice & bob </script>", NULL, 2, NULL, NULL, 0, NULL, 2, before, "<p id=\"notes\">notes</p>"};
+    html_page p = {"grade: alice & bob </script>", NULL, 2, NULL, NULL, 0, NULL, 2, before, "<p id=\"notes\">notes</p>", 0};
     snprintf(before, sizeof before, "<p id=\"verdict\">verdict <img id=\"data-image\" alt=\"\" src=\"%s\"></p>", uri ? uri : "");
     free(uri);
     im[0].img = a; im[0].var = b; im[1].img = b; ref.img = a;
     p.images = im; p.ref = full ? &ref : NULL; p.marks = marks;
-    if (!full) p.nimages = 1, im[0].var = NULL;
+    if (!full) p.nimages = 1, p.nmarks = 3;   /* the browser's 2048x1024 page: a mark in its corner too */
+    if (!full) p.max_bytes = 1000;           /* ... and compact: RGBE in base 85, the variance left out */
     check(html_page_write(path, &p) == 0, "html_page: a page of two images, a reference, marks written", NULL);
     text = read_all(path);
     if (!check(text != NULL, "html_page: the page can be read back", NULL)) return;
@@ -67,6 +69,8 @@ static void page_checks(const char *path, image *a, image *b, int full)
     check(!strstr(text, "http://") && !strstr(text, "https://"), "html_page: no http(s) URL in the page", NULL);
     check(strstr(text, "\"label\":\"too dark \\u003cb\\u003e\"") != NULL, "html_page: a mark's label escaped in the JSON", NULL);
     check(strstr(text, "window.pathlabViewer") != NULL, "html_page: the viewer's script embedded", NULL);
+    check(count(text, full ? "\"enc\":\"half\"" : "\"enc\":\"rgbe85\"") == (full ? 3 : 1) && (full || !strstr(text, "id=\"pathlab-sd-")),
+          full ? "html_page: half floats within max_bytes" : "html_page: compact beyond max_bytes: RGBE in base 85, no variance", NULL);
     free(text);
 }
 
@@ -75,7 +79,7 @@ int main(int argc, char **argv)
     image a, b, c, big;
     char *e = html_escape("a<b & \"c\" 'd'>"), dir[] = "/tmp/pathlab_html_XXXXXX", path[4200];
     html_image one[2] = {{"a.pfm", NULL, NULL, NULL}, {"c.pfm", NULL, NULL, NULL}};
-    html_page p = {"t", NULL, 2, NULL, NULL, 0, NULL, 0, NULL, NULL};
+    html_page p = {"t", NULL, 2, NULL, NULL, 0, NULL, 0, NULL, NULL, 0};
     check(e && !strcmp(e, "a&lt;b &amp; &quot;c&quot; &#39;d&#39;&gt;"), "html_escape: & < > \" ' escaped", "%s", e ? e : "NULL");
     free(e);
     e = html_data_uri("image/png", "abcab", 5);

@@ -6,7 +6,8 @@
  *     each image is {name, link, rgb: id, sd: id or null}
  *   <script type="application/octet-stream" id="pathlab-rgb-N">  base64 of little-endian half floats,
  *     3 per pixel (R, G, B), row 0 = the top row; "pathlab-sd-N" the standard deviation of each
- *     pixel's mean (the square root of pathlab's variance image), for the probe's z-score.
+ *     pixel's mean (the square root of pathlab's variance image), for the probe's z-score. A compact
+ *     page (enc "rgbe85": grade's pages of large images) holds RGBE pixels in base 85 and no sd.
  *
  * The images are decoded once into Float32Arrays; the canvas is redrawn (one ImageData) only when
  * something that changes its pixels changes (exposure, gamma, mode, image, channels, split). Zoom and
@@ -41,8 +42,32 @@
     for (var i = 0; i < n; i++) out[i] = HALF[bin.charCodeAt(2 * i) | (bin.charCodeAt(2 * i + 1) << 8)];
     return out;
   }
+  /* A compact page's image (src/image/html_page.c, max_bytes): RGBE pixels, 4 bytes each (big-endian)
+   * as 5 base-85 digits of B85; read as (m + 0.5) 2^(e - 136), Ward's centring. Line breaks skipped. */
+  var B85 = "#$%'()*+,-./0123456789:;=?@ABCDEFGHIJKLMNOPQRSTUVWXYZ[]^_`abcdefghijklmnopqrstuvwxyz{";
+  var DIGIT = new Int16Array(128).fill(-1), EXP = new Float32Array(256);
+  for (var d = 0; d < 85; d++) DIGIT[B85.charCodeAt(d)] = d;
+  for (var e = 1; e < 256; e++) EXP[e] = Math.pow(2, e - 136);
+  function decodeRgbe85(id) {
+    var block = document.getElementById(id), text = block.textContent, out = new Float32Array(3 * N);
+    var w = 0, nd = 0, p = 0;
+    block.remove();
+    for (var i = 0; i < text.length && p < N; i++) {
+      var v = DIGIT[text.charCodeAt(i) & 127];
+      if (v < 0) continue;
+      w = w * 85 + v;
+      if (++nd < 5) continue;
+      var ex = w % 256, f = EXP[ex];
+      out[3 * p] = ex ? (Math.floor(w / 16777216) + 0.5) * f : 0;
+      out[3 * p + 1] = ex ? (Math.floor(w / 65536) % 256 + 0.5) * f : 0;
+      out[3 * p + 2] = ex ? (Math.floor(w / 256) % 256 + 0.5) * f : 0;
+      p++; w = 0; nd = 0;
+    }
+    return out;
+  }
   function load(desc) {
-    return desc ? { name: desc.name, link: desc.link, rgb: decode(desc.rgb), sd: decode(desc.sd) } : null;
+    if (!desc) return null;
+    return { name: desc.name, link: desc.link, rgb: desc.enc === 'rgbe85' ? decodeRgbe85(desc.rgb) : decode(desc.rgb), sd: decode(desc.sd) };
   }
   var images = settings.images.map(load);
   var ref = load(settings.ref);
@@ -248,6 +273,7 @@
     stage.style.transform = 'translate(' + st.panX + 'px,' + st.panY + 'px) scale(' + st.zoom + ')';
     root.style.setProperty('--pl-px', (1 / st.zoom) + 'px');
     rowLine.style.top = st.row + 'px';
+    layoutLabels();
   }
   function fit() {
     var vw = view.clientWidth, vh = view.clientHeight;
@@ -258,12 +284,43 @@
   }
 
   /* The marks (grade's significant regions): outlined boxes with their labels, over the image. */
+  var labels = [];
   function buildMarks() {
     settings.marks.forEach(function (m) {
       var box = el('div', 'pl-mark', stage);
       box.style.left = m.x + 'px'; box.style.top = m.y + 'px';
       box.style.width = m.w + 'px'; box.style.height = m.h + 'px';
-      el('span', 'pl-mark-label', box, m.label);
+      box.title = m.label;
+      labels.push({ m: m, span: el('span', 'pl-mark-label', box, m.label) });
+    });
+  }
+  /* The labels inside the image and clear of each other. Each tries above its box, inside its top,
+   * below it, inside its bottom, then down the image from the top, always shifted left to end within
+   * the image; the first place that meets no label already placed wins, and a label with no such
+   * place is hidden (its box keeps the text as a tooltip). Their size follows the zoom (--pl-px),
+   * so they are placed again at every zoom. */
+  function layoutLabels() {
+    var placed = [];
+    var gap = 1 / st.zoom;   // one screen pixel between labels
+    function free(x, y, w, h) {
+      return !placed.some(function (r) { return x < r.x + r.w + gap && r.x < x + w + gap && y < r.y + r.h + gap && r.y < y + h + gap; });
+    }
+    labels.forEach(function (L) {
+      var m = L.m, s = L.span, w, h, x, y = null, k, tries;
+      s.style.display = '';
+      var b = s.getBoundingClientRect();   // on screen: divided by the zoom, in image pixels (offsetWidth rounds)
+      w = b.width / st.zoom; h = b.height / st.zoom;
+      x = Math.max(0, Math.min(m.x, W - w));
+      tries = [m.y - h, m.y, m.y + m.h, m.y + m.h - h];
+      for (k = 0; h > 0 && k * h / 2 <= H; k++) tries.push(k * h / 2);
+      for (k = 0; k < tries.length && y === null; k++) {
+        var c = Math.max(0, Math.min(tries[k], H - h));
+        if (free(x, c, w, h)) y = c;
+      }
+      if (y === null || w > W) { s.style.display = 'none'; return; }
+      placed.push({ x: x, y: y, w: w, h: h });
+      var bw = 2 / st.zoom;   // the box's border (viewer.css): the label is placed from inside it
+      s.style.left = (x - m.x - bw) + 'px'; s.style.top = (y - m.y - bw) + 'px'; s.style.bottom = 'auto';
     });
   }
 

@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include "image/heatmap.h"
+#include "image/linear_file.h"
 #include "image/radiance.h"
 #include "stats/image_diff.h"
 #include "util/cli.h"
@@ -30,8 +31,8 @@ static const char *kind_of(const img_pfm_info *info)
 static int read_pair(image im[2], const char *const path[2])
 {
     img_pfm_info info[2];
-    if (img_read_pfm_info(&im[0], path[0], &info[0])) return 1;
-    if (img_read_pfm_info(&im[1], path[1], &info[1])) { img_free(&im[0]); return 1; }
+    if (img_read_linear(&im[0], path[0], &info[0])) return 1;
+    if (img_read_linear(&im[1], path[1], &info[1])) { img_free(&im[0]); return 1; }
     if (info[0].channels != info[1].channels)
         fprintf(stderr, "pathlab diff: %s is %s but %s is %s: compare images of the same kind\n", shown(path[0]),
                 shown(kind_of(&info[0])), shown(path[1]), shown(kind_of(&info[1])));

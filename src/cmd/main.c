@@ -126,7 +126,7 @@ static const char USAGE_ADAPTIVE[] =
 static const char USAGE_TOOLS[] =
     "grade (exit 0 all pass, 1 a fail, 2 an input error), on d = IMAGE - REF per pixel-channel, at family-wise level\n"
     "alpha per image (default 0.01; alpha/3 to each family below, Sidak within it); the noise is measured on d:\n"
-    "  exact pixels where REF_var.pfm (found beside REF) is 0, e.g. the background: compared as numbers\n"
+    "  exact pixels where REF_var.pfm (found beside REF) is 0 (black ones only where light is proven absent): as numbers\n"
     "  whole image  relative bias fitted to the block means, per channel: a bias spread everywhere (2 percent too bright)\n"
     "  blocks       Student t of the mean of d over each B x B block (default max(8, min(w,h)/16)): a bias in a region\n"
     "  levels       the same over the pixels of one octave of the reference's luminance: the lamp seen directly, highlights\n"
@@ -134,7 +134,8 @@ static const char USAGE_TOOLS[] =
     "               clamped, 8 bits, a factor pi, no L0, direct only, stopped after k bounces...: layers REF_split_L0.pfm...)\n"
     "  several images or a FOLDER: one line each, a summary; --report writes them as a Markdown or CSV table;\n"
     "               --details prints each image's tests in full; --heatmap FOLDER writes one heatmap per image\n"
-    "  --heatmap    the reference in grey, significantly brighter blocks red, darker blue\n"
+    "  --heatmap    the reference in grey, each block tinted by its t: red brighter, blue darker (its scale printed)\n"
+    "  IMAGE        a PFM or an .hdr (RGBE: its quantisation added to the noise); negative values explained, exit 2\n"
     "  --spp N --ref-spp M (with the variance) a per-pixel Z-test assuming the reference's estimator (information only)\n";
 static const char COMPARE_MORE[] = COMPARE_HELP "  render flags (pathlab render --help) apply to every estimator\n";
 

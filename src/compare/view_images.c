@@ -2,6 +2,7 @@
 #include "compare/view_images.h"
 #include <errno.h>
 #include "sys/shown.h"
+#include "image/linear_file.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,7 +18,7 @@ static int exists(const char *path) { return access(path, F_OK) == 0; }
 /* Reads path into im; the first image read sets the size (*first), later ones must match it. 0 or 2. */
 static int read_sized(image *im, const char *path, const char **first, const image *first_img)
 {
-    if (img_read_pfm(im, path)) return 2;
+    if (img_read_linear(im, path, NULL)) return 2;
     if (!*first) { *first = path; return 0; }
     if (im->w == first_img->w && im->h == first_img->h) return 0;
     fprintf(stderr, "pathlab view: %s is %dx%d, %s is %dx%d: the images of a page must have one size\n", shown(path), im->w,

@@ -13,6 +13,7 @@
 #include "grade/reference.h"
 #include "sys/atomic_file.h"
 #include "sys/shown.h"
+#include "image/linear_file.h"
 #include "util/path.h"
 
 #define GRADE_MAX_HYP 6
@@ -37,10 +38,10 @@ static void heatmap_path(char *out, size_t cap, const grade_job *j, const char *
 
 /* The likely mistakes of a failing image: printed in full (one image, or --details) and joined into
  * the row. */
-static int diagnose(grade_row *row, const image *img, const run *s, double excess, grade_hypothesis *h, int *nh)
+static int diagnose(grade_row *row, const image *img, const run *s, const grade_opts *o, double excess, grade_hypothesis *h, int *nh)
 {
     const grade_reference *R = &s->R;
-    int n = *nh = grade_diagnose(img, &R->refs, &s->job.o, excess, h, GRADE_MAX_HYP), k;
+    int n = *nh = grade_diagnose(img, &R->refs, o, excess, h, GRADE_MAX_HYP), k;
     size_t used = 0;
     if (n < 0) { fprintf(stderr, "pathlab grade: out of memory\n"); *nh = 0; return 2; }
     if (s->loud) grade_print_hypotheses(h, n);
@@ -66,7 +67,10 @@ static void write_heatmap(grade_row *row, const grade_report *r, const run *s, i
     if (!s->job.heatmap) return;
     heatmap_path(path, sizeof path, &s->job, row->path, skip);
     err = grade_heatmap(&heat, r, &s->R.ref) || img_write(&heat, path, 0.0f);
-    if (!err && s->loud) printf("heatmap: %s (red: significantly brighter blocks, blue: darker, grey: the reference)\n", shown(path));
+    if (!err && s->loud)
+        printf("heatmap: %s (each %dx%d block tinted by its signed t: red brighter, blue darker, light below the limit |t| %.2f, "
+               "full colour at %.2f; grey: the reference, its mean luminance %.3g at mid-grey)\n", shown(path), r->block, r->block,
+               r->block_tcrit, 2.0 * r->block_tcrit, grade_heatmap_mid(&s->R.ref));
     img_free(&heat);
     if (err) output_failed(row, "heatmap", path);
 }
@@ -150,25 +154,29 @@ static int grade_one(grade_row *rows, int index, const run *s, const char *path,
     grade_row *row = &rows[index];
     const grade_job *j = &s->job;
     grade_hypothesis h[GRADE_MAX_HYP];
-    image img;
+    image img, steps = {0, 0, NULL};
     grade_report r;
+    grade_opts o = j->o;
     int rc, nh = 0;
     memset(row, 0, sizeof *row);
     row->path = path;
     rc = grade_read_image(&img, row, &s->R.refs, j->ref);
     if (rc && s->loud && j->nimages == 1) grade_print_row(row);
     if (rc) return row->status = rc;
-    if (grade_compute(&r, &img, &s->R.ref, s->R.refs.var, &j->o)) {
+    if (img_is_rgbe(path)) o.step = &steps;   /* RGBE: its quantisation is part of its noise */
+    if ((o.step && grade_rgbe_steps(&steps, &img)) || grade_compute(&r, &img, &s->R.ref, s->R.refs.var, &o)) {
         fprintf(stderr, "pathlab grade: out of memory\n");
         img_free(&img);
+        img_free(&steps);
         return row->status = 2;
     }
-    if (s->loud) grade_print_report(&r, row->path, j->ref, &j->o);
+    if (s->loud) grade_print_report(&r, row->path, j->ref, &o);
     check_integrity(row, &img, s);
     mark_copies(rows, index);
     grade_fill_row(row, &r);
     row->status = grade_failed(&r);
-    if (row->status == 1 && diagnose(row, &img, s, grade_excess(&r), h, &nh)) row->status = 2;
+    if (row->status == 1 && diagnose(row, &img, s, &o, grade_excess(&r), h, &nh)) row->status = 2;
+    img_free(&steps);
     write_heatmap(row, &r, s, skip);
     write_page(row, &r, &img, s, h, nh, skip);
     grade_free(&r);

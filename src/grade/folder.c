@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "image/linear_file.h"
 #include "sys/output_path.h"
 #include "util/path.h"
 
@@ -52,7 +53,7 @@ int grade_list_add_folder(grade_list *l, const char *dir, const char *ref)
     if (!d) { fprintf(stderr, "pathlab grade: cannot open the folder %s\n", shown(dir)); return 1; }
     while ((e = readdir(d)) != NULL) {
         char *path;
-        if (!path_ends_with(e->d_name, ".pfm") || path_ends_with(e->d_name, "_var.pfm") || strstr(e->d_name, "_split_L") ||
+        if (!(path_ends_with(e->d_name, ".pfm") || img_is_rgbe(e->d_name)) || path_ends_with(e->d_name, "_var.pfm") || strstr(e->d_name, "_split_L") ||
             is_reference(dir, e->d_name, ref)) continue;
         if (l->n >= l->cap) { fprintf(stderr, "pathlab grade: more than %d images\n", l->cap); closedir(d); return 1; }
         path = malloc(strlen(dir) + strlen(e->d_name) + 2);
@@ -62,6 +63,6 @@ int grade_list_add_folder(grade_list *l, const char *dir, const char *ref)
     }
     closedir(d);
     qsort(l->images + first, (size_t)(l->n - first), sizeof *l->images, by_name);
-    if (l->n == first) fprintf(stderr, "pathlab grade: warning: no .pfm image to grade in the folder %s\n", shown(dir));
+    if (l->n == first) fprintf(stderr, "pathlab grade: warning: no .pfm or .hdr image to grade in the folder %s\n", shown(dir));
     return 0;
 }

@@ -78,6 +78,7 @@
 #define GRADE_LEVELS 48        /* level 0: luminance <= 0; level k: [2^(k-25), 2^(k-24)), ends open */
 #define GRADE_EXACT_REL 1e-4   /* an exact pixel may differ by this much, relative... */
 #define GRADE_EXACT_ABS 1e-6   /* ... plus this much of the reference's mean */
+#define GRADE_HITS_RADIUS 5    /* the window (11 x 11) where the dimmest lit pixel of a black one is sought */
 
 static int imin(int a, int b) { return a < b ? a : b; }
 static int imax(int a, int b) { return a > b ? a : b; }
@@ -112,34 +113,127 @@ static int zero_variance(const image *var, size_t p)
     return var->px[3 * p] == 0.0f && var->px[3 * p + 1] == 0.0f && var->px[3 * p + 2] == 0.0f;
 }
 
-/* Exact pixels: inside a flat region of the reference, the pixel and its 8 neighbours equal bit for
- * bit and (with the variance) each of variance 0. A variance of 0 alone is not enough: where light
- * is rare, a reference can draw only zeros in a pixel (at 16 spp, thousands of them) and an honest
- * image that found the light there would fail. In the interior of the background or of an emitter
- * without reflectance, every unbiased renderer gives the same value. */
+/* The number of light-finding samples a pixel of the reference drew, estimated from its mean m and
+ * the variance of its mean v: for a pixel whose samples are c with probability q and 0 otherwise,
+ * m^2 / v = n q / (1 - q), about the hits among its n samples (the largest over the channels). 0
+ * for a black pixel; huge for a pixel of variance 0 that is not black (nothing random there). */
+static float hits_of(const image *ref, const image *var, size_t p)
+{
+    double h = 0.0;
+    int ch;
+    for (ch = 0; ch < 3; ch++) {
+        double m = ref->px[3 * p + ch], v = var->px[3 * p + ch];
+        if (m != 0.0) h = fmax(h, v > 0.0 ? m * m / v : 1e30);
+    }
+    return (float)fmin(h, 1e30);
+}
+
+/* dst = the smallest positive value of src within GRADE_HITS_RADIUS along one axis (stride step,
+ * len values per line, lines lines of stride pitch), +inf where none is positive. */
+static void min_positive_1d(float *dst, const float *src, int len, int lines, size_t step, size_t pitch)
+{
+    int i, j, k;
+    for (j = 0; j < lines; j++)
+        for (i = 0; i < len; i++) {
+            float m = HUGE_VALF;
+            for (k = imax(0, i - GRADE_HITS_RADIUS); k <= imin(len - 1, i + GRADE_HITS_RADIUS); k++) {
+                float v = src[j * pitch + k * step];
+                if (v > 0.0f && v < m) m = v;
+            }
+            dst[j * pitch + i * step] = m;
+        }
+}
+
+/* Per pixel, the hits of the dimmest lit pixel of the reference within GRADE_HITS_RADIUS (a square
+ * window, two passes): what a black pixel there would have drawn, had it any light. NULL when out
+ * of memory. */
+static float *dimmest_lit(const grade_report *r, const image *ref, const image *var)
+{
+    size_t p, n = (size_t)r->w * r->h;
+    float *h = malloc(n * sizeof *h), *t = malloc(n * sizeof *t);
+    if (!h || !t) { free(h); free(t); return NULL; }
+    for (p = 0; p < n; p++) h[p] = hits_of(ref, var, p);
+    min_positive_1d(t, h, r->w, r->h, 1, (size_t)r->w);
+    min_positive_1d(h, t, r->h, r->w, (size_t)r->w, 1);
+    free(t);
+    return h;
+}
+
+/* 1 if the pixel and its 8 neighbours equal bit for bit in the reference and (with the variance)
+ * are each of variance 0. */
+static int flat_at(const grade_report *r, const image *ref, const image *var, int x, int y)
+{
+    size_t p = (size_t)y * r->w + x;
+    int u, v, flat = !var || zero_variance(var, p);
+    for (v = y - 1; v <= y + 1 && flat; v++)
+        for (u = x - 1; u <= x + 1 && flat; u++) {
+            size_t q = (size_t)v * r->w + u;
+            if (u < 0 || v < 0 || u >= r->w || v >= r->h) continue;
+            flat = !memcmp(&ref->px[3 * p], &ref->px[3 * q], 3 * sizeof(float)) && (!var || zero_variance(var, q));
+        }
+    return flat;
+}
+
+/* Exact pixels: where the reference shows that the value cannot vary. Flat (flat_at) is necessary:
+ * in the interior of the background or of an emitter without reflectance, every unbiased renderer
+ * gives the same value. It is not enough for a black pixel: where light is rare, a reference can
+ * draw only zeros (a deep penumbra at 2,044 spp, a third of its neighbours lit by a few samples
+ * each) and an honest image that found the light there would fail. A black flat pixel is exact only
+ * where zero hits are themselves unlikely: the dimmest lit pixel around it drew lambda hits, and
+ * exp(-lambda) is below the level alpha / (black flat pixels) (Bonferroni). Without the variance the
+ * hits are unknown and no black pixel is exact. The others are judged in their groups, as rare
+ * events, with the noise floor of their neighbours (floor_var). */
 static int mark_exact(grade_report *r, const image *ref, const image *var)
 {
-    int x, y, u, v;
-    r->exact = calloc((size_t)r->w * r->h, 1);
+    size_t p, n = (size_t)r->w * r->h;
+    long black = 0;
+    float *lit = NULL;
+    double lambda;
+    r->exact = calloc(n, 1);
     if (!r->exact) return 1;
     r->exact_from_var = var != NULL;
-    for (y = 0; y < r->h; y++)
-        for (x = 0; x < r->w; x++) {
-            size_t p = (size_t)y * r->w + x;
-            int flat = !var || zero_variance(var, p);
-            for (v = y - 1; v <= y + 1 && flat; v++)
-                for (u = x - 1; u <= x + 1 && flat; u++) {
-                    size_t q = (size_t)v * r->w + u;
-                    if (u < 0 || v < 0 || u >= r->w || v >= r->h) continue;
-                    flat = !memcmp(&ref->px[3 * p], &ref->px[3 * q], 3 * sizeof(float)) && (!var || zero_variance(var, q));
-                }
-            r->exact[p] = (unsigned char)flat;
+    for (p = 0; p < n; p++) {
+        r->exact[p] = (unsigned char)flat_at(r, ref, var, (int)(p % (size_t)r->w), (int)(p / (size_t)r->w));
+        if (r->exact[p] && ref->px[3 * p] == 0.0f && ref->px[3 * p + 1] == 0.0f && ref->px[3 * p + 2] == 0.0f) {
+            r->exact[p] = 2;   /* black and flat: decided below */
+            black++;
         }
+    }
+    if (black && var && !(lit = dimmest_lit(r, ref, var))) return 1;
+    lambda = -log(r->alpha / (double)(black > 0 ? black : 1));
+    for (p = 0; p < n; p++)
+        if (r->exact[p] == 2) {
+            r->exact[p] = lit && lit[p] >= lambda && lit[p] < HUGE_VALF;
+            r->black_rare += !r->exact[p];
+        }
+    free(lit);
+    return 0;
+}
+
+/* The variance the noise floor uses: the reference's, and where it is 0 at a pixel that is not
+ * exact (a black pixel where light is rare, the reference drew none), the smallest positive one
+ * within GRADE_HITS_RADIUS, per channel: a rare event there is as likely as at its dimmest lit
+ * neighbour. 0 where no pixel around is lit. Returns 1 when out of memory. */
+static int floor_var(image *out, const grade_report *r, const image *var)
+{
+    size_t p, n = (size_t)r->w * r->h;
+    float *t = malloc(3 * n * sizeof *t);
+    int ch;
+    if (!t || img_alloc(out, r->w, r->h)) { free(t); return 1; }
+    for (ch = 0; ch < 3; ch++) {
+        min_positive_1d(t + ch, var->px + ch, r->w, r->h, 3, 3 * (size_t)r->w);
+        min_positive_1d(out->px + ch, t + ch, r->h, r->w, 3 * (size_t)r->w, 3);
+    }
+    free(t);
+    for (p = 0; p < 3 * n; p++) {
+        float v = var->px[p];
+        out->px[p] = v > 0.0f || r->exact[p / 3] ? v : out->px[p] < HUGE_VALF ? out->px[p] : 0.0f;
+    }
     return 0;
 }
 
 /* Compares the exact pixels as numbers; keeps the worst miss (largest |d| relative to the limit). */
-static void test_exact(grade_report *r, const image *img, const image *ref)
+static void test_exact(grade_report *r, const image *img, const image *ref, const image *step)
 {
     size_t p, n = (size_t)r->w * r->h;
     double mean = 0.0, worst = 1.0;
@@ -152,7 +246,7 @@ static void test_exact(grade_report *r, const image *img, const image *ref)
         r->nexact++;
         for (ch = 0; ch < 3; ch++) {
             double a = img->px[3 * p + ch], b = ref->px[3 * p + ch];
-            e = fabs(a - b) / (GRADE_EXACT_REL * fabs(b) + GRADE_EXACT_ABS * mean + 1e-30);
+            e = fabs(a - b) / (GRADE_EXACT_REL * fabs(b) + GRADE_EXACT_ABS * mean + 1e-30 + (step ? 0.5 * step->px[3 * p + ch] : 0.0));
             if (e > excess) { excess = e; side = a > b; }
         }
         if (excess <= 1.0) continue;
@@ -211,6 +305,7 @@ static void group_stats(const grade_report *r, grade_block *g, int ng, const int
             g[id[p]].ref[ch] += b;
             g[id[p]].round[ch] += GRADE_ROUNDING * (fabs(a) + fabs(b));
             if (var) g[id[p]].floor[ch] += r->floor_k[ch] * var->px[3 * p + ch];
+            if (r->step) g[id[p]].quant[ch] += r->step->px[3 * p + ch] * r->step->px[3 * p + ch] / 12.0;
         }
     }
     for (k = 0; k < ng; k++)
@@ -219,6 +314,7 @@ static void group_stats(const grade_report *r, grade_block *g, int ng, const int
             g[k].ref[ch] /= g[k].n;
             g[k].round[ch] /= g[k].n;
             g[k].floor[ch] /= (double)g[k].n * g[k].n;
+            g[k].quant[ch] /= (double)g[k].n * g[k].n;
         }
     for (p = 0; p < n; p++)
         for (ch = 0; ch < 3 && id[p] >= 0; ch++) {
@@ -315,7 +411,7 @@ static double block_noise(const grade_report *r, int bx, int by, int ch)
 {
     const grade_block *b = &r->blocks[by * r->nbx + bx];
     double var = fmax(b->var[ch], pooled_var(r, bx, by, ch, 1));
-    return b->n > 0 ? fmax(var / b->n, b->floor[ch]) + b->round[ch] * b->round[ch] : 0.0;
+    return b->n > 0 ? fmax(var / b->n, b->floor[ch]) + b->quant[ch] + b->round[ch] * b->round[ch] : 0.0;
 }
 
 static void test_blocks(grade_report *r, const image *img, const image *ref, const image *var, int *id)
@@ -395,7 +491,7 @@ static void test_coarse(grade_report *r, const image *img, const image *ref, con
             grade_block *g = &s->blocks[b];
             for (ch = 0; ch < 3; ch++) {
                 double v = fmax(g->var[ch], pooled_in(s->blocks, s->nbx, s->nby, b % s->nbx, b / s->nbx, ch, 1));
-                g->noise[ch] = g->n > 0 ? fmax(v / g->n, g->floor[ch]) + g->round[ch] * g->round[ch] : 0.0;
+                g->noise[ch] = g->n > 0 ? fmax(v / g->n, g->floor[ch]) + g->quant[ch] + g->round[ch] * g->round[ch] : 0.0;
             }
             judge_group(g, s->level, &memo, &(double){0.0}, &s->excess);
             s->brighter += g->sign > 0;
@@ -445,7 +541,7 @@ static void test_levels(grade_report *r, const image *img, const image *ref, con
     for (k = 0; k < GRADE_LEVELS; k++) {
         grade_block *g = &r->levels[k];
         for (ch = 0; ch < 3; ch++)
-            g->noise[ch] = g->n > 0 ? fmax(g->var[ch] / g->n, g->floor[ch]) + g->round[ch] * g->round[ch] : 0.0;
+            g->noise[ch] = g->n > 0 ? fmax(g->var[ch] / g->n, g->floor[ch]) + g->quant[ch] + g->round[ch] * g->round[ch] : 0.0;
         judge_group(g, r->level_level, &memo, &r->level_tmax, &r->level_excess);
         r->level_brighter += g->sign > 0;
         r->level_darker += g->sign < 0;
@@ -610,10 +706,12 @@ static void choose_blocks(grade_report *r, const grade_opts *o)
 int grade_compute(grade_report *r, const image *img, const image *ref, const image *ref_var, const grade_opts *o)
 {
     int *id, k, oom = 0;
+    image vf = {0, 0, NULL};   /* the noise floor's variance (floor_var) */
     memset(r, 0, sizeof *r);
     if (img->w != ref->w || img->h != ref->h) return 1;
     if (ref_var && (ref_var->w != ref->w || ref_var->h != ref->h)) return 1;
     r->alpha = o->alpha;
+    r->step = o->step && o->step->w == img->w && o->step->h == img->h ? o->step : NULL;
     r->w = img->w;
     r->h = img->h;
     choose_blocks(r, o);
@@ -629,14 +727,15 @@ int grade_compute(grade_report *r, const image *img, const image *ref, const ima
         grade_free(r);
         return 1;
     }
-    test_exact(r, img, ref);
-    if (ref_var && floor_scale(r, img, ref, ref_var)) { free(id); grade_free(r); return 1; }
-    test_blocks(r, img, ref, ref_var, id);
-    test_coarse(r, img, ref, ref_var, id);
-    test_levels(r, img, ref, ref_var, id);
+    test_exact(r, img, ref, o->step);
+    if (ref_var && (floor_scale(r, img, ref, ref_var) || floor_var(&vf, r, ref_var))) { free(id); grade_free(r); return 1; }
+    test_blocks(r, img, ref, ref_var ? &vf : NULL, id);
+    test_coarse(r, img, ref, ref_var ? &vf : NULL, id);
+    test_levels(r, img, ref, ref_var ? &vf : NULL, id);
     test_image(r, img, ref);
     test_plain(r, img, ref);
     free(id);
+    img_free(&vf);
     if (ref_var && o->spp > 0 && o->ref_spp > 0) test_pixels(r, img, ref, ref_var, o);
     return 0;
 }
@@ -674,6 +773,34 @@ double grade_excess(const grade_report *r)
     return e;
 }
 
+int grade_rgbe_steps(image *steps, const image *img)
+{
+    size_t p;
+    int ch, e;
+    if (img_alloc(steps, img->w, img->h)) return 1;
+    for (p = 0; p < (size_t)img->w * img->h; p++) {
+        double m = fmax(img->px[3 * p], fmax(img->px[3 * p + 1], img->px[3 * p + 2]));
+        frexp(m, &e);
+        for (ch = 0; ch < 3; ch++) steps->px[3 * p + ch] = m > 0.0 ? (float)ldexp(1.0, e - 8) : 0.0f;
+    }
+    return 0;
+}
+
+double grade_bias_energy(const grade_report *r, double *sd)
+{
+    double e = 0.0;
+    long n = 0;
+    int b, ch;
+    for (b = 0; b < r->nblocks; b++)
+        for (ch = 0; ch < 3 && r->blocks[b].df >= 1 && !r->blocks[b].rare; ch++) {
+            double t = r->blocks[b].t[ch];
+            e += isfinite(t) ? t * t - 1.0 : 1e12;
+            n++;
+        }
+    *sd = sqrt(2.0 * n);
+    return e;
+}
+
 /* Paints the significant blocks of one scale: red brighter, blue darker, over what is there, with
  * weight `strength` (the coarse scales lighter, so that the finest show their detail on them). */
 static void paint_blocks(image *out, const grade_block *g, int ng, int w, float strength)
@@ -691,16 +818,50 @@ static void paint_blocks(image *out, const grade_block *g, int ng, int w, float 
     }
 }
 
+/* The signed t of a block: its channel farthest from 0. */
+static double signed_t(const grade_block *g)
+{
+    int ch, best = 0;
+    for (ch = 1; ch < 3; ch++) if (fabs(g->t[ch]) > fabs(g->t[best])) best = ch;
+    return isfinite(g->t[best]) ? g->t[best] : copysign(1e9, g->t[best]);
+}
+
+/* The finest blocks' signed t as a tint: light (at most GRADE_HEAT_FAINT) below the limit, from
+ * 0.6 at the limit to full colour at twice the limit; blocks not judged (exact, rare) untouched. */
+#define GRADE_HEAT_FAINT 0.35f
+static void paint_t(image *out, const grade_report *r)
+{
+    int b;
+    for (b = 0; b < r->nblocks; b++) {
+        const grade_block *g = &r->blocks[b];
+        double u = fabs(signed_t(g)) / r->block_tcrit;
+        float a = (float)(u < 1.0 ? GRADE_HEAT_FAINT * u : fmin(1.0, 0.6 + 0.4 * (u - 1.0)));
+        grade_block one = *g;
+        if (g->df < 1 || g->rare || !(r->block_tcrit > 0.0) || a <= 0.0f) continue;
+        one.sign = signed_t(g) > 0 ? 1 : -1;
+        paint_blocks(out, &one, 1, r->w, a);
+    }
+}
+
+double grade_heatmap_mid(const image *ref)
+{
+    size_t p, n = (size_t)ref->w * ref->h;
+    double sum = 0.0;
+    for (p = 0; p < n; p++) sum += fmax(ref_luminance(ref, p), 0.0);
+    return n ? sum / n : 0.0;
+}
+
 int grade_heatmap(image *out, const grade_report *r, const image *ref)
 {
     size_t p;
     int k, ch;
+    double mid = grade_heatmap_mid(ref);
     if (img_alloc(out, r->w, r->h)) return 1;
-    for (p = 0; p < (size_t)r->w * r->h; p++) {
-        float Y = (float)ref_luminance(ref, p);
-        for (ch = 0; ch < 3; ch++) out->px[3 * p + ch] = 0.5f * fminf(fmaxf(Y, 0.0f), 1.0f);   /* dimmed: colours stand out */
+    for (p = 0; p < (size_t)r->w * r->h; p++) {   /* tone-mapped at the mean: a dark scene stays visible */
+        double Y = fmax(ref_luminance(ref, p), 0.0);
+        for (ch = 0; ch < 3; ch++) out->px[3 * p + ch] = (float)(0.6 * (mid > 0.0 ? Y / (Y + mid) : 0.0));
     }
     for (k = r->ncoarse - 1; k >= 0; k--) paint_blocks(out, r->coarse[k].blocks, r->coarse[k].nblocks, r->w, 0.3f);
-    paint_blocks(out, r->blocks, r->nblocks, r->w, 0.8f);
+    paint_t(out, r);
     return 0;
 }

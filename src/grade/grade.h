@@ -10,6 +10,9 @@ typedef struct {
     int block;           /* block side in pixels; 0: chosen from the image size */
     int spp, ref_spp;    /* the image's and the reference's samples per pixel; 0 if not given */
     int ref_var_dof;     /* degrees of freedom of the reference's variance (its sidecar's variance-dof); 0: many */
+    const image *step;   /* the image's quantisation step per pixel-channel (an RGBE file: grade_rgbe_steps), or
+                            NULL: a uniform error of one step, variance step^2 / 12, is added to its noise and
+                            half a step to the tolerance of the exact pixels */
 } grade_opts;
 
 /* A group of pixels tested together: a block of the image, or a level (the pixels whose reference
@@ -22,6 +25,7 @@ typedef struct {
     double var[3], round[3]; /* sample variance of d over the group; rounding bound of its mean */
     double skew[3];          /* sample skewness of d over the group (see skewed_limit in grade.c) */
     double floor[3];         /* the least variance of its mean d: k x the reference's (see grade.c) */
+    double quant[3];         /* the variance of its mean d from the image's quantisation (grade_opts.step) */
     double noise[3];         /* the variance of its mean d used by the tests */
     long nzero;              /* pixels black in the image where the reference is not */
     int rare;                /* 1: mostly black there, rare-event noise: not judged */
@@ -62,10 +66,12 @@ typedef struct {
     unsigned char *exact;                /* per pixel: 1 if the reference is noise-free there */
     int exact_from_var;                  /* 1: told by the reference's variance; 0: guessed */
     long nexact, exact_fail;             /* exact pixels, and those the image misses */
+    long black_rare;                     /* black and flat in the reference, yet light may be rare there: not exact */
     int exact_x, exact_y;                /* the worst miss */
     long exact_side[2];                  /* misses darker (0) and brighter (1) than the reference */
     int exact_box[2][4];                 /* the box around each: x0, y0, x1, y1 (exclusive) */
     double exact_img[3], exact_ref[3];
+    const image *step;                   /* the image's quantisation step (grade_opts.step), or NULL */
     int pixel_test;                      /* 1 when the per-pixel Z-test ran (--var, --spp, --ref-spp) */
     long pixel_n, pixel_fail;
     double pixel_zcrit;
@@ -76,12 +82,23 @@ typedef struct {
  * must be finite (cmd/grade.c checks). Free the report with grade_free. */
 int grade_compute(grade_report *r, const image *img, const image *ref, const image *ref_var, const grade_opts *o);
 void grade_free(grade_report *r);
+/* The RGBE step of each pixel of an image read from an .hdr: 2^(e - 136) for the exponent e of its
+ * largest channel, told from the decoded value (its mantissa in [128, 256)); 0 for a black pixel.
+ * Replicated in R, G, B. 0, or 1 when out of memory. */
+int grade_rgbe_steps(image *steps, const image *img);
 /* 1 when the image fails: a missed exact pixel, a significant block or level, or the whole image. */
 int grade_failed(const grade_report *r);
 /* How far the worst statistic is beyond its limit: <= 1 passes the tests with a level (a missed
  * exact pixel counts as 1e9). The diagnosis compares hypotheses with it. */
 double grade_excess(const grade_report *r);
-/* The reference in grey, with significantly brighter blocks in red and darker ones in blue (the
- * coarser scales in lighter tints under the finest). */
+/* How much bias the image holds, in units of its noise: the sum over the finest blocks and channels
+ * of t^2 - 1 (0 on average without bias: a chi-square's excess), and its standard deviation without
+ * bias in *sd. The diagnosis asks that a mistake remove 99% of it. */
+double grade_bias_energy(const grade_report *r, double *sd);
+/* The heatmap: the reference in grey, tone-mapped Y / (Y + mid) (mid = grade_heatmap_mid: its mean
+ * luminance shows as mid-grey, so a dark scene stays visible), each finest block tinted by its
+ * signed t (red brighter, blue darker): lightly below the limit (|t| / limit x 0.35), from 0.6 at
+ * the limit to full colour at twice it; the coarser scales' significant blocks in light tints. */
+double grade_heatmap_mid(const image *ref);
 int grade_heatmap(image *out, const grade_report *r, const image *ref);
 #endif

@@ -1,12 +1,14 @@
 /* grade_class.c — a class's images read and checked, its lines and its report (see grade_class.h). */
 #include "grade/grade_class.h"
 #include "grade/grade_page.h"
+#include "grade/negatives.h"
 #include "files/sidecar.h"
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
+#include "image/linear_file.h"
 #include "image/radiance.h"
 #include "sys/input_file.h"
 #include "sys/output_path.h"
@@ -117,10 +119,11 @@ static int unreadable(grade_row *row)
 {
     struct stat st;
     if (stat(row->path, &st) == 0 && !S_ISREG(st.st_mode))   /* a FIFO, a device, a folder: said in the row too */
-        snprintf(row->mistake, sizeof row->mistake, "%s: not a PFM", input_file_why(S_ISDIR(st.st_mode) ? EISDIR : ENODEV));
+        snprintf(row->mistake, sizeof row->mistake, "%s: not an image", input_file_why(S_ISDIR(st.st_mode) ? EISDIR : ENODEV));
     else
-        snprintf(row->mistake, sizeof row->mistake, "not a readable PFM: missing, byte order, header line ends, truncated or "
-                 "trailing bytes (pathlab's message on stderr says which)");
+        snprintf(row->mistake, sizeof row->mistake, "not a readable %s (pathlab's message on stderr says why)",
+                 img_is_rgbe(row->path) ? "Radiance .hdr: missing, header, resolution line, truncated or trailing bytes"
+                 : "PFM: missing, byte order, header line ends, truncated or trailing bytes");
     return row->status = 2;
 }
 
@@ -129,8 +132,11 @@ int grade_read_image(image *img, grade_row *row, const grade_refs *refs, const c
     img_pfm_info info;
     img->w = img->h = 0;
     img->px = NULL;
-    /* the header first: a file claiming gigabytes of the wrong kind or size is refused unread */
-    if (img_read_pfm_header(row->path, &info)) return unreadable(row);
+    /* the header first: a file claiming gigabytes of the wrong kind or size is refused unread (an .hdr
+     * is read whole: its reader refuses a file shorter than its scanlines' most compact encoding) */
+    if (img_is_rgbe(row->path)) {
+        if (img_read_linear(img, row->path, &info)) return unreadable(row);
+    } else if (img_read_pfm_header(row->path, &info)) return unreadable(row);
     if (info.channels != refs->channels) {
         snprintf(row->mistake, sizeof row->mistake, "%s (\"%s\", %d channel%s) against a %s reference: write %s",
                  info.channels == 1 ? "greyscale" : "colour", info.channels == 1 ? "Pf" : "PF", info.channels,
@@ -140,10 +146,14 @@ int grade_read_image(image *img, grade_row *row, const grade_refs *refs, const c
         img_free(img);
         return row->status = 2;
     }
-    if (info.w != refs->ref->w || info.h != refs->ref->h) return wrong_size(row, info.w, info.h, refs, ref_path);
-    if (img_read_pfm_info(img, row->path, &info)) return unreadable(row);
+    if (info.w != refs->ref->w || info.h != refs->ref->h) {
+        img_free(img);
+        return wrong_size(row, info.w, info.h, refs, ref_path);
+    }
+    if (!img->px && img_read_pfm_info(img, row->path, &info)) return unreadable(row);
     if (img_check_radiance(img, row->path, 4)) {
-        snprintf(row->mistake, sizeof row->mistake, "NaN, infinite or negative values (positions on stderr): radiance is finite and >= 0");
+        if (first_bad(img, 0, &(const char *){NULL}) >= 0 || !grade_explain_negatives(row->mistake, sizeof row->mistake, img, refs->ref))
+            snprintf(row->mistake, sizeof row->mistake, "NaN, infinite or negative values (positions on stderr): radiance is finite and >= 0");
         img_free(img);
         return row->status = 2;
     }

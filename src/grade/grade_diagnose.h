@@ -15,6 +15,7 @@ typedef struct {
     const image *layer[GRADE_MAX_LAYERS]; /* L0, L1, ... of the same view (--split), or NULL */
     int nlayers;                          /* layers 0..nlayers-1 are all present */
     int channels;                         /* of the reference's file: 3 (PF) or 1 (Pf) */
+    int pixel_center;                     /* its sidecar: 1 rendered with --pixel-center, 0 jittered, -1 unknown */
 } grade_refs;
 
 typedef struct {

@@ -8,6 +8,15 @@
 
 static const char *const CHANNELS[3] = {"red", "green", "blue"};
 
+/* "+1.23% +- 0.45%": the error bar to 2 significant digits, the value to the same decimal place (an
+ * error bar of 0.000012% is printed as such, not as "0.00%"). */
+static const char *pct_pm(char *s, size_t cap, double value, double se)
+{
+    int decimals = se > 0.0 ? (int)fmin(8.0, fmax(0.0, 1.0 - floor(log10(100.0 * se)))) : 0;
+    snprintf(s, cap, "%+.*f%% +- %.*f%%", decimals, 100.0 * value, decimals, 100.0 * se);
+    return s;
+}
+
 /* Channel-averaged relative difference over the groups of one sign (0: over the whole image). */
 static double relative_diff(const grade_report *r, const grade_block *g, int ng, int sign)
 {
@@ -40,6 +49,11 @@ static void describe_box(char *s, size_t cap, int x0, int y0, int x1, int y1, in
     else if (ty < 0) snprintf(s, cap, tx == 1 ? "a band down the centre" : "the %s side", cols[tx]);
     else if (tx == 1 && ty == 1) snprintf(s, cap, "the centre");
     else snprintf(s, cap, "the %s-%s", rows[ty], cols[tx]);
+}
+
+void grade_describe_box(char *s, size_t cap, int x0, int y0, int x1, int y1, int w, int h)
+{
+    describe_box(s, cap, x0, y0, x1, y1, w, h);
 }
 
 /* The box around the groups of one sign, its area in pixels and the number of groups; 0 if none. */
@@ -108,12 +122,13 @@ static void print_levels(const grade_report *r)
 /* The whole-image line: the fitted relative bias per channel, and the plain mean difference. */
 static void print_image_test(const grade_report *r)
 {
+    char pm[64];
     int ch;
     if (!r->image_nfit) {
         printf("whole image: no relative-bias fit (no block has noise to weigh it: exact, or black around it)\n");
     } else {
         printf("whole image: relative bias fitted to the block means (weights ref / noise):");
-        for (ch = 0; ch < 3; ch++) printf(" %c %+.2f%% +- %.2f%%", "RGB"[ch], 100 * r->image_eps[ch], 100 * r->image_eps_se[ch]);
+        for (ch = 0; ch < 3; ch++) printf(" %c %s", "RGB"[ch], pct_pm(pm, sizeof pm, r->image_eps[ch], r->image_eps_se[ch]));
         printf("; z %+.2f %+.2f %+.2f, limits %.2f %.2f %.2f (Student %.2f at level %.2g, widened by skewness)\n", r->image_z[0],
                r->image_z[1], r->image_z[2], r->image_zlimit[0], r->image_zlimit[1], r->image_zlimit[2], r->image_zcrit, r->image_level);
     }
@@ -143,9 +158,15 @@ static void print_tests(const grade_report *r, const char *image, const char *re
            r->nlevels_tested, r->level_excess, r->level_level, r->level_brighter, r->level_darker);
     printf("exact pixels (flat in the reference: equal to their 8 neighbours%s): %ld, compared as numbers (|d| <= 1e-4 |ref| "
            "+ 1e-6 mean): %ld differ\n", r->exact_from_var ? ", variance 0" : "; no REF_var.pfm", r->nexact, r->exact_fail);
+    if (r->black_rare)
+        printf("black flat pixels not exact: %ld (the reference drew no light there, but its dimmest lit pixel within 5 pixels drew "
+               "too few hits for that to prove the pixel dark: judged in their blocks, as rare events)\n", r->black_rare);
     if (r->floor_k[0] > 0.0)
         printf("noise floor: at least %.3g %.3g %.3g x the reference's variance per pixel (robust fit; guards rare-event noise)\n",
                r->floor_k[0], r->floor_k[1], r->floor_k[2]);
+    if (r->step)
+        printf("RGBE (.hdr): its quantisation, a uniform error of one step per channel (step^2 / 12), added to the noise; exact "
+               "pixels allowed half a step\n");
     if (r->pixel_test)
         printf("pixels (information only, not in the verdict; assumes the reference's estimator at %d spp): "
                "%ld of %ld pixel-channels beyond |z| %.2f\n", o->spp, r->pixel_fail, r->pixel_n, r->pixel_zcrit);
@@ -183,6 +204,7 @@ static int worst_fit_channel(const grade_report *r)
 
 static void print_verdict(const grade_report *r)
 {
+    char pm[64];
     long n = 3L * r->w * r->h;
     int ch, k, worst = 0;
     if (rare_pixels(r))
@@ -203,8 +225,8 @@ static void print_verdict(const grade_report *r)
     for (ch = 1; ch >= 0; ch--) print_exact_side(r, ch);
     worst = worst_fit_channel(r);
     if (fabs(r->image_z[worst]) > r->image_zlimit[worst])
-        printf("  %s over the whole image: %+.2f%% +- %.2f%% in %s (|z| %.1f > %.2f)\n", r->image_z[worst] > 0 ? "brighter" : "darker",
-               100 * r->image_eps[worst], 100 * r->image_eps_se[worst], CHANNELS[worst], fabs(r->image_z[worst]), r->image_zlimit[worst]);
+        printf("  %s over the whole image: %s in %s (|z| %.1f > %.2f)\n", r->image_z[worst] > 0 ? "brighter" : "darker",
+               pct_pm(pm, sizeof pm, r->image_eps[worst], r->image_eps_se[worst]), CHANNELS[worst], fabs(r->image_z[worst]), r->image_zlimit[worst]);
     for (ch = 0; ch < 3; ch++)
         if (r->plain_limit[ch] > 0.0 && fabs(r->plain_t[ch]) > r->plain_limit[ch]) {
             printf("  %s on the whole image's plain mean: %+.2f%% in %s (|t| %.1f > %.2f)\n", r->plain_t[ch] > 0 ? "brighter" : "darker",
@@ -309,17 +331,18 @@ void grade_fill_row(grade_row *row, const grade_report *r)
 void grade_print_row(const grade_row *row)
 {
     const char *name = shown(row->path);
+    char pm[64];
     /* each number says what it is computed over (the whole image, or the significant blocks and where
      * they are); a place stands beside the number only when the number is computed there */
     if (row->status == 2) printf("%s: UNREADABLE, %s", name, shown(row->mistake));
-    else if (row->status == 0) printf("%s: PASS (%+.2f%% +- %.2f%% in %s over the whole image)", name, 100 * row->bias, 100 * row->bias_se, row->channel);
+    else if (row->status == 0) printf("%s: PASS (%s in %s over the whole image)", name, pct_pm(pm, sizeof pm, row->bias, row->bias_se), row->channel);
     else {
         printf("%s: FAIL", name);
         if (row->channel[0] && row->bias_se == -2.0)
             printf(", %+.2f%% over its significant blocks%s%s%s", 100 * row->bias, row->where[0] ? " (" : "", row->where, row->where[0] ? ")" : "");
         else {
             if (row->channel[0] && row->bias_se < 0.0) printf(", %+.2f%% on the whole image's plain mean", 100 * row->bias);
-            else if (row->channel[0]) printf(", %+.2f%% +- %.2f%% in %s over the whole image", 100 * row->bias, 100 * row->bias_se, row->channel);
+            else if (row->channel[0]) printf(", %s in %s over the whole image", pct_pm(pm, sizeof pm, row->bias, row->bias_se), row->channel);
             if (row->where[0]) printf("; %s: %s", strcmp(row->where, "spread over the image") ? "significant in" : "the bias", row->where);
         }
         printf("%s%s", row->mistake[0] ? "; likely: " : "", shown(row->mistake));
@@ -329,9 +352,10 @@ void grade_print_row(const grade_row *row)
 
 void grade_bias_text(char *out, size_t cap, const grade_row *r)
 {
+    char pm[64];
     out[0] = '\0';
     if (r->status == 2 || !r->channel[0]) return;
     if (r->bias_se == -2.0) snprintf(out, cap, "%+.2f%% (over the significant blocks)", 100 * r->bias);
     else if (r->bias_se < 0.0) snprintf(out, cap, "%+.2f%% (the whole image's plain mean)", 100 * r->bias);
-    else snprintf(out, cap, "%+.2f%% +- %.2f%% (%s, the whole image)", 100 * r->bias, 100 * r->bias_se, r->channel);
+    else snprintf(out, cap, "%s (%s, the whole image)", pct_pm(pm, sizeof pm, r->bias, r->bias_se), r->channel);
 }

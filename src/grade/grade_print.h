@@ -36,6 +36,8 @@ void grade_fill_row(grade_row *row, const grade_report *r);
 /* The row's bias as the report writes it: "+1.20% +- 0.30% (green)", "-5.00% (plain mean)",
  * "+2.00% (where significant)", or "" when there is none. */
 void grade_bias_text(char *out, size_t cap, const grade_row *row);
+/* Where the box [x0, x1) x [y0, y1) lies in a w x h image, in words: "the top-left", "most of the image"... */
+void grade_describe_box(char *s, size_t cap, int x0, int y0, int x1, int y1, int w, int h);
 /* "A.pfm: FAIL, darker -54.4% +- 0.6% in green (the top-centre); likely: no L0 ..." */
 void grade_print_row(const grade_row *row);
 #endif

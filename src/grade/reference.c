@@ -1,6 +1,7 @@
 /* reference.c — the reference, its variance, its layers and its sidecar read (reference.h). */
 #include "grade/reference.h"
 #include "sys/shown.h"
+#include "image/linear_file.h"
 #include <stdio.h>
 #include <string.h>
 #include "files/render_files.h"
@@ -53,10 +54,11 @@ int grade_reference_read(grade_reference *R, const char *path, const char *var, 
     size_t stem = path_ends_with(path, ".pfm") ? strlen(path) - 4 : strlen(path);
     img_pfm_info info;
     memset(R, 0, sizeof *R);
-    if (img_read_pfm_info(&R->ref, path, &info)) return 2;
+    if (img_read_linear(&R->ref, path, &info)) return 2;
     R->refs.ref = &R->ref;
     R->refs.channels = info.channels;
     R->has_meta = sidecar_read(&R->meta, path) == 0;
+    R->refs.pixel_center = R->has_meta ? strstr(R->meta.flags, "--pixel-center") != NULL : -1;
     if (read_variance(R, path, var, stem) || read_layers(R, path, layers, stem)) return 2;
     return grade_check_reference(&R->refs, path, R->var_path);
 }

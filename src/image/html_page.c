@@ -74,6 +74,50 @@ static void write_halves(FILE *f, const float *v, long n, int sd)
     }
 }
 
+/* The base 85 digits of the compact pages: '#' (35) to '~' (126) without < > & \ (no "</script" can
+ * appear, no entity), the first 85 of them; web/viewer.js holds the same string. */
+static const char B85[] = "#$%'()*+,-./0123456789:;=?@ABCDEFGHIJKLMNOPQRSTUVWXYZ[]^_`abcdefghijklmnopqrstuvwxyz{";
+
+/* One pixel as RGBE (Ward): the exponent of the largest channel, mantissas truncated; read back as
+ * (m + 0.5) 2^(e - 136), within half a step. Negative and NaN values as 0, beyond 2^127 as the largest. */
+static void rgbe_of(const float *v, unsigned char out[4])
+{
+    double c[3], m;
+    int e, k;
+    for (k = 0; k < 3; k++) c[k] = v[k] > 0.0f ? fmin(v[k], 1e38) : 0.0;
+    m = fmax(c[0], fmax(c[1], c[2]));
+    if (m < 1e-38) { out[0] = out[1] = out[2] = out[3] = 0; return; }
+    frexp(m, &e);
+    for (k = 0; k < 3; k++) out[k] = (unsigned char)fmin(255.0, ldexp(c[k], 8 - e));
+    out[3] = (unsigned char)(e + 128);
+}
+
+/* n pixels as RGBE in base 85: each 4 bytes (big-endian) as 5 digits, a line break every 80 pixels. */
+static void write_rgbe85(FILE *f, const float *v, long n)
+{
+    long p;
+    for (p = 0; p < n; p++) {
+        unsigned char b[4];
+        unsigned long w;
+        char d[5];
+        int k;
+        rgbe_of(&v[3 * p], b);
+        w = (unsigned long)b[0] << 24 | (unsigned long)b[1] << 16 | (unsigned long)b[2] << 8 | b[3];
+        for (k = 4; k >= 0; k--, w /= 85) d[k] = B85[w % 85];
+        fwrite(d, 1, 5, f);
+        if (p % 80 == 79) putc('\n', f);
+    }
+}
+
+/* 1 when the page's images in half floats (base 64) would take more than page->max_bytes. */
+static int compact_page(const html_page *page, const html_image **all, int n)
+{
+    double bytes = 0.0;
+    int i;
+    for (i = 0; i < n; i++) bytes += (all[i]->var ? 2.0 : 1.0) * 8.0 * all[i]->img->w * all[i]->img->h;
+    return page->max_bytes > 0 && bytes > (double)page->max_bytes;
+}
+
 char *html_data_uri(const char *mime, const void *bytes, size_t n)
 {
     const unsigned char *b = bytes;
@@ -129,31 +173,31 @@ static int check_sizes(const char *path, const html_image **all, int n)
     return 0;
 }
 
-/* One image's entry of the settings: its name, link, and the ids of its data. */
-static void json_image(FILE *f, const html_image *im, int id)
+/* One image's entry of the settings: its name, link, the ids of its data and their encoding. */
+static void json_image(FILE *f, const html_image *im, int id, int compact)
 {
     fputs("{\"name\":", f);
     json_string(f, im->name);
     fputs(",\"link\":", f);
     json_string(f, im->link);
-    fprintf(f, ",\"rgb\":\"pathlab-rgb-%d\",\"sd\":", id);
-    if (im->var) fprintf(f, "\"pathlab-sd-%d\"}", id);
+    fprintf(f, ",\"enc\":\"%s\",\"rgb\":\"pathlab-rgb-%d\",\"sd\":", compact ? "rgbe85" : "half", id);
+    if (im->var && !compact) fprintf(f, "\"pathlab-sd-%d\"}", id);
     else fputs("null}", f);
 }
 
 /* The settings: {"title", "w", "h", "images":[...], "ref", "strip":[...], "marks":[...]}. */
-static void write_settings(FILE *f, const html_page *p)
+static void write_settings(FILE *f, const html_page *p, int compact)
 {
     int i, id = 0;
     fprintf(f, "<script type=\"application/json\" id=\"pathlab-settings\">{\"title\":");
     json_string(f, p->title);
     fprintf(f, ",\"w\":%d,\"h\":%d,\"images\":[", p->images[0].img->w, p->images[0].img->h);
-    for (i = 0; i < p->nimages; i++, id++) { if (i) putc(',', f); json_image(f, &p->images[i], id); }
+    for (i = 0; i < p->nimages; i++, id++) { if (i) putc(',', f); json_image(f, &p->images[i], id, compact); }
     fputs("],\"ref\":", f);
-    if (p->ref) json_image(f, p->ref, id++);
+    if (p->ref) json_image(f, p->ref, id++, compact);
     else fputs("null", f);
     fputs(",\"strip\":[", f);
-    for (i = 0; i < p->nstrip; i++, id++) { if (i) putc(',', f); json_image(f, &p->strip[i], id); }
+    for (i = 0; i < p->nstrip; i++, id++) { if (i) putc(',', f); json_image(f, &p->strip[i], id, compact); }
     fputs("],\"marks\":[", f);
     for (i = 0; i < p->nmarks; i++) {
         const html_mark *m = &p->marks[i];
@@ -187,7 +231,7 @@ static void script_hash(char out[64])
 static void write_page(FILE *f, const html_page *p, const html_image **all, int n)
 {
     char *title = html_escape(p->title ? p->title : "pathlab"), hash[64];
-    int i;
+    int i, compact = compact_page(p, all, n);
     script_hash(hash);
     fprintf(f, "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
                "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; script-src %s; "
@@ -197,13 +241,14 @@ static void write_page(FILE *f, const html_page *p, const html_image **all, int 
     if (p->before_html) fprintf(f, "%s\n", p->before_html);
     fputs("<div id=\"pathlab-viewer\"></div>\n", f);
     if (p->after_html) fprintf(f, "%s\n", p->after_html);
-    write_settings(f, p);
+    write_settings(f, p, compact);
     for (i = 0; i < n; i++) {
         long count = 3L * all[i]->img->w * all[i]->img->h;
         fprintf(f, "<script type=\"application/octet-stream\" id=\"pathlab-rgb-%d\">\n", i);
-        write_halves(f, all[i]->img->px, count, 0);
+        if (compact) write_rgbe85(f, all[i]->img->px, count / 3);
+        else write_halves(f, all[i]->img->px, count, 0);
         fputs("</script>\n", f);
-        if (!all[i]->var) continue;
+        if (!all[i]->var || compact) continue;
         fprintf(f, "<script type=\"application/octet-stream\" id=\"pathlab-sd-%d\">\n", i);
         write_halves(f, all[i]->var->px, count, 1);
         fputs("</script>\n", f);

@@ -31,6 +31,10 @@ typedef struct {
     const html_mark *marks; int nmarks;      /* regions outlined over the images */
     const char *before_html;                 /* trusted HTML above the viewer (verdict, tables), or NULL */
     const char *after_html;                  /* trusted HTML below it (plots, notes), or NULL */
+    size_t max_bytes;                        /* 0, or: when the images in half floats would take more, they
+                                                go as RGBE (8-bit mantissas, one exponent a pixel: 0.2-0.4%
+                                                of the largest channel) in base 85, variances left out:
+                                                5 bytes a pixel instead of 8 an image and 8 a variance */
 } html_page;
 
 /* Writes the page atomically (sys/atomic_file.h). 0 on success; else "path: reason" on stderr. */

@@ -220,8 +220,29 @@
     check('2048x1024: one redraw (exposure changed) in ' + t.toFixed(0) + ' ms (bound 1000 ms)', t < 1000, t.toFixed(0) + ' ms');
   }
 
+  /* The compact page (RGBE in base 85): its values within half an RGBE step (1/512 of 2^e, the
+   * largest channel in [2^(e-1), 2^e)) of test_html_page's pattern, at a few pixels. */
+  function compactTests() {
+    var worst = 0;
+    [[0, 0], [7, 3], [100, 200], [2047, 1023], [1500, 77]].forEach(function (xy) {
+      var v = V.probe(xy[0], xy[1]).value, want = [0, 1, 2].map(function (c) {
+        return Math.pow(10, 3 * Math.sin(0.01 * xy[0] + c) * Math.cos(0.013 * xy[1]));
+      }), top = Math.max.apply(null, want);
+      want.forEach(function (w, c) { worst = Math.max(worst, Math.abs(v[c] - w) / top); });
+    });
+    check('compact page: values within half an RGBE step of the largest channel (worst ' + worst.toExponential(2) + ')', worst <= 1 / 256, worst);
+  }
+
   function marksTests() {
-    check('marks: 2 regions outlined', V.marks() === 2, V.marks() + ' marks');
+    compactTests();
+    check('marks: 3 regions outlined', V.marks() === 3, V.marks() + ' marks');
+    var img = document.querySelector('.pl-main').getBoundingClientRect();
+    var rects = Array.prototype.map.call(document.querySelectorAll('.pl-mark-label'), function (e) { return e.getBoundingClientRect(); });
+    var outside = rects.filter(function (r) { return r.left < img.left - 1 || r.right > img.right + 1 || r.top < img.top - 1 || r.bottom > img.bottom + 1; });
+    var overlaps = 0;
+    rects.forEach(function (a, i) { rects.slice(i + 1).forEach(function (b) { overlaps += a.left < b.right - 0.5 && b.left < a.right - 0.5 && a.top < b.bottom - 0.5 && b.top < a.bottom - 0.5; }); });
+    check('marks: every label inside the image (one at its right edge, one at its top)', outside.length === 0 && rects.length === 3, outside.length + ' outside of ' + rects.length + ': ' + outside.map(function (r) { return [r.left, r.top, r.right, r.bottom].map(Math.round).join(','); }).join(' ') + ' image ' + [img.left, img.top, img.right, img.bottom].map(Math.round).join(','));
+    check('marks: no two labels overlap', overlaps === 0, overlaps + ' overlapping pairs');
     var labels = Array.prototype.map.call(document.querySelectorAll('.pl-mark-label'), function (e) { return e.textContent; });
     check('marks: labels shown as text (escaped): ' + labels.join(' | '), labels[1] === 'too dark <b>', labels.join(' | '));
     var link = document.querySelector('.pl-link');

@@ -91,6 +91,7 @@ static int parse_render_args(render_args *a, render_plan *p, int argc, char **ar
 static void describe_render(const render_args *a, const render_plan *p, const scene *s, sidecar *m)
 {
     render_meta_describe(m, &p->ro, a->scene, mesh_fingerprint(&s->m), &a->cam.vw, pathlab_revision());
+    render_meta_describe_scene(m, &p->ro.io, &a->so);
     render_adaptive_describe(a, m);
 }
 
@@ -195,7 +196,7 @@ int render_main(int argc, char **argv)
     camera cam;
     int rc;
     if (parse_render_args(&a, &p, argc, argv)) return 2;
-    if (scene_load(&s, a.scene, a.ro.threads, a.ro.quiet)) return 2;
+    if (scene_load(&s, a.scene, &a.so, a.ro.threads, a.ro.quiet)) return 2;
     if (!a.ro.quiet)
         fprintf(stderr, "%s: %d triangles (%d degenerate dropped), %d emitting, %d materials; loaded in %.0f ms, BVH in %.0f ms\n",
                 a.scene, s.m.ntris, s.m.ndegenerate, s.lights.n, s.m.nmats - 1, 1e3 * s.load_seconds, 1e3 * s.bvh_seconds);

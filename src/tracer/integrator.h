@@ -9,6 +9,7 @@
 #include <stdint.h>
 #include "geometry/ray.h"
 #include "sampler/sampler.h"
+#include "tracer/brdf.h"
 #include "tracer/scene.h"
 
 typedef enum { DIR_UNIFORM, DIR_COSINE, DIR_BRDF } dir_strategy;                /* --dir */
@@ -23,6 +24,11 @@ extern const char *const DIRECT_STRATEGY_NAMES[];
 /* bmax of a path with no last bounce (--bounces A:inf): only the roulette or BOUNCES_CAP ends it. */
 #define BOUNCES_NO_END 1000000
 
+/* --normals: shading normals interpolated from the vn (where every corner has one), or the
+ * triangle's own normal everywhere. */
+typedef enum { NORMALS_SHADING, NORMALS_GEOMETRIC } normals_mode;
+extern const char *const NORMALS_MODE_NAMES[];
+
 typedef struct {
     light_strategy light;
     dir_strategy dir;
@@ -31,6 +37,9 @@ typedef struct {
     int rr_depth;             /* Russian roulette after this many bounces; -1: off */
     float rr_below;           /* T > 0: the roulette thins paths whose throughput max(beta) is below T
                                * (--rr-below, or the sampler's default: render_rr_below) */
+    brdf_model material;      /* --material */
+    normals_mode normals;     /* --normals */
+    texture_filter filter;    /* --texture-filter */
 } integrator_opts;
 
 typedef struct {

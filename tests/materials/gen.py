@@ -6,9 +6,11 @@
   under a large emitting quad;
 - tex.obj: a quad facing the camera, vt 0..1, material 'lamp' with map_Ke t2x2.pfm (L0 is the texture)
   and 'wall' with map_Kd half.pfm (constant 0.5); tex-plain.obj the same wall with Kd 0.5 and no map;
-- wild.obj: the wall quad with vn far from the triangle's normal (stress: nothing through it).
+- wild.obj: the wall quad with vn far from the triangle's normal, lit from behind (stress: nothing
+  comes through it); wild-furnace.obj: the sphere furnace with a random unit vn at every corner,
+  half of them pointing into the surface (stress: finite, non-negative).
 PFM textures are written by hand (little-endian, rows bottom to top)."""
-import math, os, struct, sys
+import math, os, random, struct, sys
 
 out = sys.argv[1]
 os.makedirs(out, exist_ok=True)
@@ -99,3 +101,22 @@ wild = ["mtllib tex.mtl", "v -1 -1 0", "v 1 -1 0", "v 1 1 0", "v -1 1 0",
         "usemtl plain", "f 1//1 2//2 3//3 4//4",
         "usemtl light", "v -1 -1 -3", "v 1 -1 -3", "v 1 1 -3", "v -1 1 -3", "f 5 6 7 8"]
 write("wild.obj", "\n".join(wild) + "\n")
+
+# the sphere furnace with random vn at every corner (seeded: the same file every run)
+rng = random.Random(7)
+lines, nv = [], 0
+for l in src:
+    if l.startswith("mtllib"):
+        lines.append("mtllib flatvn-furnace.mtl")
+    elif l.startswith("f "):
+        ids = [int(c.split("/")[0]) for c in l.split()[1:]]
+        corners = []
+        for i in ids:
+            g = [rng.gauss(0, 1) for _ in range(3)]
+            lines.append("vn %.6g %.6g %.6g" % tuple(g))
+            nv += 1
+            corners.append("%d//%d" % (i, nv))
+        lines.append("f " + " ".join(corners))
+    else:
+        lines.append(l)
+write("wild-furnace.obj", "\n".join(lines) + "\n")

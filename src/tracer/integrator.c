@@ -19,11 +19,11 @@
 #include "tracer/integrator.h"
 #include "tracer/brdf.h"
 #include "tracer/sampling.h"
+#include "tracer/surface.h"
 #include <assert.h>
 
 const char *const DIR_STRATEGY_NAMES[] = {"uniform", "cosine", "brdf", 0};
 const char *const DIRECT_STRATEGY_NAMES[] = {"light", "brdf", "mis-balance", "mis-power", 0};
-const char *const NORMALS_MODE_NAMES[] = {"shading", "geometric", 0};
 
 /* A shading point: position, normals facing the incoming ray, local frame, material. With a shading
  * normal n (from the vn) the BRDF and its cosine live in n's frame, while the geometric normal ng
@@ -38,58 +38,6 @@ typedef struct {
     material own;             /* (its name is not copied) */
 } vertex;
 
-/* The weights of a triangle's corners at barycentrics (u, v) (scene_hit_point's: a (1-u-v) + b u + c v). */
-static vec3 corner_weights(float u, float v) { return v3(1.0f - u - v, u, v); }
-
-/* The vn interpolated at the hit, unit length, facing wo; ng (already facing wo) where a corner has
- * none or they cancel out. gKit: the normal interpolated, turned toward the eye (docs/gkit.md). */
-static vec3 shading_normal(const scene *sc, const hit *h, vec3 ng, vec3 wo)
-{
-    const int *id = sc->m.tri_n ? sc->m.tri_n + 3 * h->tri : NULL;
-    vec3 w = corner_weights(h->u, h->v), n;
-    float len;
-    if (!id || id[0] < 0 || id[1] < 0 || id[2] < 0) return ng;
-    n = v3_add(v3_add(v3_scale(sc->m.N[id[0]], w.x), v3_scale(sc->m.N[id[1]], w.y)), v3_scale(sc->m.N[id[2]], w.z));
-    len = v3_length(n);
-    if (!(len > 1e-6f) || !isfinite(len)) return ng;
-    n = v3_scale(n, 1.0f / len);
-    return v3_dot(n, wo) < 0.0f ? v3_scale(n, -1.0f) : n;
-}
-
-/* The texcoord (u, v) of the hit in *uv; 0 if a corner of its triangle has none. */
-static int hit_texcoord(const scene *sc, int tri, vec3 w, float uv[2])
-{
-    const int *id = sc->m.tri_t ? sc->m.tri_t + 3 * tri : NULL;
-    const float *T = sc->m.T;
-    if (!id || id[0] < 0 || id[1] < 0 || id[2] < 0) return 0;
-    uv[0] = T[2 * id[0]] * w.x + T[2 * id[1]] * w.y + T[2 * id[2]] * w.z;
-    uv[1] = T[2 * id[0] + 1] * w.x + T[2 * id[1] + 1] * w.y + T[2 * id[2] + 1] * w.z;
-    return 1;
-}
-
-/* c times texture tex (0: none) at uv, as gKit multiplies a colour by its texture. */
-static vec3 mapped(const scene *sc, const integrator_opts *opt, vec3 c, int tex, const float uv[2])
-{
-    return tex ? v3_mul(c, texture_lookup(&sc->m.textures[tex - 1], uv[0], uv[1], opt->filter)) : c;
-}
-
-/* The material at the hit: the scene's, or a copy with its textures applied at the hit's texcoord
- * and, under --material diffuse, no Ks. */
-static void hit_material(vertex *v, const scene *sc, const integrator_opts *opt, const hit *h)
-{
-    const material *m = &sc->m.mats[sc->m.tri_mat[h->tri]];
-    float uv[2];
-    int drop_Ks = opt->material == BRDF_DIFFUSE && !v3_is_zero(m->Ks), textured = m->tex_Kd || m->tex_Ks;
-    v->mat = m;
-    if (!drop_Ks && !textured) return;
-    v->own.Kd = m->Kd, v->own.Ks = drop_Ks ? v3(0, 0, 0) : m->Ks, v->own.Ke = m->Ke, v->own.Ns = m->Ns;
-    if (textured && hit_texcoord(sc, h->tri, corner_weights(h->u, h->v), uv)) {
-        v->own.Kd = mapped(sc, opt, v->own.Kd, m->tex_Kd, uv);
-        v->own.Ks = mapped(sc, opt, v->own.Ks, drop_Ks ? 0 : m->tex_Ks, uv);
-    }
-    v->mat = &v->own;
-}
-
 /* *v = the vertex at hit h of a ray of direction dir. Written in place: a returned struct was
  * copied through the stack with wide loads that waited on the narrow stores before them (7% of
  * integrate's samples under perf record). */
@@ -100,37 +48,11 @@ static void make_vertex(vertex *v, const scene *sc, const integrator_opts *opt, 
     v->scale = scene_triangle_scale(sc, h->tri);
     v->ng = sc->Ng[h->tri];
     if (v3_dot(v->ng, wo) < 0.0f) v->ng = v3_scale(v->ng, -1.0f);   /* the BRDF is two-sided */
-    v->n = opt->normals == NORMALS_SHADING ? shading_normal(sc, h, v->ng, wo) : v->ng;
+    v->n = opt->normals == NORMALS_SHADING ? surface_normal(sc, h, v->ng, wo) : v->ng;
     v->shaded = v->n.x != v->ng.x || v->n.y != v->ng.y || v->n.z != v->ng.z;
     v->frame = frame_from_normal(v->n);
     v->wo_local = frame_to_local(&v->frame, wo);
-    hit_material(v, sc, opt, h);
-}
-
-/* Ke at point pos of triangle tri, times its map_Ke at pos's texcoord. */
-static vec3 Ke_at(const scene *sc, const integrator_opts *opt, int tri, vec3 pos)
-{
-    const material *m = &sc->m.mats[sc->m.tri_mat[tri]];
-    const int *t = sc->m.tri + 3 * tri;
-    vec3 a, e1, e2, d, w;
-    float d11, d12, d22, dp1, dp2, det, uv[2];
-    if (!m->tex_Ke) return m->Ke;
-    /* the barycentrics of pos: least squares in the triangle's plane */
-    a = sc->m.P[t[0]], e1 = v3_sub(sc->m.P[t[1]], a), e2 = v3_sub(sc->m.P[t[2]], a), d = v3_sub(pos, a);
-    d11 = v3_dot(e1, e1), d12 = v3_dot(e1, e2), d22 = v3_dot(e2, e2), dp1 = v3_dot(d, e1), dp2 = v3_dot(d, e2);
-    det = d11 * d22 - d12 * d12;
-    w = corner_weights((d22 * dp1 - d12 * dp2) / det, (d11 * dp2 - d12 * dp1) / det);
-    return hit_texcoord(sc, tri, w, uv) ? mapped(sc, opt, m->Ke, m->tex_Ke, uv) : m->Ke;
-}
-
-/* Le seen along dir at the hit: emission is one-sided, on the front face only. */
-static vec3 emitted(const scene *sc, const integrator_opts *opt, const hit *h, vec3 dir)
-{
-    const material *m = &sc->m.mats[sc->m.tri_mat[h->tri]];
-    float uv[2];
-    if (!(v3_dot(sc->Ng[h->tri], dir) < 0.0f)) return v3(0, 0, 0);
-    if (!m->tex_Ke || !hit_texcoord(sc, h->tri, corner_weights(h->u, h->v), uv)) return m->Ke;
-    return mapped(sc, opt, m->Ke, m->tex_Ke, uv);
+    v->mat = surface_material(&v->own, sc, opt->material, opt->filter, h);
 }
 
 static int uses_light_sampling(direct_strategy strategy) { return strategy != DIRECT_BRDF; }
@@ -232,8 +154,7 @@ static vec3 direct_from_light(const scene *sc, const integrator_opts *opt, const
     if (v3_is_zero(f) || !visible(sc, p, &s, st)) return v3(0, 0, 0);
     pdf1_sa = pdf_area_to_solid_angle(s.pdf_area, dist2, cos_s);
     w_mis = mis_weight(opt->direct, pdf1_sa, dir_pdf2_sa(opt, p, wi_local));
-    return v3_scale(v3_mul(f, sc->m.mats[sc->m.tri_mat[sc->lights.e[s.emitter].tri]].tex_Ke
-                                  ? Ke_at(sc, opt, sc->lights.e[s.emitter].tri, s.pos) : s.Le), cos_p / pdf1_sa * w_mis);
+    return v3_scale(v3_mul(f, surface_Le_at(sc, opt->filter, &s)), cos_p / pdf1_sa * w_mis);
 }
 
 /* pdf1 per steradian with which light sampling at p would have chosen the point hit at q. */
@@ -250,7 +171,7 @@ static float light_pdf1_sa(const scene *sc, const integrator_opts *opt, const ve
  * MIS-weighted against light sampling. */
 static vec3 direct_from_dir(const scene *sc, const integrator_opts *opt, const vertex *p, const hit *q, const ray *ray_pq, float pdf2_sa)
 {
-    vec3 Le = emitted(sc, opt, q, ray_pq->d);
+    vec3 Le = surface_emitted(sc, opt->filter, q, ray_pq->d);
     float w_mis = 1.0f;
     if (v3_is_zero(Le)) return Le;
     if (uses_light_sampling(opt->direct)) {
@@ -344,7 +265,7 @@ vec3 integrate(const scene *sc, const integrator_opts *opt, const ray *camera, s
 
     st->camera_rays++;
     if (!bvh_intersect(sc->accel, &ray_pq, &q)) return sum.L;
-    if (opt->bmin == 0) add_Lk(&sum, 0, emitted(sc, opt, &q, ray_pq.d));                    /* L0 */
+    if (opt->bmin == 0) add_Lk(&sum, 0, surface_emitted(sc, opt->filter, &q, ray_pq.d));                    /* L0 */
 
     for (k = 1; k <= kmax; k++) {
         vertex p;

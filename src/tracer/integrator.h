@@ -9,8 +9,8 @@
 #include <stdint.h>
 #include "geometry/ray.h"
 #include "sampler/sampler.h"
-#include "tracer/brdf.h"
 #include "tracer/scene.h"
+#include "tracer/surface.h"
 
 typedef enum { DIR_UNIFORM, DIR_COSINE, DIR_BRDF } dir_strategy;                /* --dir */
 typedef enum { DIRECT_LIGHT, DIRECT_BRDF, DIRECT_MIS_BALANCE, DIRECT_MIS_POWER } direct_strategy; /* --direct */
@@ -23,11 +23,6 @@ extern const char *const DIRECT_STRATEGY_NAMES[];
 #define BOUNCES_CAP 1000
 /* bmax of a path with no last bounce (--bounces A:inf): only the roulette or BOUNCES_CAP ends it. */
 #define BOUNCES_NO_END 1000000
-
-/* --normals: shading normals interpolated from the vn (where every corner has one), or the
- * triangle's own normal everywhere. */
-typedef enum { NORMALS_SHADING, NORMALS_GEOMETRIC } normals_mode;
-extern const char *const NORMALS_MODE_NAMES[];
 
 typedef struct {
     light_strategy light;

@@ -58,22 +58,30 @@ static vec3 texel(const texture *t, int x, int y)
     return v3(p[0], p[1], p[2]);
 }
 
-/* gKit's index: int(s n) % n, made positive; s n first brought into (-n, n) by fmod (the same
- * integer part), so that no coordinate overflows an int. */
+/* Texcoords as far out as this are brought back by fmod (slow) before they are cast to an integer. */
+#define TEXCOORD_FAR 1e9
+
+/* gKit's index: int(s n) % n, made positive (fmod first for a far texcoord: the same result without
+ * overflowing an int). */
 static int nearest_index(float s, int n)
 {
-    double x = fmod((double)s * n, (double)n);
-    int i = (int)x;
-    return i < 0 ? -i : i;
+    double x = (double)s * n;
+    long long i;
+    if (fabs(x) > TEXCOORD_FAR) x = fmod(x, (double)n);
+    i = (long long)x % n;
+    return (int)(i < 0 ? -i : i);
 }
 
 /* floor(x) modulo n, in [0, n), and the fraction of x above its floor. */
 static int wrap_floor(double x, int n, float *frac)
 {
-    double f = floor(x), i = fmod(f, (double)n);
+    double f;
+    long long i;
+    if (fabs(x) > TEXCOORD_FAR) x = fmod(x, (double)n);
+    f = floor(x);
     *frac = (float)(x - f);
-    if (i < 0) i += n;
-    return (int)i % n;
+    i = (long long)f % n;
+    return (int)(i < 0 ? i + n : i);
 }
 
 vec3 texture_lookup(const texture *t, float u, float v, texture_filter filter)

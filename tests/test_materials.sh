@@ -12,7 +12,9 @@
 #    the bilinear mix of the four around; map_Kd of a constant 0.5 texture with Kd 1 gives the image of
 #    Kd 0.5 bit for bit; a texture named twice is read once; a map_Kd outside the scene's folder, a
 #    link out of it, a FIFO are refused (exit 2, file:line);
-#  - --mtl FILE replaces the mtllib, its textures relative to FILE's folder; recorded in the sidecar.
+#  - --mtl FILE replaces the mtllib, its textures relative to FILE's folder; recorded in the sidecar;
+#  - --texture-decode: an 8-bit texel 128 is 128/255 raw, 0.2159 srgb; a PFM texture is linear either
+#    way; a texture cut short is refused at its MTL line.
 . "$(dirname "$0")/lib.sh"
 S=$TMP/s
 python3 tests/materials/gen.py "$S" || fail "tests/materials/gen.py failed"
@@ -83,3 +85,17 @@ expect_err "--mtl a missing file: named" "nope.mtl"
 printf 'newmtl other\nKd 1\n' > "$TMP/teacher/o.mtl"
 expect_status "--mtl without the OBJ's usemtl names: refused" 2 $PATHLAB render "$S/lamp.obj" --mtl "$TMP/teacher/o.mtl" -o "$TMP/x.pfm"
 expect_err "--mtl: the unknown name at its OBJ line" "lamp.obj:[0-9]+: unknown material 'lamp'"
+
+# --texture-decode: an 8-bit texel of 128 is 128/255 raw (gKit) and 0.2159 through the sRGB curve; a
+# float texture (PFM) is linear either way
+printf 'P3\n2 1\n255\n128 128 128 255 0 0\n' > "$S/t.ppm"; printf 'newmtl lamp\nKe 1\nmap_Ke t.ppm\n' > "$S/p.mtl"
+$PATHLAB render "$S/lamp.obj" $CAM --mtl "$S/p.mtl" -o "$TMP/raw.pfm"
+$PATHLAB render "$S/lamp.obj" $CAM --mtl "$S/p.mtl" --texture-decode srgb -o "$TMP/srgb.pfm"
+got="$($PX "$TMP/raw.pfm" 0 0) | $($PX "$TMP/srgb.pfm" 0 0) | $($PX "$TMP/srgb.pfm" 3 0)"
+[ "$got" = "0.501961 0.501961 0.501961 | 0.215861 0.215861 0.215861 | 1 0 0" ] && pass "PPM texel 128: raw 128/255, srgb 0.2159 ($got)" || fail "--texture-decode: $got"
+grep -q -- "--texture-decode srgb" "$TMP/srgb.pfm.meta" && pass "--texture-decode srgb in the sidecar" || fail "--texture-decode srgb not in the sidecar"
+$PATHLAB render "$S/lamp.obj" $CAM --texture-decode srgb -o "$TMP/l2.pfm"
+cmp -s "$TMP/l.pfm" "$TMP/l2.pfm" && pass "a PFM texture is linear whatever --texture-decode says" || fail "--texture-decode srgb changed a PFM texture"
+printf 'P6\n2 2\n255\n' > "$S/short.ppm"; printf 'newmtl lamp\nKe 1\nmap_Ke short.ppm\n' > "$S/s.mtl"
+expect_status "a texture cut short: refused" 2 $PATHLAB render "$S/lamp.obj" --mtl "$S/s.mtl" -o "$TMP/x.pfm"
+expect_err "a texture cut short: the MTL line named" "s.mtl:3: cannot read the texture"

@@ -1,6 +1,6 @@
 /* texture.c — the textures of texture.h: read once, stored bottom row first, looked up as gKit does. */
 #include "scene/texture.h"
-#include "image/image.h"
+#include "image/decode.h"
 #include <stdlib.h>
 #include <string.h>
 
@@ -13,12 +13,14 @@ static float srgb_decode(float c)
     return c <= 0.04045f ? c / 12.92f : powf((c + 0.055f) / 1.055f, 2.4f);
 }
 
-/* The file's pixels into *im; *integer: its values are integers over a maxval (8-bit files), to
- * which --texture-decode applies. */
+/* The file's pixels into *im, by its magic bytes (image/decode.h); *integer: its values are integers
+ * over a maxval (PNG, JPEG, TGA, PPM), to which --texture-decode applies. */
 static int read_texels(image *im, const char *path, int *integer)
 {
-    *integer = 0;   /* PFM: linear floats */
-    return img_read_pfm(im, path);
+    img_decoded info;
+    if (img_decode_file(im, path, &info)) return 1;
+    *integer = info.encoding == IMG_ENC_INTEGER;
+    return 0;
 }
 
 int texture_load(texture *t, const char *path, texture_decode decode)

@@ -3,7 +3,8 @@
  * left), so texcoord (u, v) with v up falls on column u w, row v h.
  * - decode raw (gKit's): an 8-bit file's values divided by 255 (its maxval), no sRGB curve: what the
  *   students' renderers multiply Kd by; srgb: those values through the sRGB curve to linear (Blender's
- *   Color images). Files of floats (PFM, HDR) are linear either way.
+ *   Color images). Files of floats (PFM, HDR) are linear either way. Any format image/decode.h reads,
+ *   told by its magic bytes.
  * - nearest (gKit's sample_texture): column int(u w) % w, negative ones made positive, likewise the row;
  *   bilinear: the four texels around (u w - 1/2, v h - 1/2), repeated past the edges (OpenGL's
  *   GL_LINEAR with GL_REPEAT). docs/gkit.md cites gKit's lines. */

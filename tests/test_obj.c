@@ -265,6 +265,19 @@ static void test_index_forms(void)
     if (r == 0)
         check(tri_is(&m, 0, 0, 1, 2) && tri_is(&m, 1, 0, 1, 2) && tri_is(&m, 2, 0, 1, 3) && tri_is(&m, 3, 0, 2, 3),
               "obj_index_forms_values", "vertex indices and corner order kept");
+    if (r == 0) {
+        static const int want_t[12] = {-1, -1, -1, 0, 1, 0, 0, 1, 0, -1, -1, -1};
+        static const int want_n[12] = {-1, -1, -1, -1, -1, -1, 0, 1, 1, 0, 1, 0};
+        check(m.tri_t && m.tri_n && !memcmp(m.tri_t, want_t, sizeof want_t) && !memcmp(m.tri_n, want_n, sizeof want_n),
+              "obj_corner_vt_vn", "each corner keeps its vt and vn (-1: none), made on first use");
+        check(m.N && vec_is(m.N[1], 0, 0, -1) && m.T && m.T[2] == 1.0f && m.T[3] == 0.0f, "obj_vn_vt_values",
+              "vn and vt kept as written");
+    }
+    mesh_free(&m);
+    r = load("tests/obj/vnvt.obj", &m, 1);
+    check(r == 0 && m.ntris == 2 && m.tri_t && m.tri_n && m.tri_t[0] == 0 && m.tri_t[1] == 1 && m.tri_t[2] == 2
+              && m.tri_t[5] == 3 && m.tri_n[3] == 0 && m.tri_n[4] == 2 && m.tri_n[5] == 3 && m.T[6] == 0.0f && m.T[7] == 0.0f,
+          "obj_polygon_vt_vn", "a quad's triangles carry their corners' vt and vn (negative indices, vt without v)");
     mesh_free(&m);
     r = load("tests/obj/negative.obj", &m, 1);
     check(r == 0 && m.ntris == 3, "obj_negative_indices_load", "rc %d %s", r, shown());

@@ -69,6 +69,9 @@ made = {}
 for ob in [o for o in sc.objects if o.type == 'MESH']:
     if a.smooth:   # the importer's custom normals are the vn: smooth shading from them
         for p in ob.data.polygons: p.use_smooth = True
+        # no shadow-terminator fix: Cycles would start shadow rays from a curved surface above the
+        # facet, where gKit's (and pathlab's) start on the facet itself
+        ob.cycles.shadow_terminator_geometry_offset = 0.0; ob.cycles.shadow_terminator_offset = 0.0
     else:   # flat shading from the geometric normal: drop the importer's custom (vn) normals
         if ob.data.has_custom_normals: ob.data.free_normals_split(); bpy.context.view_layer.objects.active = ob; bpy.ops.mesh.customdata_custom_splitnormals_clear()
         ob.data.use_auto_smooth = False

@@ -68,7 +68,13 @@ def make(name, kd, ke, tex=None):
 made = {}
 for ob in [o for o in sc.objects if o.type == 'MESH']:
     if a.smooth:   # the importer's custom normals are the vn: smooth shading from them
-        for p in ob.data.polygons: p.use_smooth = True
+        # Blender keeps custom normals as offsets in a per-corner space that depends on the faces'
+        # smooth flags: turning a flat face (an OBJ without `s 1`) smooth after the import rotates
+        # every vn (the sphere's equator vn (0,0,1) became (0.28,0.23,0.93)). So read the vn as
+        # imported, turn the faces smooth, then set the same vn again.
+        me = ob.data; me.calc_normals_split(); vn = [tuple(l.normal) for l in me.loops]
+        for p in me.polygons: p.use_smooth = True
+        if me.has_custom_normals: me.normals_split_custom_set(vn)
         # no shadow-terminator fix: Cycles would start shadow rays from a curved surface above the
         # facet, where gKit's (and pathlab's) start on the facet itself
         ob.cycles.shadow_terminator_geometry_offset = 0.0; ob.cycles.shadow_terminator_offset = 0.0

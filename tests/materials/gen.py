@@ -9,6 +9,8 @@
 - wild.obj: the wall quad with vn far from the triangle's normal, lit from behind (stress: nothing
   comes through it); wild-furnace.obj: the sphere furnace with a random unit vn at every corner,
   half of them pointing into the surface (stress: finite, non-negative).
+- tilt-plus.obj / tilt-minus.obj: a quad whose vn are tilted 30 degrees, under a small lamp 45 degrees off
+  its normal on either side; tilt.expect holds L1 at the origin (a quadrature).
 PFM textures are written by hand (little-endian, rows bottom to top)."""
 import math, os, random, struct, sys
 
@@ -120,3 +122,37 @@ for l in src:
     else:
         lines.append(l)
 write("wild-furnace.obj", "\n".join(lines) + "\n")
+
+# a flat quad (face normal +y) whose four vn are all tilted by alpha = 30 degrees toward +x, lit by a
+# small square lamp (side 0.2, Ke 1000) at distance 10 in the xy plane, at theta = +45 or -45 degrees
+# from +y, facing the origin: at the origin L1 = Kd/pi * integral over the lamp of
+# Ke max(0, n_s . w) cos_lamp / r^2 dA, which is near Kd/pi * Ke A / D^2 * cos(theta - alpha) (0.123 and
+# 0.0329; the face normal's cosine would give 0.0900 both). Written to tilt.expect, midpoint rule.
+def tilt(theta_deg, alpha_deg=30.0, D=10.0, s=0.2, Le=1000.0):
+    a, t = math.radians(alpha_deg), math.radians(theta_deg)
+    n = (math.sin(a), math.cos(a), 0.0)
+    c = (D * math.sin(t), D * math.cos(t), 0.0)
+    w = (-math.sin(t), -math.cos(t), 0.0)
+    u, v = (0.0, 0.0, 1.0), (-math.cos(t), math.sin(t), 0.0)    # u x v = w: the lamp faces the origin
+    corners = [tuple(c[k] + su * s / 2 * u[k] + sv * s / 2 * v[k] for k in range(3))
+               for su, sv in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+    o = ["mtllib tilt.mtl", "v -1 0 1", "v 1.2 0 1", "v 1.2 0 -1.3", "v -1 0 -1.3",   # origin off the diagonal
+         "vn %.9f %.9f %.9f" % n, "usemtl white", "f 1//1 2//1 3//1 4//1"]
+    o += ["v %.9f %.9f %.9f" % p for p in corners] + ["usemtl bright", "f 5 6 7 8"]
+    N, tot = 200, 0.0
+    for i in range(N):
+        for j in range(N):
+            su, sv = (i + 0.5) / N * 2 - 1, (j + 0.5) / N * 2 - 1
+            q = [c[k] + su * s / 2 * u[k] + sv * s / 2 * v[k] for k in range(3)]
+            r2 = sum(x * x for x in q)
+            d = [x / math.sqrt(r2) for x in q]
+            cs = max(0.0, sum(n[k] * d[k] for k in range(3)))
+            tot += Le * cs * max(0.0, -sum(w[k] * d[k] for k in range(3))) / r2 * (s * s / N / N)
+    return "\n".join(o) + "\n", tot / math.pi
+expect = []
+for name, th in (("tilt-plus", 45.0), ("tilt-minus", -45.0)):
+    text, L = tilt(th)
+    write(name + ".obj", text)
+    expect.append("%s %.6f" % (name, L))
+write("tilt.mtl", "newmtl white\nKd 1\nnewmtl bright\nKe 1000\n")
+write("tilt.expect", "\n".join(expect) + "\n")

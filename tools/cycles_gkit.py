@@ -6,7 +6,8 @@ EXR by Blender itself: no OpenImageIO needed).
 Reference renders with Blender Cycles (Debian's blender 3.4 package), the peer renderer for efficiency.
 blender -b --factory-startup --python cycles_ref.py -- OBJ --eye x,y,z --target x,y,z --up x,y,z
         --fov DEG(vertical) --size WxH --spp N --bounces MAX --out out.exr [--threads 2] [--seed S]
-Materials: MTL Kd -> Lambert (Diffuse BSDF), Ke -> one-sided emission (radiance = Ke), flat shading.
+Materials: MTL Kd -> Lambert (Diffuse BSDF), Ke -> one-sided emission (radiance = Ke), flat shading;
+a Kd or Ke the MTL does not give is 0, as pathlab reads it (an emitter without Kd reflects nothing).
 Glossy (Ks/Ns) is NOT reproduced: use it only on diffuse scenes. Box pixel filter, no clamping,
 no denoising, no adaptive sampling, black world. Coordinates kept as in the OBJ (no axis conversion)."""
 import sys, os, math, argparse
@@ -37,7 +38,7 @@ for line in open(a.obj, encoding='latin-1'):
             for l in open(os.path.join(objdir, name), encoding='latin-1'):
                 t = l.split('#')[0].split()
                 if not t: continue
-                if t[0] == 'newmtl': cur = ' '.join(t[1:]); mtl[cur] = {'Kd': (0.8, 0.8, 0.8), 'Ke': (0, 0, 0), 'map': None}
+                if t[0] == 'newmtl': cur = ' '.join(t[1:]); mtl[cur] = {'Kd': (0, 0, 0), 'Ke': (0, 0, 0), 'map': None}   # a key not given is 0, as pathlab reads it
                 elif t[0] in ('Kd', 'Ke') and cur: mtl[cur][t[0]] = tuple(float(x) for x in (t[1:4] if len(t) > 2 else t[1:2] * 3))
                 elif t[0] == 'map_Kd' and cur: mtl[cur]['map'] = os.path.join(objdir, ' '.join(t[1:]))
 def make(name, kd, ke, tex=None):

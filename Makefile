@@ -116,7 +116,7 @@ $(shell mkdir -p $(BUILD); echo '$(REVISION)' | cmp -s - $(REV_STAMP) 2>/dev/nul
 $(BUILD)/cmd/version.o: $(REV_STAMP)
 $(BUILD)/cmd/version.o: CFLAGS += -DPATHLAB_REVISION='"$(REVISION)"'
 
--include $(OBJ:.o=.d) $(TEST_BIN:=.d) $(BUILD)/bench-plot.d
+-include $(OBJ:.o=.d) $(TEST_BIN:=.d) $(BUILD)/bench-plot.d $(BUILD)/bench-texture.d
 
 # SPP=N for a quicker or cleaner image (default 64; its time on 2 cores: README.md, written by scripts/readme-figures.sh).
 SPP ?= 64
@@ -217,11 +217,12 @@ BENCH_MESHES ?= ../shared/data/meshes/bunny.obj ../shared/data/meshes/dragon.obj
 bench:
 	$(MAKE) NATIVE=1 bench-native
 
-bench-native: $(PROG) $(BUILD)/tests/pfmtool $(BUILD)/bench-plot
+bench-native: $(PROG) $(BUILD)/tests/pfmtool $(BUILD)/bench-plot $(BUILD)/bench-texture
 	@for m in $(BENCH_MESHES); do for t in 1 2; do \
 	  echo "== $$m, $$t thread(s)"; (cd $(BUILD) && $(abspath ../shared/tools/embree-rays/compare.sh) $(abspath $$m) $$t 3); done; done
 	BUILD=$(BUILD) PATHLAB=./$(PROG) bench/direct_modes.sh
 	BUILD=$(BUILD) PATHLAB=./$(PROG) bench/sweep.sh
+	BUILD=$(BUILD) PATHLAB=./$(PROG) bench/texture.sh
 
 bench-portable:
 	$(MAKE) pathlab
@@ -266,6 +267,11 @@ test-parallel: $(PROG) test-deps
 
 test-slurm: $(PROG)
 	PATHLAB=./$(PROG) tests/slurm/run.sh
+
+# The cost of a texture lookup (bench/texture_lookup.c, run by bench/texture.sh), linked like the tests.
+$(BUILD)/bench-texture: bench/texture_lookup.c $(LIB_OBJ)
+	$(call say,LINK,$@)
+	$(Q)$(CC) $(CFLAGS) $(DEPFLAGS) -o $@ bench/texture_lookup.c $(LIB_OBJ) $(LDLIBS)
 
 # The benchmark's error, slopes, ranking and SVG (bench/plot.c), linked like the tests.
 $(BUILD)/bench-plot: bench/plot.c $(LIB_OBJ)

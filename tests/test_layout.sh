@@ -16,7 +16,7 @@ allowed() {
         sys) echo "" ;;
         math) echo "sys" ;;
         geometry) echo "sys math" ;;
-        scene) echo "sys math geometry" ;;
+        scene) echo "sys math geometry image" ;;
         image) echo "sys math" ;;
         sampler) echo "sys math" ;;
         tracer) echo "sys math geometry scene image sampler" ;;

@@ -110,6 +110,18 @@ static const char USAGE_RENDER[] =
     "                       independent with --variance, --resume, --samples or adaptive sampling\n"
     "  --variance FILE.pfm  also write the variance of each pixel's mean (with --split, one per bounce too)\n";
 
+/* The materials, normals and textures, as gKit's (docs/gkit.md). */
+static const char USAGE_MATERIALS[] =
+    "materials and textures, as gKit reads them (docs/gkit.md):\n"
+    "  --material M         blinn: Kd/pi + Ks (Ns+8)/(8 pi) cos^Ns(theta_h), the course's (default); diffuse:\n"
+    "                       Kd/pi alone, as gKit's Monte Carlo tutorials (Ks ignored)\n"
+    "  --normals N          shading: normals interpolated from the OBJ's vn, where a triangle has them (default);\n"
+    "                       geometric: each triangle's own. Either way emission, shadows and offsets use the triangle's\n"
+    "  --texture-filter F   nearest: the texel under (u, v), as gKit samples it (default); bilinear: the 4 around it\n"
+    "  --texture-decode D   raw: an 8-bit texel / 255, as gKit reads it (default); srgb: through the sRGB curve\n"
+    "  --mtl FILE           the materials of FILE instead of the OBJ's mtllib (a teacher's MTL on a student's OBJ);\n"
+    "                       its map_Kd, map_Ks, map_Ke files are relative to FILE's folder\n";
+
 /* The third part: adaptive sampling (docs/adaptive.md). */
 static const char USAGE_ADAPTIVE[] =
     "adaptive sampling (docs/adaptive.md): a pilot of --pilot samples per pixel, from another seed and never kept,\n"
@@ -151,7 +163,7 @@ static int version_main(int argc, char **argv)
 
 /* The commands, by name (util/commands.h). */
 static const command COMMANDS[] = {
-    {"render", render_main, SYN_RENDER, {USAGE_RENDER, USAGE_ADAPTIVE, NULL}, 0},
+    {"render", render_main, SYN_RENDER, {USAGE_RENDER, USAGE_MATERIALS, USAGE_ADAPTIVE, NULL}, 0},
     {"bench-rays", bench_rays_main, SYN_BENCH, {MORE_BENCH, NULL}, 0},
     {"check-sampling", check_sampling_main, SYN_CHECK_SAMPLING, {NULL}, 1},
     {"check-sampler", check_sampler_main, CHECK_SAMPLER_USAGE, {NULL}, 1},

@@ -135,6 +135,43 @@ static int parse_direct(void *ctx, const char *flag, const char *v)
     return 0;
 }
 
+/* --material, --normals, --texture-filter, --texture-decode: a name of the list, stored as its enum */
+static int parse_material(void *ctx, const char *flag, const char *v)
+{
+    render_args *a = ctx;
+    int k;
+    if (parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, BRDF_MODEL_NAMES)) return 1;
+    a->ro.io.material = a->so.model = (brdf_model)k;
+    return 0;
+}
+
+static int parse_normals(void *ctx, const char *flag, const char *v)
+{
+    render_args *a = ctx;
+    int k;
+    if (parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, NORMALS_MODE_NAMES)) return 1;
+    a->ro.io.normals = (normals_mode)k;
+    return 0;
+}
+
+static int parse_texture_filter(void *ctx, const char *flag, const char *v)
+{
+    render_args *a = ctx;
+    int k;
+    if (parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, TEXTURE_FILTER_NAMES)) return 1;
+    a->ro.io.filter = (texture_filter)k;
+    return 0;
+}
+
+static int parse_texture_decode(void *ctx, const char *flag, const char *v)
+{
+    render_args *a = ctx;
+    int k;
+    if (parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, TEXTURE_DECODE_NAMES)) return 1;
+    a->so.obj.decode = (texture_decode)k;
+    return 0;
+}
+
 /* --sampler independent|sobol|sobol1 */
 static int parse_sampler(void *ctx, const char *flag, const char *v)
 {
@@ -203,6 +240,11 @@ void render_flag_table(render_args *a, cli_flag t[RENDER_NFLAGS])
         {"--write-view", CLI_STRING, &a->cam.write_view, 0, 0, NULL, NULL, NULL},
         {"--pixel-offset", CLI_CUSTOM, NULL, 0, 0, NULL, parse_pixel_offset, NULL},
         {"--sampler", CLI_CUSTOM, NULL, 0, 0, SAMPLER_NAMES, parse_sampler, NULL},
+        {"--material", CLI_CUSTOM, NULL, 0, 0, BRDF_MODEL_NAMES, parse_material, NULL},
+        {"--normals", CLI_CUSTOM, NULL, 0, 0, NORMALS_MODE_NAMES, parse_normals, NULL},
+        {"--texture-filter", CLI_CUSTOM, NULL, 0, 0, TEXTURE_FILTER_NAMES, parse_texture_filter, NULL},
+        {"--texture-decode", CLI_CUSTOM, NULL, 0, 0, TEXTURE_DECODE_NAMES, parse_texture_decode, NULL},
+        {"--mtl", CLI_STRING, &a->so.obj.mtl, 0, 0, NULL, NULL, NULL},
         {NULL, CLI_SWITCH, NULL, 0, 0, NULL, NULL, NULL}};
     memcpy(t, flags, sizeof flags);
 }

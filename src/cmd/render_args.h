@@ -19,13 +19,14 @@ typedef struct {
     int spp_given, samples_given, resume;
     int sampler_given;               /* --sampler given (else the plan picks one: render_plan_default_sampler) */
     render_opts ro;                  /* the other flags' values (ro.first, ro.spp: see render_plan) */
+    scene_opts so;                   /* --mtl, --texture-decode, and --material's model (also in ro.io) */
     /* render only (cmd/render_adaptive.h): adaptive sampling */
     int adaptive, target_given, pilot_given, min_given;
     const char *sample_count;        /* --sample-count FILE.pfm (NULL if not given) */
     adaptive_opts ao;
 } render_args;
 
-#define RENDER_NFLAGS 30   /* the flags of render_flag_table, and its closing NULL entry */
+#define RENDER_NFLAGS 35   /* the flags of render_flag_table, and its closing NULL entry */
 
 /* The defaults of pathlab render (16 spp, seed 1, every core, area, brdf, mis-power, 0:inf, rr 3;
  * ro.sampler independent, which is compare's default: render's plan picks its own when --sampler is

@@ -95,6 +95,7 @@ static int parse_render_args(render_args *a, render_plan *p, int argc, char **ar
 static void describe_render(const render_args *a, const render_plan *p, const scene *s, sidecar *m)
 {
     render_meta_describe(m, &p->ro, a->scene, mesh_fingerprint(&s->m), &a->cam.vw, pathlab_revision());
+    render_meta_describe_scene(m, &p->ro.io, &a->so);
     render_adaptive_describe(a, m);
 }
 
@@ -222,10 +223,13 @@ int render_main(int argc, char **argv)
     /* --resume -o FILE: what the command line leaves out is FILE's sidecar's (cmd/render_resume.h) */
     if (render_resume_args(argc, argv, args, &nargs, words, sizeof words)) return 2;
     if (parse_render_args(&a, &p, nargs, args)) return 2;
-    if (scene_load(&s, a.scene, a.ro.threads, a.ro.quiet)) return 2;
-    if (!a.ro.quiet)
-        fprintf(stderr, "%s: %d triangles (%d degenerate dropped), %d emitting, %d materials; loaded in %.0f ms, BVH in %.0f ms\n",
-                shown(a.scene), s.m.ntris, s.m.ndegenerate, s.lights.n, s.m.nmats - 1, 1e3 * s.load_seconds, 1e3 * s.bvh_seconds);
+    if (scene_load(&s, a.scene, &a.so, a.ro.threads, a.ro.quiet)) return 2;
+    if (!a.ro.quiet) {
+        char tex[48] = "";
+        if (s.m.ntextures > 0) snprintf(tex, sizeof tex, ", %d texture%s", s.m.ntextures, s.m.ntextures > 1 ? "s" : "");
+        fprintf(stderr, "%s: %d triangles (%d degenerate dropped), %d emitting, %d materials%s; loaded in %.0f ms, BVH in %.0f ms\n",
+                shown(a.scene), s.m.ntris, s.m.ndegenerate, s.lights.n, s.m.nmats - 1, tex, 1e3 * s.load_seconds, 1e3 * s.bvh_seconds);
+    }
     if (render_make_camera(&a, &s, &cam)) { scene_free(&s); return 2; }
     if (s.lights.n == 0)
         fprintf(stderr, "pathlab render: warning: %s has no emitters (no material with Ke > 0): the image is black\n", shown(a.scene));

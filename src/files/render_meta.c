@@ -32,6 +32,20 @@ void render_meta_describe(sidecar *m, const render_opts *o, const char *scene_pa
     if (o->sampler != SAMPLER_INDEPENDENT) snprintf(m->sampler, sizeof m->sampler, "%s", SAMPLER_NAMES[o->sampler]);
 }
 
+void render_meta_describe_scene(sidecar *m, const integrator_opts *io, const scene_opts *so)
+{
+    size_t n = strlen(m->flags);
+    /* each only when not the default: the sidecars written before these flags stay comparable */
+    if (io->material != BRDF_BLINN) n += (size_t)snprintf(m->flags + n, sizeof m->flags - n, " --material %s", BRDF_MODEL_NAMES[io->material]);
+    if (n < sizeof m->flags && io->normals != NORMALS_SHADING)
+        n += (size_t)snprintf(m->flags + n, sizeof m->flags - n, " --normals %s", NORMALS_MODE_NAMES[io->normals]);
+    if (n < sizeof m->flags && io->filter != TEXTURE_NEAREST)
+        n += (size_t)snprintf(m->flags + n, sizeof m->flags - n, " --texture-filter %s", TEXTURE_FILTER_NAMES[io->filter]);
+    if (n < sizeof m->flags && so->obj.decode != TEXTURE_RAW)
+        n += (size_t)snprintf(m->flags + n, sizeof m->flags - n, " --texture-decode %s", TEXTURE_DECODE_NAMES[so->obj.decode]);
+    if (n < sizeof m->flags && so->obj.mtl) snprintf(m->flags + n, sizeof m->flags - n, " --mtl %s", so->obj.mtl);
+}
+
 void render_meta_describe_adaptive(sidecar *m, const adaptive_opts *ao, int target_given, double time_limit)
 {
     char target[48] = "", time[48] = "";

@@ -10,6 +10,9 @@
  * from view v, by pathlab `revision`; its sample range and its adaptive keys left empty. */
 void render_meta_describe(sidecar *m, const render_opts *o, const char *scene_path, uint64_t scene_id, const view *v,
                           const char *revision);
+/* The flags of the material and the scene's loading appended to m->flags, each when not its default:
+ * --material, --normals, --texture-filter, --texture-decode, --mtl FILE. */
+void render_meta_describe_scene(sidecar *m, const integrator_opts *io, const scene_opts *so);
 /* The adaptive keys of m: the flags in one canonical form (--target-error if target_given, --time
  * if time_limit > 0, --pilot, --min-spp) into m->adaptive. */
 void render_meta_describe_adaptive(sidecar *m, const adaptive_opts *ao, int target_given, double time_limit);

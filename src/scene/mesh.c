@@ -11,6 +11,12 @@ void mesh_free(mesh *m)
     free(m->tri_mat);
     free(m->mats);
     free(m->mat_slots);
+    free(m->N);
+    free(m->T);
+    free(m->tri_n);
+    free(m->tri_t);
+    while (m->ntextures > 0) texture_free(&m->textures[--m->ntextures]);
+    free(m->textures);
     memset(m, 0, sizeof *m); /* a second mesh_free, or a look at the counts, stays harmless */
 }
 
@@ -38,6 +44,23 @@ static uint64_t fnv1a(uint64_t h, const void *data, size_t n)
     return h;
 }
 
+/* The vn, vt and textures of the triangles (none: h unchanged). */
+static uint64_t mesh_fingerprint_more(const mesh *m, uint64_t h)
+{
+    int i;
+    for (i = 0; m->tri_n && i < 3 * m->ntris; i++)
+        if (m->tri_n[i] >= 0) h = fnv1a(h, &m->N[m->tri_n[i]], sizeof(vec3));
+    for (i = 0; m->tri_t && i < 3 * m->ntris; i++)
+        if (m->tri_t[i] >= 0) h = fnv1a(h, &m->T[2 * m->tri_t[i]], 2 * sizeof(float));
+    for (i = 0; i < m->ntextures; i++) {
+        const texture *t = &m->textures[i];
+        h = fnv1a(h, t->rgb, 3 * (size_t)t->w * (size_t)t->h * sizeof(float));
+        h = fnv1a(h, &t->w, sizeof t->w);
+        h = fnv1a(h, &t->h, sizeof t->h);
+    }
+    return h;
+}
+
 uint64_t mesh_fingerprint(const mesh *m)
 {
     uint64_t h = 0xCBF29CE484222325ULL;
@@ -52,6 +75,12 @@ uint64_t mesh_fingerprint(const mesh *m)
         h = fnv1a(h, &t->Ks, sizeof t->Ks);
         h = fnv1a(h, &t->Ke, sizeof t->Ke);
         h = fnv1a(h, &t->Ns, sizeof t->Ns);
+        /* what is new since the first sidecars only when present: their scenes keep their ids */
+        if (t->tex_Kd || t->tex_Ks || t->tex_Ke) {
+            h = fnv1a(h, &t->tex_Kd, sizeof(int));
+            h = fnv1a(h, &t->tex_Ks, sizeof(int));
+            h = fnv1a(h, &t->tex_Ke, sizeof(int));
+        }
     }
-    return h;
+    return mesh_fingerprint_more(m, h);
 }

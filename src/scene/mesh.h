@@ -5,13 +5,17 @@
 #ifndef PATHLAB_MESH_H
 #define PATHLAB_MESH_H
 #include "math/vec.h"
+#include "scene/texture.h"
 #include <stdint.h>
 
-/* The course's BRDF: f = Kd/pi + Ks (Ns+8)/(8 pi) cos^Ns(theta_h); Ke is emitted radiance. */
+/* The course's BRDF: f = Kd/pi + Ks (Ns+8)/(8 pi) cos^Ns(theta_h); Ke is emitted radiance. A map
+ * multiplies its value by a texture's at the hit's texcoord, as gKit does (tex_Kd: 0 none, else
+ * textures[tex_Kd - 1]). */
 typedef struct {
     char name[128];
     vec3 Kd, Ks, Ke;
     float Ns;
+    int tex_Kd, tex_Ks, tex_Ke;
 } material;
 
 typedef struct {
@@ -27,7 +31,14 @@ typedef struct {
     int nslots;         /* its size, a power of two (0: none yet) */
     int mats_indexed;   /* mats[0 .. mats_indexed - 1] are in it */
     int ndegenerate;    /* triangles of zero area dropped at load time */
-    int nnormals, ntexcoords; /* vn / vt lines read (validated, not used for shading) */
+    int nnormals, ntexcoords; /* vn / vt lines read */
+    vec3 *N;            /* the vn, nnormals of them, as written (normalized where they are used) */
+    float *T;           /* the vt, 2 floats (u, v) each, ntexcoords of them (a missing v is 0) */
+    int *tri_n, *tri_t; /* 3 vn / vt indices per triangle, -1 for a corner without one; NULL if no corner has one */
+    texture *textures;  /* the images the materials name, each file once */
+    int ntextures;
+    int n_energy;       /* materials with Kd + Ks > 1 in a channel; energy_note names the first one */
+    char energy_note[320];
 } mesh;
 
 void mesh_free(mesh *m);

@@ -4,7 +4,10 @@
 #include "scene/mtl.h"
 #include "sys/shown.h"
 #include "scene/objtext.h"
+#include "scene/scene_file.h"
+#include <errno.h>
 #include <limits.h>
+#include <unistd.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -61,7 +64,7 @@ static void print_ignored(const objtext *t, const ignored_keys *ig)
         fprintf(stderr, "ignored keys: ");
         print_keys(ig, 0);
         if (ig->others) fprintf(stderr, ", %d other keys", ig->others);
-        fprintf(stderr, trans ? "; " : " (pathlab reads Kd, Ks, Ns, Ke)\n");
+        fprintf(stderr, trans ? "; " : " (pathlab reads Kd, Ks, Ns, Ke, map_Kd, map_Ks, map_Ke)\n");
     }
     if (trans) {
         fprintf(stderr, "not supported: transmission (");
@@ -151,13 +154,56 @@ static int read_color(const objtext *t, char *s, const char *kw, vec3 *c)
     return 1;
 }
 
-/* A surface reflecting more light than it receives makes the path tracer's estimates grow. */
-static void check_energy(const objtext *t, const material *mat, int line)
+/* A surface reflecting more light than it receives makes the path tracer's estimates grow: noted in
+ * the mesh (the first such material named), and said once by the scene's loader, unless the
+ * material model ignores Ks (scene.c). */
+static void check_energy(const objtext *t, mesh *m, const material *mat, int line)
 {
     float most = v3_max_comp(v3_add(mat->Kd, mat->Ks));
-    if (most > 1.0f)
-        objtext_warn(t, line, "material '%s' has Kd + Ks = %g > 1: it creates energy (the image of a closed "
-                             "scene has no finite limit: README.md, Materials)", mat->name, most);
+    if (most > 1.0f && m->n_energy++ == 0)
+        snprintf(m->energy_note, sizeof m->energy_note, "%s:%d: material '%.128s' has Kd + Ks = %g > 1", t->path, line,
+                 mat->name, most);
+}
+
+/* The texture file of path (resolved), read once per scene: its number + 1 in *tex. 1, or 0 after
+ * printing why. */
+static int find_or_load_texture(const objtext *t, mesh *m, char *real, const mtl_opts *o, int *tex)
+{
+    texture *more;
+    int i;
+    for (i = 0; i < m->ntextures; i++)
+        if (!strcmp(m->textures[i].path, real)) break;
+    if (i == m->ntextures) {
+        if (!(more = realloc(m->textures, ((size_t)m->ntextures + 1) * sizeof *more))) return objtext_fail(t, "out of memory");
+        m->textures = more;
+        if (texture_load(&m->textures[i], real, o->decode)) return objtext_fail(t, "cannot read the texture %s", real);
+        m->ntextures++;
+    }
+    *tex = i + 1;
+    return 1;
+}
+
+/* "map_Kd FILE" (map_Ks, map_Ke): FILE relative to the MTL's folder, confined to root. */
+static int read_map(const objtext *t, char *s, const char *kw, mesh *m, const char *root, const mtl_opts *o, int *tex)
+{
+    const char *name = objtext_rest(s);
+    char *path, *real = NULL, *slash;
+    int ok;
+    if (!*name) return objtext_fail(t, "'%s' without a file name", kw);
+    if (name[0] == '-')
+        return objtext_fail(t, "'%s' options (%.*s%s) are not supported: give the file name alone", kw, OBJTEXT_CUT(name));
+    if (!(path = scene_file_sibling(t->path, name))) return objtext_fail(t, "out of memory");
+    for (slash = path; *slash; slash++)
+        if (*slash == '\\') *slash = '/';   /* a Windows exporter's ".\\wall.jpg" */
+    if (access(path, F_OK) != 0 && errno == ENOENT) {   /* scenes from the wild often lack theirs */
+        objtext_warn(t, t->line, "%s '%.*s%s': no such file; the material renders without it", kw, OBJTEXT_CUT(name));
+        free(path);
+        return 1;
+    }
+    ok = scene_file_check(t, root, kw, name, path, TEXTURE_FILE_MAX, &real) && find_or_load_texture(t, m, real, o, tex);
+    free(path);
+    free(real);
+    return ok;
 }
 
 /* One statement other than newmtl, for material mat (NULL before the first newmtl). */
@@ -179,8 +225,21 @@ static int statement(objtext *t, const char *kw, char *s, material *mat, ignored
     return 1;
 }
 
+/* map_Kd, map_Ks, map_Ke of the latest material (cur_is_new: it is of this file); 0 if kw is none of them (*done unset), else 1 with *done = 1 or 0
+ * after printing why. */
+static int map_statement(objtext *t, const char *kw, char *s, mesh *m, int cur_is_new, const char *root, const mtl_opts *o,
+                         int *done)
+{
+    int which = !strcmp(kw, "map_Kd") ? 1 : !strcmp(kw, "map_Ks") ? 2 : !strcmp(kw, "map_Ke") ? 3 : 0;
+    material *mat = &m->mats[m->nmats - 1];
+    if (!which) return 0;
+    *done = 1;
+    if (!cur_is_new) return objtext_fail(t, "'%s' before the first newmtl", kw);
+    return read_map(t, s, kw, m, root, o, which == 1 ? &mat->tex_Kd : which == 2 ? &mat->tex_Ks : &mat->tex_Ke);
+}
+
 /* The energy check of a material runs when it is complete: at the next newmtl or at the end. */
-static int parse(objtext *t, mesh *m)
+static int parse(objtext *t, mesh *m, const char *root, const mtl_opts *o)
 {
     int first = m->nmats, mat_line = 0; /* materials of this file start at index first */
     char *s, *kw;
@@ -190,25 +249,27 @@ static int parse(objtext *t, mesh *m)
         material *cur = m->nmats > first ? &m->mats[m->nmats - 1] : NULL;
         if (!(kw = objtext_word(&s))) continue;
         if (strcmp(kw, "newmtl") != 0) {
-            if (!statement(t, kw, s, cur, &ig)) return 0;
+            int done = 0;
+            if (!map_statement(t, kw, s, m, cur != NULL, root, o, &done) && done) return 0;
+            if (!done && !statement(t, kw, s, cur, &ig)) return 0;
             continue;
         }
-        if (cur) check_energy(t, cur, mat_line);
+        if (cur) check_energy(t, m, cur, mat_line);
         if (!new_material(m, t, objtext_rest(s))) return 0;
         mat_line = t->line;
     }
     if (t->oom) return objtext_fail(t, "out of memory");
-    if (m->nmats > first) check_energy(t, &m->mats[m->nmats - 1], mat_line);
+    if (m->nmats > first) check_energy(t, m, &m->mats[m->nmats - 1], mat_line);
     print_ignored(t, &ig);
     return 1;
 }
 
-int mtl_load(const char *path, mesh *m, int quiet)
+int mtl_load(const char *path, mesh *m, const char *root, const mtl_opts *o)
 {
     objtext t;
-    int err = objtext_open_bounded(&t, path, quiet, MTL_FILE_MAX), ok;
+    int err = objtext_open_bounded(&t, path, o->quiet, MTL_FILE_MAX), ok;
     if (err) return err;
-    ok = objtext_check(&t) && parse(&t, m);
+    ok = objtext_check(&t) && parse(&t, m, root, o);
     objtext_close(&t);
     return ok ? 0 : -1;
 }

@@ -2,37 +2,40 @@
  * Lines come from objtext.c (comments, CR, '\' continuations, no length limit) and MTL files from
  * mtl.c, read when their mtllib line is. Polygons are triangulated by ear clipping in their
  * best-fit plane, keeping the winding of the file. */
-/* realpath (mtllib confinement) is POSIX 2008 but glibc declares it only for X/Open */
-#define _XOPEN_SOURCE 700
 #include "scene/obj.h"
 #include "sys/shown.h"
 #include "scene/mtl.h"
 #include "scene/objtext.h"
 #include "sys/input_file.h"
+#include "scene/scene_file.h"
 #include <errno.h>
 #include <limits.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 /* One corner of the polygon being ear-clipped: its projection and its neighbours still left. */
 typedef struct { double x, y; int prev, next; } corner;
+/* The indices of a face corner: v, vt and vn (-1 without one), 0-based. */
+typedef struct { int v, t, n; } corner_ids;
 
 typedef struct {
     mesh *m;
     objtext *obj;              /* the OBJ file being read: mtllib paths and messages refer to it */
     size_t capP, capT;         /* allocated vertices, triangles */
+    size_t capN, capUV;        /* allocated vn, vt */
     int cur_mat;               /* material of the faces that follow */
     char **libs;               /* paths of the mtllib files read so far */
     int nlibs;
-    int *face;                 /* vertex indices of the face being read */
+    corner_ids *face;          /* the corners of the face being read */
     size_t capface;
     corner *poly;              /* scratch of the ear clipper */
     size_t cappoly;
     long long ear_work;        /* corners tested by is_ear in this file, bounded by OBJ_EAR_WORK_MAX */
     char *dir_real;            /* the OBJ's folder, resolved (realpath), once an mtllib needs it */
+    mtl_opts opts;
+    int mtl_given;             /* --mtl FILE was read: the mtllib lines are skipped */
 } loader;
 
 /* Returns arr with room for need items of size bytes (*cap updated), or NULL when out of memory,
@@ -51,12 +54,49 @@ static void *grow(void *arr, size_t *cap, size_t need, size_t size)
 
 /* ---- triangles and polygons ---- */
 
+/* ids (3 a triangle, NULL: none yet) grown from old to cap triangles; 0 if memory ran out. */
+static int grow_corner_ids(int **ids, size_t old, size_t cap)
+{
+    int *bigger;
+    size_t i;
+    if (!*ids) return 1;
+    if (!(bigger = realloc(*ids, 3 * cap * sizeof *bigger))) return 0;
+    for (i = 3 * old; i < 3 * cap; i++) bigger[i] = -1;
+    *ids = bigger;
+    return 1;
+}
+
+/* A corner id array made on its first use, -1 for the triangles before it; 0 if out of memory. */
+static int first_corner_ids(int **ids, size_t cap)
+{
+    size_t i;
+    if (*ids) return 1;
+    if (!(*ids = malloc(3 * cap * sizeof **ids))) return 0;
+    for (i = 0; i < 3 * cap; i++) (*ids)[i] = -1;
+    return 1;
+}
+
+/* The vt and vn of the corners i, j, k of the face, for triangle m->ntris (not counted yet). */
+static int corner_attributes(loader *L, int i, int j, int k)
+{
+    mesh *m = L->m;
+    const corner_ids *f = L->face;
+    size_t t = 3 * (size_t)m->ntris;
+    int has_t = f[i].t >= 0 || f[j].t >= 0 || f[k].t >= 0, has_n = f[i].n >= 0 || f[j].n >= 0 || f[k].n >= 0;
+    if (has_t && !first_corner_ids(&m->tri_t, L->capT)) return 0;
+    if (has_n && !first_corner_ids(&m->tri_n, L->capT)) return 0;
+    if (m->tri_t) m->tri_t[t] = f[i].t, m->tri_t[t + 1] = f[j].t, m->tri_t[t + 2] = f[k].t;
+    if (m->tri_n) m->tri_n[t] = f[i].n, m->tri_n[t + 1] = f[j].n, m->tri_n[t + 2] = f[k].n;
+    return 1;
+}
+
 /* Appends triangle (a, b, c) in that order, unless its area is zero: those are dropped and
  * counted, since they can't be hit and have no normal. The area is judged as users compute the
  * normal, |(b - a) x (c - a)| in float, so that normalizing it never divides by 0 or inf. */
-static int add_triangle(loader *L, int a, int b, int c)
+static int add_triangle(loader *L, int i, int j, int k)
 {
     mesh *m = L->m;
+    int a = L->face[i].v, b = L->face[j].v, c = L->face[k].v;
     float len = v3_length(v3_cross(v3_sub(m->P[b], m->P[a]), v3_sub(m->P[c], m->P[a])));
     size_t old = L->capT;
     int *tri, *mat;
@@ -70,7 +110,9 @@ static int add_triangle(loader *L, int a, int b, int c)
     if (L->capT != old) { /* tri follows tri_mat's capacity, 3 ints per triangle */
         if (!(tri = realloc(m->tri, 3 * L->capT * sizeof *tri))) goto oom;
         m->tri = tri;
+        if (!grow_corner_ids(&m->tri_t, old, L->capT) || !grow_corner_ids(&m->tri_n, old, L->capT)) goto oom;
     }
+    if (!corner_attributes(L, i, j, k)) goto oom;
     tri = m->tri;
     tri[3 * m->ntris] = a;
     tri[3 * m->ntris + 1] = b;
@@ -138,7 +180,7 @@ static int clip_ears(loader *L, int n, double sign)
         int ok = level == 2 ? is_ear(poly, p, c, nx, sign, &L->ear_work)
                : level == 1 ? sign * orient(&poly[p], &poly[c], &poly[nx]) >= 0 : 1;
         if (ok) {
-            if (!add_triangle(L, L->face[p], L->face[c], L->face[nx])) return 0;
+            if (!add_triangle(L, p, c, nx)) return 0;
             poly[p].next = nx;
             poly[nx].prev = p;
             left--;
@@ -152,7 +194,7 @@ static int clip_ears(loader *L, int n, double sign)
             return objtext_fail(L->obj, "polygons too slow to triangulate: ear clipping gave up after %.0e steps in this "
                                 "file (self-crossing or very large faces); split them", (double)OBJ_EAR_WORK_MAX);
     }
-    return add_triangle(L, L->face[poly[c].prev], L->face[c], L->face[poly[c].next]);
+    return add_triangle(L, poly[c].prev, c, poly[c].next);
 }
 
 /* Triangulates the face L->face[0..n). The polygon is projected on the coordinate plane most
@@ -161,16 +203,16 @@ static int clip_ears(loader *L, int n, double sign)
 static int triangulate(loader *L, int n)
 {
     const vec3 *P = L->m->P;
-    const int *f = L->face;
+    const corner_ids *f = L->face;
     double nrm[3] = {0, 0, 0};
     corner *poly;
     int i, axis;
-    if (n == 3) return add_triangle(L, f[0], f[1], f[2]);
+    if (n == 3) return add_triangle(L, 0, 1, 2);
     if (!(poly = grow(L->poly, &L->cappoly, (size_t)n, sizeof *poly)))
         return objtext_fail(L->obj, "out of memory");
     L->poly = poly;
     for (i = 0; i < n; i++) {
-        vec3 a = P[f[i]], b = P[f[(i + 1) % n]];
+        vec3 a = P[f[i].v], b = P[f[(i + 1) % n].v];
         nrm[0] += ((double)a.y - b.y) * ((double)a.z + b.z);
         nrm[1] += ((double)a.z - b.z) * ((double)a.x + b.x);
         nrm[2] += ((double)a.x - b.x) * ((double)a.y + b.y);
@@ -178,8 +220,8 @@ static int triangulate(loader *L, int n)
     axis = fabs(nrm[0]) > fabs(nrm[1]) ? (fabs(nrm[0]) > fabs(nrm[2]) ? 0 : 2)
                                       : (fabs(nrm[1]) > fabs(nrm[2]) ? 1 : 2);
     for (i = 0; i < n; i++) {
-        poly[i].x = v3_comp(P[f[i]], (axis + 1) % 3);
-        poly[i].y = v3_comp(P[f[i]], (axis + 2) % 3);
+        poly[i].x = v3_comp(P[f[i].v], (axis + 1) % 3);
+        poly[i].y = v3_comp(P[f[i].v], (axis + 2) % 3);
         poly[i].prev = (i + n - 1) % n;
         poly[i].next = (i + 1) % n;
     }
@@ -215,29 +257,31 @@ static int resolve(const objtext *t, long long i, int count, const char *what, i
     return 1;
 }
 
-/* Reads one face corner "v", "v/t", "v/t/n" or "v//n" and checks all its indices; *vi gets v. */
-static int read_corner(loader *L, const char *w, int *vi)
+/* Reads one face corner "v", "v/t", "v/t/n" or "v//n" and checks all its indices into *ids. */
+static int read_corner(loader *L, const char *w, corner_ids *ids)
 {
     const objtext *t = L->obj;
     const mesh *m = L->m;
     const char *s = w;
     long long v, vt = 0, vn = 0;
-    int ok = read_int(&s, &v), has_vt = 0, has_vn = 0, unused;
+    int ok = read_int(&s, &v), has_vt = 0, has_vn = 0;
+    ids->t = ids->n = -1;
     if (ok && *s == '/' && *++s != '/') ok = has_vt = read_int(&s, &vt);
     if (ok && *s == '/') {
         s++;
         ok = has_vn = read_int(&s, &vn);
     }
     if (!ok || *s != '\0') return objtext_fail(t, "bad face corner '%.*s%s' (expected v, v/t, v/t/n or v//n)", OBJTEXT_CUT(w));
-    return resolve(t, v, m->nverts, "vertex", vi)
-        && (!has_vt || resolve(t, vt, m->ntexcoords, "texture coordinate", &unused))
-        && (!has_vn || resolve(t, vn, m->nnormals, "normal", &unused));
+    return resolve(t, v, m->nverts, "vertex", &ids->v)
+        && (!has_vt || resolve(t, vt, m->ntexcoords, "texture coordinate", &ids->t))
+        && (!has_vn || resolve(t, vn, m->nnormals, "normal", &ids->n));
 }
 
 static int read_face(loader *L, char *s)
 {
     char *w;
-    int n = 0, *face;
+    int n = 0;
+    corner_ids *face;
     while ((w = objtext_word(&s))) {
         if (n == OBJ_FACE_MAX)   /* refused before anything more is read or stored */
             return objtext_fail(L->obj, "face with more than %d corners: pathlab refuses larger polygons (their "
@@ -265,6 +309,24 @@ static int read_vertex(loader *L, char *s)
     return 1;
 }
 
+/* "vn x y z" or "vt u [v [w]]" (w ignored, a missing v is 0), kept for shading and textures. */
+static int read_vn_vt(loader *L, const char *kw, char *s)
+{
+    mesh *m = L->m;
+    float v[3] = {0, 0, 0};
+    int normal = kw[1] == 'n', *count = normal ? &m->nnormals : &m->ntexcoords;
+    void *arr;
+    if (objtext_numbers(L->obj, &s, kw, v, normal ? 3 : 1, 3) < 0) return 0;
+    if (*count == INT_MAX) return objtext_fail(L->obj, "too many '%s'", kw);
+    if (normal ? !(arr = grow(m->N, &L->capN, (size_t)*count + 1, sizeof *m->N))
+               : !(arr = grow(m->T, &L->capUV, (size_t)*count + 1, 2 * sizeof *m->T)))
+        return objtext_fail(L->obj, "out of memory");
+    if (normal) m->N = arr, m->N[*count] = v3(v[0], v[1], v[2]);
+    else m->T = arr, m->T[2 * *count] = v[0], m->T[2 * *count + 1] = v[1];
+    ++*count;
+    return 1;
+}
+
 /* "usemtl name". Without any mtllib there is nothing to look the name up in (exporters write
  * "usemtl Default" alone): the default material is used, with a warning. */
 static int use_material(loader *L, const char *name)
@@ -272,7 +334,7 @@ static int use_material(loader *L, const char *name)
     objtext *t = L->obj;
     int i = mtl_find(L->m, name);
     if (i >= 0) { L->cur_mat = i; return 1; }
-    if (L->nlibs > 0)
+    if (L->nlibs > 0 || L->mtl_given)
         return objtext_fail(t, "unknown material '%.*s%s' (no newmtl of that name in the mtllib files read so far)",
                             OBJTEXT_CUT(name));
     if (objtext_first_time(t, "usemtl"))
@@ -287,17 +349,11 @@ static int load_mtl(loader *L, const char *name);
 static int statement(loader *L, const char *kw, char *s)
 {
     objtext *t = L->obj;
-    float v[3];
     char *name;
     int n = 0;
     if (strcmp(kw, "v") == 0) return read_vertex(L, s);
     if (strcmp(kw, "f") == 0) return read_face(L, s);
-    if (strcmp(kw, "vn") == 0 || strcmp(kw, "vt") == 0) {
-        if (objtext_numbers(t, &s, kw, v, kw[1] == 'n' ? 3 : 1, 3) < 0) return 0;
-        if (kw[1] == 'n') L->m->nnormals++;
-        else L->m->ntexcoords++;
-        return 1;
-    }
+    if (strcmp(kw, "vn") == 0 || strcmp(kw, "vt") == 0) return read_vn_vt(L, kw, s);
     if (strcmp(kw, "usemtl") == 0) return use_material(L, objtext_rest(s));
     if (strcmp(kw, "mtllib") == 0) {
         for (; (name = objtext_word(&s)); n++)
@@ -318,77 +374,20 @@ static int statement(loader *L, const char *kw, char *s)
 
 /* ---- the whole file ---- */
 
-/* The path of file name, relative to the folder of file `from` unless it is absolute. */
-static char *sibling_path(const char *from, const char *name)
-{
-    const char *slash = strrchr(from, '/');
-    size_t dir = name[0] == '/' || !slash ? 0 : (size_t)(slash - from) + 1;
-    char *path = malloc(dir + strlen(name) + 1);
-    if (!path) return NULL;
-    memcpy(path, from, dir);
-    strcpy(path + dir, name);
-    return path;
-}
-
 /* The OBJ's folder, resolved once (realpath) into L->dir_real: files the scene names must be in it. */
 static int scene_folder(loader *L)
 {
-    const char *path = L->obj->path, *slash = strrchr(path, '/');
-    size_t n = !slash ? 0 : slash == path ? 1 : (size_t)(slash - path);
-    char *dir;
     if (L->dir_real) return 1;
-    if (!(dir = malloc(n + 2))) return objtext_fail(L->obj, "out of memory");
-    memcpy(dir, n ? path : ".", n ? n : 1);
-    dir[n ? n : 1] = '\0';
-    L->dir_real = realpath(dir, NULL);
-    free(dir);
+    L->dir_real = scene_file_folder(L->obj->path);
     if (!L->dir_real) return objtext_fail(L->obj, "cannot resolve the scene's folder: %s", strerror(errno));
     return 1;
-}
-
-/* Whether resolved path real is folder dir (resolved too) or below it. */
-static int inside(const char *dir, const char *real)
-{
-    size_t n = strlen(dir);
-    return n == 1 || (strncmp(real, dir, n) == 0 && real[n] == '/');   /* n == 1: dir is "/" */
-}
-
-/* A file the scene names (path: name joined to the OBJ's folder) must be a regular file in the
- * scene's folder or below, of at most MTL_FILE_MAX bytes: a grading machine renders students'
- * files, which must not read /etc/passwd, /dev/zero (forever) or a FIFO (blocks). Symlinks are
- * followed (realpath), so one pointing out is refused too. 1, or 0 after printing why. */
-static int check_scene_file(loader *L, const char *name, const char *path)
-{
-    const objtext *t = L->obj;
-    struct stat st;
-    char *real;
-    int ok = 0;
-    if (!scene_folder(L)) return 0;
-    if (!(real = realpath(path, NULL)))
-        return objtext_fail(t, "cannot open '%.*s%s': %s", OBJTEXT_CUT(name), strerror(errno));
-    if (!inside(L->dir_real, real))
-        objtext_fail(t, "mtllib '%.*s%s' is outside the scene's folder %s (it is %s): a scene may only name files in "
-                        "its folder or below", OBJTEXT_CUT(name), L->dir_real, real);
-    else if (stat(real, &st) != 0)
-        objtext_fail(t, "cannot open '%.*s%s': %s", OBJTEXT_CUT(name), strerror(errno));
-    else if (S_ISDIR(st.st_mode))
-        objtext_fail(t, "mtllib '%.*s%s' is a folder, not a file", OBJTEXT_CUT(name));
-    else if (!S_ISREG(st.st_mode))
-        objtext_fail(t, "mtllib '%.*s%s' is not a regular file (a device, FIFO or socket)", OBJTEXT_CUT(name));
-    else if (st.st_size > (off_t)MTL_FILE_MAX)
-        objtext_fail(t, "mtllib '%.*s%s' is larger than %d MiB, the limit of a file a scene names",
-                     OBJTEXT_CUT(name), (int)(MTL_FILE_MAX >> 20));
-    else
-        ok = 1;
-    free(real);
-    return ok;
 }
 
 /* Reads MTL file name, relative to the OBJ's folder; its materials are then usable. A file read
  * already is skipped: some exporters repeat the mtllib line before every object. */
 static int load_mtl(loader *L, const char *name)
 {
-    char *path = sibling_path(L->obj->path, name), **libs;
+    char *path = scene_file_sibling(L->obj->path, name), **libs;
     int i, err;
     for (i = 0; path && i < L->nlibs; i++)
         if (strcmp(L->libs[i], path) == 0) {
@@ -401,15 +400,19 @@ static int load_mtl(loader *L, const char *name)
     }
     L->libs = libs;
     L->libs[L->nlibs++] = path;
-    if (!check_scene_file(L, name, path)) return 0;
-    err = mtl_load(path, L->m, L->obj->quiet);
+    if (L->mtl_given) return 1;   /* --mtl FILE replaces the OBJ's own */
+    if (!scene_folder(L) || !scene_file_check(L->obj, L->dir_real, "mtllib", name, path, MTL_FILE_MAX, NULL)) return 0;
+    err = mtl_load(path, L->m, L->dir_real, &L->opts);
     if (err > 0) return objtext_fail(L->obj, "cannot open '%.*s%s': %s", OBJTEXT_CUT(name), strerror(err));
     return err == 0;
 }
 
 static int add_default_material(mesh *m)
 {
-    if (!(m->mats = calloc(1, sizeof *m->mats))) return 0;
+    if (!(m->mats = calloc(1, sizeof *m->mats))) {
+        fprintf(stderr, "out of memory\n");
+        return 0;
+    }
     strcpy(m->mats[0].name, "(default)");
     m->mats[0].Kd = v3(0.5f, 0.5f, 0.5f);
     m->nmats = 1;
@@ -437,14 +440,27 @@ static int parse(loader *L)
 {
     objtext *t = L->obj;
     char *s, *kw;
-    if (!add_default_material(L->m)) return objtext_fail(t, "out of memory");
     while ((s = objtext_line(t)))
         if ((kw = objtext_word(&s)) && !statement(L, kw, s)) return 0;
     if (t->oom) return objtext_fail(t, "out of memory");
     return finish(L);
 }
 
-int obj_load(const char *path, mesh *m, int quiet)
+/* --mtl FILE: a path given on the command line, not confined to the scene's folder; its textures are
+ * confined to FILE's folder. 1, or 0 after printing why. */
+static int load_given_mtl(loader *L, const char *file)
+{
+    char *root = scene_file_folder(file);
+    int err = root ? mtl_load(file, L->m, root, &L->opts) : errno;
+    free(root);
+    if (err > 0) fprintf(stderr, "%s: cannot open (--mtl): %s\n", file, strerror(err));
+    L->mtl_given = 1;
+    return err == 0;
+}
+
+int obj_load(const char *path, mesh *m, int quiet) { return obj_load_with(path, m, NULL, quiet); }
+
+int obj_load_with(const char *path, mesh *m, const mtl_opts *o, int quiet)
 {
     objtext t;
     loader L;
@@ -453,10 +469,12 @@ int obj_load(const char *path, mesh *m, int quiet)
     memset(&L, 0, sizeof L);
     L.m = m;
     L.obj = &t;
+    if (o) L.opts = *o;
+    L.opts.quiet = quiet;
     if ((err = objtext_open(&t, path, quiet)))
         fprintf(stderr, "%s: cannot open: %s\n", shown(path), input_file_why(err));
     else
-        ok = objtext_check(&t) && parse(&L);
+        ok = objtext_check(&t) && add_default_material(m) && (!L.opts.mtl || load_given_mtl(&L, L.opts.mtl)) && parse(&L);
     objtext_close(&t);
     free(L.face);
     free(L.poly);

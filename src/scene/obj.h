@@ -10,6 +10,7 @@
  *   the next one. Lines have no length limit; CRLF, tabs, a UTF-8 BOM and a missing final newline
  *   are fine. Files with NUL bytes (UTF-16, binaries) are refused.
  * - 'o', 'g', 's' are accepted; 'l', 'p' are ignored (one warning); other keywords get one warning.
+ * - vn and vt are kept: a triangle's corners carry them (tri_n, tri_t) for shading normals and textures.
  * - mtllib takes one or more file names, split at blanks, relative to the OBJ's folder; each file
  *   is read at its mtllib line (once: a repeated name is skipped). A usemtl name (the rest of
  *   the line, trimmed) must be defined by a newmtl in those files, else it is an error; the
@@ -30,10 +31,13 @@
 #ifndef PATHLAB_OBJ_H
 #define PATHLAB_OBJ_H
 #include "scene/mesh.h"
+#include "scene/mtl.h"
 
 #define OBJ_FACE_MAX 4096   /* corners of a face; more is an error (see above) */
 
 /* Loads path into m. Returns 0 on success, nonzero after printing the error. Warnings (ignored
- * MTL keys, once each; Kd+Ks > 1) go to stderr unless quiet. */
+ * MTL keys, once each) go to stderr unless quiet; Kd+Ks > 1 is noted in m (n_energy, energy_note). */
 int obj_load(const char *path, mesh *m, int quiet);
+/* The same with the command line's options (NULL: none). */
+int obj_load_with(const char *path, mesh *m, const mtl_opts *o, int quiet);
 #endif

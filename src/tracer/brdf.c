@@ -2,6 +2,8 @@
 #include "tracer/brdf.h"
 #include "tracer/sampling.h"
 
+const char *const BRDF_MODEL_NAMES[] = {"blinn", "diffuse", 0};
+
 static vec3 half_vector(vec3 wo, vec3 wi) { return v3_normalize(v3_add(wo, wi)); }
 
 vec3 brdf_eval(const material *m, vec3 wo, vec3 wi)

@@ -5,6 +5,11 @@
 #define PATHLAB_BRDF_H
 #include "scene/mesh.h"
 
+/* --material: the course's blinn (Kd/pi + the Ks lobe, the default) or gKit's Monte Carlo tutorials'
+ * diffuse (Kd/pi alone: Ks is ignored). docs/gkit.md. */
+typedef enum { BRDF_BLINN, BRDF_DIFFUSE } brdf_model;
+extern const char *const BRDF_MODEL_NAMES[];   /* in enum order, NULL-terminated */
+
 /* f(wo, wi) per channel, per steradian. */
 vec3 brdf_eval(const material *m, vec3 wo, vec3 wi);
 

@@ -19,39 +19,40 @@
 #include "tracer/integrator.h"
 #include "tracer/brdf.h"
 #include "tracer/sampling.h"
+#include "tracer/surface.h"
 #include <assert.h>
 
 const char *const DIR_STRATEGY_NAMES[] = {"uniform", "cosine", "brdf", 0};
 const char *const DIRECT_STRATEGY_NAMES[] = {"light", "brdf", "mis-balance", "mis-power", 0};
 
-/* A shading point: position, normal facing the incoming ray, local frame, material. */
+/* A shading point: position, normals facing the incoming ray, local frame, material. With a shading
+ * normal n (from the vn) the BRDF and its cosine live in n's frame, while the geometric normal ng
+ * keeps deciding what is below the surface (no light comes through it, no path goes into it) and
+ * where rays leave from. */
 typedef struct {
-    vec3 pos, n, wo_local;
+    vec3 pos, n, ng, wo_local;
     float scale;              /* triangle_scale of its triangle, for offset_ray_origin */
     frame frame;              /* n is its z axis */
-    const material *mat;
+    int shaded;               /* n is not ng */
+    const material *mat;      /* the scene's material, or `own` when textures or --material change it here */
+    material own;             /* (its name is not copied) */
 } vertex;
 
 /* *v = the vertex at hit h of a ray of direction dir. Written in place: a returned struct was
  * copied through the stack with wide loads that waited on the narrow stores before them (7% of
  * integrate's samples under perf record). */
-static void make_vertex(vertex *v, const scene *sc, const hit *h, vec3 dir)
+static void make_vertex(vertex *v, const scene *sc, const integrator_opts *opt, const hit *h, vec3 dir)
 {
     vec3 wo = v3_scale(dir, -1.0f / v3_length(dir));
     v->pos = scene_hit_point(sc, h);
     v->scale = scene_triangle_scale(sc, h->tri);
-    v->n = sc->Ng[h->tri];
-    if (v3_dot(v->n, wo) < 0.0f) v->n = v3_scale(v->n, -1.0f);   /* the BRDF is two-sided */
+    v->ng = sc->Ng[h->tri];
+    if (v3_dot(v->ng, wo) < 0.0f) v->ng = v3_scale(v->ng, -1.0f);   /* the BRDF is two-sided */
+    v->n = opt->normals == NORMALS_SHADING ? surface_normal(sc, h, v->ng, wo) : v->ng;
+    v->shaded = v->n.x != v->ng.x || v->n.y != v->ng.y || v->n.z != v->ng.z;
     v->frame = frame_from_normal(v->n);
     v->wo_local = frame_to_local(&v->frame, wo);
-    v->mat = &sc->m.mats[sc->m.tri_mat[h->tri]];
-}
-
-/* Le seen along dir at the hit: emission is one-sided, on the front face only. */
-static vec3 emitted(const scene *sc, const hit *h, vec3 dir)
-{
-    vec3 Ke = sc->m.mats[sc->m.tri_mat[h->tri]].Ke;
-    return v3_dot(sc->Ng[h->tri], dir) < 0.0f ? Ke : v3(0, 0, 0);
+    v->mat = surface_material(&v->own, sc, opt->material, opt->filter, h);
 }
 
 static int uses_light_sampling(direct_strategy strategy) { return strategy != DIRECT_BRDF; }
@@ -125,7 +126,7 @@ static vec3 sample_dir(const integrator_opts *opt, const vertex *p, const vertex
 static int visible(const scene *sc, const vertex *p, const light_sample *s, trace_stats *st)
 {
     ray shadow;
-    shadow.o = offset_ray_origin(p->pos, p->n, p->scale);
+    shadow.o = offset_ray_origin(p->pos, p->ng, p->scale);
     shadow.d = v3_sub(offset_ray_origin(s->pos, s->n, scene_triangle_scale(sc, sc->lights.e[s->emitter].tri)), shadow.o);
     shadow.tmax = 1.0f;
     st->shadow_rays++;
@@ -147,12 +148,13 @@ static vec3 direct_from_light(const scene *sc, const integrator_opts *opt, const
     cos_p = v3_dot(p->n, wi_world);
     cos_s = -v3_dot(s.n, wi_world);
     if (cos_p <= 0.0f || cos_s <= 0.0f || !(dist2 > 0.0f)) return v3(0, 0, 0);   /* no shadow ray: no light */
+    if (p->shaded && !(v3_dot(p->ng, wi_world) > 0.0f)) return v3(0, 0, 0);      /* s is below the surface */
     wi_local = frame_to_local(&p->frame, wi_world);
     f = brdf_eval(p->mat, p->wo_local, wi_local);
     if (v3_is_zero(f) || !visible(sc, p, &s, st)) return v3(0, 0, 0);
     pdf1_sa = pdf_area_to_solid_angle(s.pdf_area, dist2, cos_s);
     w_mis = mis_weight(opt->direct, pdf1_sa, dir_pdf2_sa(opt, p, wi_local));
-    return v3_scale(v3_mul(f, s.Le), cos_p / pdf1_sa * w_mis);
+    return v3_scale(v3_mul(f, surface_Le_at(sc, opt->filter, &s)), cos_p / pdf1_sa * w_mis);
 }
 
 /* pdf1 per steradian with which light sampling at p would have chosen the point hit at q. */
@@ -169,7 +171,7 @@ static float light_pdf1_sa(const scene *sc, const integrator_opts *opt, const ve
  * MIS-weighted against light sampling. */
 static vec3 direct_from_dir(const scene *sc, const integrator_opts *opt, const vertex *p, const hit *q, const ray *ray_pq, float pdf2_sa)
 {
-    vec3 Le = emitted(sc, q, ray_pq->d);
+    vec3 Le = surface_emitted(sc, opt->filter, q, ray_pq->d);
     float w_mis = 1.0f;
     if (v3_is_zero(Le)) return Le;
     if (uses_light_sampling(opt->direct)) {
@@ -184,7 +186,7 @@ static vec3 direct_from_dir(const scene *sc, const integrator_opts *opt, const v
  * 8-byte read of d.x, d.y straddled two stores, which the CPU cannot forward (a stall per ray). */
 static void continuation_ray(ray *r, const vertex *p, vec3 wi_local)
 {
-    r->o = offset_ray_origin(p->pos, p->n, p->scale);
+    r->o = offset_ray_origin(p->pos, p->ng, p->scale);
     r->d = frame_to_world(&p->frame, wi_local);
     r->tmax = INFINITY;
 }
@@ -263,7 +265,7 @@ vec3 integrate(const scene *sc, const integrator_opts *opt, const ray *camera, s
 
     st->camera_rays++;
     if (!bvh_intersect(sc->accel, &ray_pq, &q)) return sum.L;
-    if (opt->bmin == 0) add_Lk(&sum, 0, emitted(sc, &q, ray_pq.d));                    /* L0 */
+    if (opt->bmin == 0) add_Lk(&sum, 0, surface_emitted(sc, opt->filter, &q, ray_pq.d));                    /* L0 */
 
     for (k = 1; k <= kmax; k++) {
         vertex p;
@@ -273,7 +275,7 @@ vec3 integrate(const scene *sc, const integrator_opts *opt, const ray *camera, s
         /* the last bounce needs a continuation ray only to find emitters by direction sampling */
         int continues = k < kmax || uses_dir_sampling(opt->direct);
         vertex_numbers u;
-        make_vertex(&p, sc, &q, ray_pq.d);              /* the last q is the new p */
+        make_vertex(&p, sc, opt, &q, ray_pq.d);              /* the last q is the new p */
         sampler_vertex(smp, k);                         /* the numbers of vertex k */
         draw_numbers(opt, &p, smp, samples_light, continues, &u);
 
@@ -284,11 +286,12 @@ vec3 integrate(const scene *sc, const integrator_opts *opt, const ray *camera, s
         /* the next vertex q, in a direction chosen with pdf2: beta *= f G(p, q) / pdf2_area(q) */
         wi_local = sample_dir(opt, &p, &u, &pdf2_sa);
         if (!(pdf2_sa > 0.0f)) break;
+        continuation_ray(&ray_pq, &p, wi_local);
+        if (p.shaded && !(v3_dot(ray_pq.d, p.ng) > 0.0f)) break;       /* into the surface: no light comes from there */
         f = brdf_eval(p.mat, p.wo_local, wi_local);
         cos_p = wi_local.z;
         beta = v3_mul(beta, v3_scale(f, cos_p / pdf2_sa));
         if (v3_is_zero(beta)) break;                                    /* no light can follow */
-        continuation_ray(&ray_pq, &p, wi_local);
         st->continuation_rays++;
         if (!bvh_intersect(sc->accel, &ray_pq, &q)) break;
 

@@ -10,6 +10,7 @@
 #include "geometry/ray.h"
 #include "sampler/sampler.h"
 #include "tracer/scene.h"
+#include "tracer/surface.h"
 
 typedef enum { DIR_UNIFORM, DIR_COSINE, DIR_BRDF } dir_strategy;                /* --dir */
 typedef enum { DIRECT_LIGHT, DIRECT_BRDF, DIRECT_MIS_BALANCE, DIRECT_MIS_POWER } direct_strategy; /* --direct */
@@ -31,6 +32,9 @@ typedef struct {
     int rr_depth;             /* Russian roulette after this many bounces; -1: off */
     float rr_below;           /* T > 0: the roulette thins paths whose throughput max(beta) is below T
                                * (--rr-below, or the sampler's default: render_rr_below) */
+    brdf_model material;      /* --material */
+    normals_mode normals;     /* --normals */
+    texture_filter filter;    /* --texture-filter */
 } integrator_opts;
 
 typedef struct {

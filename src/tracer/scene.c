@@ -2,7 +2,6 @@
 #include "tracer/scene.h"
 #include "sys/shown.h"
 #include "sys/clock.h"
-#include "scene/obj.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -26,13 +25,38 @@ static int triangle_geometry(scene *sc)
     return 0;
 }
 
-int scene_load(scene *sc, const char *path, int threads, int quiet)
+/* The vn made unit length (a zero one stays zero: the shading normal then falls back on Ng). */
+static void normalize_normals(mesh *m)
+{
+    int i;
+    for (i = 0; i < m->nnormals; i++) {
+        float len = v3_length(m->N[i]);
+        if (len > 0.0f && isfinite(len)) m->N[i] = v3_scale(m->N[i], 1.0f / len);
+        else m->N[i] = v3(0, 0, 0);
+    }
+}
+
+/* Kd + Ks > 1, said once for the whole scene: not under --material diffuse, which ignores Ks. */
+static void warn_energy(const mesh *m, brdf_model model, int quiet)
+{
+    if (quiet || model == BRDF_DIFFUSE || m->n_energy == 0) return;
+    fprintf(stderr, "%s: it creates energy (the image of a closed scene has no finite limit: README.md, Materials)", m->energy_note);
+    if (m->n_energy > 1) fprintf(stderr, "; and %d other material%s", m->n_energy - 1, m->n_energy > 2 ? "s" : "");
+    fprintf(stderr, "; --material diffuse ignores Ks\n");
+}
+
+int scene_load(scene *sc, const char *path, const scene_opts *so, int threads, int quiet)
 {
     double t0;
+    scene_opts none;
     memset(sc, 0, sizeof *sc);   /* so that scene_free is safe wherever loading stops */
+    memset(&none, 0, sizeof none);
+    if (!so) so = &none;
     t0 = clock_seconds();
-    if (obj_load(path, &sc->m, quiet)) return 1;
+    if (obj_load_with(path, &sc->m, &so->obj, quiet)) return 1;
     sc->load_seconds = clock_seconds() - t0;
+    normalize_normals(&sc->m);
+    warn_energy(&sc->m, so->model, quiet);
     if (triangle_geometry(sc) || light_build(&sc->lights, &sc->m, sc->Ng, sc->area)) {
         fprintf(stderr, "%s: out of memory\n", shown(path));
         scene_free(sc);

@@ -6,6 +6,15 @@
 #include "geometry/ray.h"
 #include "tracer/light.h"
 #include "scene/mesh.h"
+#include "scene/obj.h"
+#include "tracer/brdf.h"
+
+/* What the command line says of loading: --mtl and --texture-decode (obj), and --material, for the
+ * warning about Kd + Ks > 1 (none with diffuse, which ignores Ks). */
+typedef struct {
+    mtl_opts obj;
+    brdf_model model;
+} scene_opts;
 
 typedef struct {
     mesh m;
@@ -17,9 +26,9 @@ typedef struct {
     double load_seconds, bvh_seconds;   /* parse time, BVH build time */
 } scene;
 
-/* Loads the OBJ at path and builds everything with up to `threads` threads; 0 on success
- * (errors are printed as file:line: message). */
-int scene_load(scene *sc, const char *path, int threads, int quiet);
+/* Loads the OBJ at path with the options so (NULL: the defaults) and builds everything with up to
+ * `threads` threads; 0 on success (errors are printed as file:line: message). The vn are normalized. */
+int scene_load(scene *sc, const char *path, const scene_opts *so, int threads, int quiet);
 void scene_free(scene *sc);
 /* Hit point on triangle h->tri from its barycentrics. */
 vec3 scene_hit_point(const scene *sc, const hit *h);

@@ -76,7 +76,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     view_path = vw_at ? fuzz_write(2, "scene.view", vw_at + 8, (size_t)(end - (vw_at + 8))) : fuzz_absent(2, "scene.view");
     view_defaults(&vw);
     vr = view_read(&vw, view_path);
-    if (scene_load(&sc, obj_path, 1, 1) == 0) {
+    if (scene_load(&sc, obj_path, NULL, 1, 1) == 0) {
         if (vr <= 0) render_tiny(&sc, &vw, size ? data[size - 1] : 0);
         scene_free(&sc);
     }

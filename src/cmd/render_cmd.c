@@ -196,12 +196,13 @@ int render_main(int argc, char **argv)
     int rc;
     if (parse_render_args(&a, &p, argc, argv)) return 2;
     if (scene_load(&s, a.scene, a.ro.threads, a.ro.quiet)) return 2;
+    if (scene_add_sky(&s, &a.ro.sky)) { scene_free(&s); return 2; }
     if (!a.ro.quiet)
         fprintf(stderr, "%s: %d triangles (%d degenerate dropped), %d emitting, %d materials; loaded in %.0f ms, BVH in %.0f ms\n",
                 a.scene, s.m.ntris, s.m.ndegenerate, s.lights.n, s.m.nmats - 1, 1e3 * s.load_seconds, 1e3 * s.bvh_seconds);
     if (render_make_camera(&a, &s, &cam)) { scene_free(&s); return 2; }
-    if (s.lights.n == 0)
-        fprintf(stderr, "pathlab render: warning: %s has no emitters (no material with Ke > 0): the image is black\n", a.scene);
+    if (!scene_has_light(&s))
+        fprintf(stderr, "pathlab render: warning: %s has no emitters (no material with Ke > 0) and no --sky: the image is black\n", a.scene);
     rc = render_and_write(&a, &p, &s, &cam);
     scene_free(&s);
     return rc;

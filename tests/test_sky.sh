@@ -101,3 +101,40 @@ $PATHLAB render "$TMP/choice.obj" --quiet "${choice[@]}" --direct brdf --seed 2 
 $PATHLAB render "$TMP/choice.obj" --quiet "${choice[@]}" --light power --seed 3 -o "$TMP/cm.pfm" --variance "$TMP/cm_var.pfm"
 zcheck_expect "sky and an emitter: light sampling alone (the choice by power) = BRDF sampling alone" 0 "$TMP/cl.pfm" "$TMP/cl_var.pfm" "$TMP/cb.pfm" "$TMP/cb_var.pfm" --pixel-pass 0
 zcheck_expect "sky and an emitter: MIS, --light power = BRDF sampling alone" 0 "$TMP/cm.pfm" "$TMP/cm_var.pfm" "$TMP/cb.pfm" "$TMP/cb_var.pfm" --pixel-pass 0
+
+# Framing (scene/mesh.h, mesh_framing_bounds): without a view, the camera frames the scene but not a
+# backdrop that dwarfs it. The sphere on a 40 x 40 floor gets the sphere's own view; the Cornell
+# box (its blocks and light span more than a quarter of it) keeps the whole box's.
+cp "$TMP/sphere.obj" "$TMP/floored.obj"
+n=$(grep -c "^v " "$TMP/sphere.obj")
+printf 'v -20 -1 -20\nv 20 -1 -20\nv 20 -1 20\nv -20 -1 20\nf %d %d %d\nf %d %d %d\n' $((n + 1)) $((n + 3)) $((n + 2)) $((n + 1)) $((n + 4)) $((n + 3)) >> "$TMP/floored.obj"
+for s in sphere floored; do
+    $PATHLAB render "$TMP/$s.obj" --quiet --size 8x8 --spp 1 --sky 1,1,1 -o "$TMP/$s.pfm" --write-view "$TMP/$s.view"
+done
+if diff <(grep -v "^#" "$TMP/sphere.view") <(grep -v "^#" "$TMP/floored.view") > /dev/null; then pass "framing: a sphere on a floor 20 times its size gets the sphere's view"
+else fail "framing: the floor changed the view: $(grep -v '^#' "$TMP/floored.view" | tr '\n' ' ')"; fi
+cp scenes/cornell.obj scenes/cornell.mtl "$TMP/"
+$PATHLAB render "$TMP/cornell.obj" --quiet --size 8x8 --spp 1 -o "$TMP/c.pfm" --write-view "$TMP/c.view"
+want=$(awk '/^v / { for (k = 2; k <= 4; k++) { if (!n || $k < lo[k]) lo[k] = $k; if (!n || $k > hi[k]) hi[k] = $k } n = 1 }
+    END { printf "target %.9g %.9g %.9g", (lo[2] + hi[2]) / 2, (lo[3] + hi[3]) / 2, (lo[4] + hi[4]) / 2 }' "$TMP/cornell.obj")
+got=$(grep "^target" "$TMP/c.view")
+if awk -v a="$want" -v b="$got" 'BEGIN { split(a, x); split(b, y); for (k = 2; k <= 4; k++) if ((x[k] - y[k])^2 > 1e-8) exit 1 }'; then
+    pass "framing: the Cornell box without its view frames the whole box ($got)"
+else fail "framing: the Cornell box frames '$got', not the whole box's '$want'"; fi
+
+# One command for a mesh from the wild: bunny.obj (no MTL: the default grey diffuse) under a
+# constant sky is lit and fills the picture: over a quarter of the pixels are the bunny (darker
+# than the sky's 1), and it spans over half the width.
+bunny=../shared/data/meshes/bunny.obj
+if [ -f "$bunny" ]; then
+    $PATHLAB render "$bunny" --sky 1,1,1 --size 40x40 --spp 16 -o "$TMP/bunny.pfm" 2> "$TMP/err"; rc=$?
+    fill=$(python3 -c 'import struct, sys
+b = open(sys.argv[1], "rb").read().split(b"\n", 3); w, h = map(int, b[1].split()); v = struct.unpack("<%df" % (3 * w * h), b[3])
+obj = [i for i in range(w * h) if v[3 * i] < 0.95]; cols = [i % w for i in obj]
+lit = sum(v[3 * i] for i in obj) / max(1, len(obj))
+print("%.2f %.2f %.2f" % (len(obj) / (w * h), (max(cols) - min(cols) + 1) / w if cols else 0, lit))' "$TMP/bunny.pfm")
+    read -r area span lit <<< "$fill"
+    if [ $rc -eq 0 ] && ! grep -q "black" "$TMP/err" && awk -v a="$area" -v s="$span" -v l="$lit" 'BEGIN { exit !(a > 0.25 && s > 0.5 && l > 0.1) }'; then
+        pass "bunny.obj --sky 1,1,1: lit and framed (object $area of the pixels, $span of the width, mean $lit)"
+    else fail "bunny.obj --sky 1,1,1: status $rc, object $area of the pixels, $span of the width, mean $lit: $(head -c 200 "$TMP/err")"; fi
+else skip "bunny.obj --sky 1,1,1: $bunny is not here"; fi

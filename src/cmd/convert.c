@@ -3,10 +3,11 @@
 #include <math.h>
 #include <stdio.h>
 #include "image/image.h"
+#include "image/rgbe.h"
 #include "util/cli.h"
 #include "sys/output_path.h"
 
-#define CONVERT_USAGE "usage: pathlab convert IN.pfm OUT.png|OUT.ppm|OUT.pfm [--exposure STOPS]\n"
+#define CONVERT_USAGE "usage: pathlab convert IN.pfm|IN.hdr OUT.png|OUT.ppm|OUT.pfm [--exposure STOPS]\n"
 
 /* --exposure STOPS: a number strictly between -100 and 100 */
 static int parse_exposure(void *ctx, const char *flag, const char *v)
@@ -47,12 +48,12 @@ int convert_main(int argc, char **argv)
     int n, err;
     if (cli_parse("convert", argc, argv, tables, &exposure, path, 2, &n)) return 2;
     if (n != 2) { fprintf(stderr, "pathlab convert: needs an input and an output\n" CONVERT_USAGE); return 2; }
-    if (img_format_of(path[1]) == IMG_UNKNOWN) {
+    if (img_format_of(path[1]) == IMG_UNKNOWN || img_format_of(path[1]) == IMG_HDR) {
         fprintf(stderr, "pathlab convert: %s: unknown image format (use .pfm, .ppm or .png)\n", path[1]);
         return 2;
     }
     if (output_path_check("convert", "output", path[1], IMG_EXTENSIONS)) return 2;
-    if (img_read_pfm(&im, path[0])) return 2;
+    if (img_format_of(path[0]) == IMG_HDR ? img_read_hdr(&im, path[0]) : img_read_pfm(&im, path[0])) return 2;
     print_figures(&im, path[0]);
     err = img_write(&im, path[1], exposure);
     img_free(&im);

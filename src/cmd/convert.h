@@ -1,5 +1,5 @@
-/* convert.h — the command `pathlab convert IN.pfm OUT.png|OUT.ppm|OUT.pfm [--exposure STOPS]`:
- * a PFM (e.g. a --split layer) made viewable, and its size and each channel's mean, min and max. */
+/* convert.h — the command `pathlab convert IN.pfm|IN.hdr OUT.png|OUT.ppm|OUT.pfm [--exposure STOPS]`:
+ * a PFM (e.g. a --split layer) or a Radiance .hdr made viewable or a PFM, and its size and each channel's mean, min and max. */
 #ifndef PATHLAB_CONVERT_H
 #define PATHLAB_CONVERT_H
 

@@ -42,7 +42,7 @@ static const char SYN_GRADE[] =
     "                [--pages DIR] [--heatmap OUT.png|FOLDER] [--block B] [--var REF_VAR.pfm] [--layers PREFIX] [--details]\n"
     "                is each IMAGE - REF noise or bias, and if bias, the likely mistake (pathlab grade --help; docs/grading.md)\n";
 static const char SYN_CONVERT[] =
-    "  pathlab convert IN.pfm OUT.png|OUT.ppm|OUT.pfm [--exposure STOPS]   view a PFM (e.g. a --split layer);\n"
+    "  pathlab convert IN.pfm|IN.hdr OUT.png|OUT.ppm|OUT.pfm [--exposure STOPS]   view a PFM or a Radiance .hdr;\n"
     "                prints the size and each channel's mean, min and max\n";
 static const char MORE_BENCH[] =
     "  -r RES        the rays: a RES x RES grid of camera rays (default 1024)\n"

@@ -532,6 +532,7 @@ img_format img_format_of(const char *path)
     if (same_ignoring_case(e, ".pfm")) return IMG_PFM;
     if (same_ignoring_case(e, ".ppm")) return IMG_PPM;
     if (same_ignoring_case(e, ".png")) return IMG_PNG;
+    if (same_ignoring_case(e, ".hdr")) return IMG_HDR;
     return IMG_UNKNOWN;
 }
 
@@ -541,6 +542,7 @@ int img_write(const image *im, const char *path, float exposure)
     case IMG_PFM: return img_write_pfm(im, path);
     case IMG_PPM: return img_write_ppm(im, path, exposure);
     case IMG_PNG: return img_write_png(im, path, exposure);
+    case IMG_HDR:   /* read only */
     case IMG_UNKNOWN: break;
     }
     fprintf(stderr, "%s: unknown image format (use .pfm, .ppm or .png)\n", path);

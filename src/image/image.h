@@ -12,8 +12,8 @@ typedef struct { int w, h; float *px; } image;   /* px: 3 floats per pixel, row 
 int img_alloc(image *im, int w, int h);          /* zero-filled; 0 on success */
 void img_free(image *im);
 /* The file formats, told apart by the file name's extension in any case: IMG_UNKNOWN for another
- * extension or none. img_extension: ".pfm" of "dir/x.pfm" (dot included), "" without one. */
-typedef enum { IMG_UNKNOWN, IMG_PFM, IMG_PPM, IMG_PNG } img_format;
+ * extension or none. IMG_HDR (".hdr", Radiance RGBE) is read only (image/rgbe.h). img_extension: ".pfm" of "dir/x.pfm" (dot included), "" without one. */
+typedef enum { IMG_UNKNOWN, IMG_PFM, IMG_PPM, IMG_PNG, IMG_HDR } img_format;
 img_format img_format_of(const char *path);
 /* The extensions of those formats, NULL-terminated, for output_path_check: every image format, or
  * PFM alone (the files that carry values: variances, layers, sample counts). */

@@ -138,3 +138,20 @@ print("%.2f %.2f %.2f" % (len(obj) / (w * h), (max(cols) - min(cols) + 1) / w if
         pass "bunny.obj --sky 1,1,1: lit and framed (object $area of the pixels, $span of the width, mean $lit)"
     else fail "bunny.obj --sky 1,1,1: status $rc, object $area of the pixels, $span of the width, mean $lit: $(head -c 200 "$TMP/err")"; fi
 else skip "bunny.obj --sky 1,1,1: $bunny is not here"; fi
+
+# --sky FILE.hdr (Radiance RGBE, image/rgbe.h) is the same sky as its PFM conversion: the same image
+python3 -c 'import sys; open(sys.argv[1], "wb").write(b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 2\n" + bytes([128, 64, 32, 129, 200, 100, 50, 130, 0, 0, 0, 0, 10, 20, 30, 125]))' "$TMP/sky.hdr"
+$PATHLAB convert "$TMP/sky.hdr" "$TMP/sky_hdr.pfm" > /dev/null 2> "$TMP/err"
+$PATHLAB render "$TMP/plane.obj" --quiet --size 8x8 --spp 8 --eye 0,3,0.5 --target 0,0,0 --sky "$TMP/sky.hdr" -o "$TMP/h1.pfm"
+$PATHLAB render "$TMP/plane.obj" --quiet --size 8x8 --spp 8 --eye 0,3,0.5 --target 0,0,0 --sky "$TMP/sky_hdr.pfm" -o "$TMP/h2.pfm"
+if cmp -s "$TMP/h1.pfm" "$TMP/h2.pfm"; then pass "--sky FILE.hdr renders as its PFM conversion"; else fail "--sky FILE.hdr differs from its PFM conversion"; fi
+expect_status "--sky with a negative radiance: status 2" 2 $PATHLAB render "$TMP/plane.obj" --sky 1,-1,1 -o "$TMP/x.pfm"
+expect_err "--sky -1: the flag named" "--sky"
+expect_status "--sky of a missing file: status 2" 2 $PATHLAB render "$TMP/plane.obj" --sky "$TMP/none.pfm" -o "$TMP/x.pfm"
+expect_no_file "--sky of a missing file: no image" "$TMP/x.pfm"
+expect_status "--sky nonsense: status 2" 2 $PATHLAB render "$TMP/plane.obj" --sky blue -o "$TMP/x.pfm"
+pfm 1 1 "$TMP/nan.pfm" nan,1,1
+expect_status "--sky of a PFM holding a NaN: status 2" 2 $PATHLAB render "$TMP/plane.obj" --sky "$TMP/nan.pfm" -o "$TMP/x.pfm"
+expect_err "--sky NaN: the file and pixel named" "nan.pfm: pixel \(0, 0\)"
+if grep -q -- "--sky $TMP/sky.hdr" "$TMP/h1.pfm.meta"; then
+    pass "the sidecar's flags record --sky"; else fail "the sidecar does not record --sky: $(grep flags "$TMP/h1.pfm.meta")"; fi

@@ -172,18 +172,18 @@ static int has_extension(const char *path, const char *ext)
     return 1;
 }
 
-/* --sky R,G,B (a constant radiance, each finite and >= 0) or --sky FILE.pfm (an equirectangular
- * image, tracer/sky.h; read with the scene) */
+/* --sky R,G,B (a constant radiance, each finite and >= 0) or --sky FILE.pfm|FILE.hdr (an
+ * equirectangular image, tracer/sky.h; read with the scene) */
 static int parse_sky(void *ctx, const char *flag, const char *v)
 {
     render_args *a = ctx;
     const cli_flag f = {flag, CLI_VEC3, &a->ro.sky.rgb, 0, 0, NULL, NULL, NULL};
     vec3 c;
-    if (has_extension(v, ".pfm")) {
+    if (has_extension(v, ".pfm") || has_extension(v, ".hdr")) {
         a->ro.sky.kind = SKY_IMAGE, a->ro.sky.path = v;
         return 0;
     }
-    if (!strchr(v, ',')) return cli_fail(a->cmd, flag, "R,G,B (a radiance, e.g. 1,1,1) or an equirectangular image FILE.pfm", v);
+    if (!strchr(v, ',')) return cli_fail(a->cmd, flag, "R,G,B (a radiance, e.g. 1,1,1) or an equirectangular image FILE.pfm or FILE.hdr", v);
     if (cli_parse_value(a->cmd, &f, v, NULL)) return 1;
     c = a->ro.sky.rgb;
     if (!(c.x >= 0.0f && c.y >= 0.0f && c.z >= 0.0f && c.x <= 3.4e38f && c.y <= 3.4e38f && c.z <= 3.4e38f))

@@ -2,6 +2,7 @@
  * luminance x solid angle (rows first, then the column in the row), then a direction uniform in
  * solid angle inside it. */
 #include "tracer/sky.h"
+#include "image/rgbe.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -96,7 +97,7 @@ int sky_build(sky *s, const sky_spec *spec)
         if (rc) fprintf(stderr, "pathlab: out of memory for the sky\n");
         return rc;
     }
-    if (img_read_pfm(&im, spec->path)) return 1;
+    if (img_format_of(spec->path) == IMG_HDR ? img_read_hdr(&im, spec->path) : img_read_pfm(&im, spec->path)) return 1;
     rc = check_values(&im, spec->path);
     if (!rc && (rc = sky_from_image(s, &im)) != 0) fprintf(stderr, "%s: out of memory for the sky's %dx%d tables\n", spec->path, im.w, im.h);
     img_free(&im);

@@ -39,7 +39,8 @@ typedef struct {
     double integral;     /* the integral over the sphere of luminance(L), in W / (m^2) */
 } sky;
 
-/* The sky of a spec: from the image file for SKY_IMAGE (a PFM; its values must be finite and >= 0).
+/* The sky of a spec: from the image file for SKY_IMAGE (.hdr: Radiance RGBE, image/rgbe.h; else a
+ * PFM; its values must be finite and >= 0).
  * 0 on success; 1 after printing "path: reason". SKY_NONE gives the empty sky. */
 int sky_build(sky *s, const sky_spec *spec);
 /* The sky of an image in memory (copied), row 0 at the top; 0 on success, 1 out of memory. */

@@ -9,14 +9,17 @@
 #     with --time T right after; each image's MSE against the other renderer's reference, the
 #     reference's own noise taken off; efficiency = MSE x time, the ratio pathlab / Cycles.
 # Usage: bench/cycles_sky.sh (from the project's root). Environment: SIZE (200x200), THREADS (2),
-# REF_SPP (512, per seed), LEVEL (64), OUT (build/bench-sky).
+# REF_SPP (256, per seed), LEVEL (64), OUT (build/bench-sky).
 set -eu
-PATHLAB=${PATHLAB:-./pathlab} SIZE=${SIZE:-200x200} THREADS=${THREADS:-2} REF_SPP=${REF_SPP:-512} LEVEL=${LEVEL:-64}
+PATHLAB=${PATHLAB:-./pathlab} SIZE=${SIZE:-200x200} THREADS=${THREADS:-2} REF_SPP=${REF_SPP:-256} LEVEL=${LEVEL:-64}
 OUT=${OUT:-build/bench-sky}
 PY=/usr/bin/python3
 BUNNY=../shared/data/meshes/bunny.obj
 mkdir -p "$OUT"
-$PY - "$OUT/sky.hdr" <<'PYEOF'
+# the sky as Cycles reads it: Blender decodes RGBE as m / 256 x 2^(e - 128), pathlab's img_read_hdr
+# with Ward's half step, (m + 0.5) / 256 x 2^(e - 128): 0.2-0.4% more. pathlab gets sky.pfm, those
+# same values as Blender's, so that the comparison is of the renderers and not of the decoders.
+$PY - "$OUT/sky.hdr" "$OUT/sky.pfm" <<'PYEOF'
 import math, sys
 W, H = 64, 32
 def rgbe(r, g, b):
@@ -34,20 +37,23 @@ for j in range(H):
         else: c = (0.25, 0.2, 0.15)
         rows.append(rgbe(*c))
 open(sys.argv[1], 'wb').write(b'#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y %d +X %d\n' % (H, W) + b''.join(rows))
+import struct
+dec = [[q[k] / 256.0 * 2.0 ** (q[3] - 128) if q[3] else 0.0 for k in range(3)] for q in rows]
+open(sys.argv[2], 'wb').write(b'PF\n%d %d\n-1\n' % (W, H) + b''.join(struct.pack('<3f', *dec[j * W + i]) for j in reversed(range(H)) for i in range(W)))
 PYEOF
 { echo "mtllib scene.mtl"; echo "usemtl grey"; grep -E '^(v|f) ' "$BUNNY"
   n=$(grep -c '^v ' "$BUNNY"); y=$(awk '/^v /{ if (!s || $3 < m) { m = $3; s = 1 } } END { print m }' "$BUNNY")
   printf 'v -2 %s -2\nv 2 %s -2\nv 2 %s 2\nv -2 %s 2\nf %d %d %d\nf %d %d %d\n' $y $y $y $y $((n + 1)) $((n + 3)) $((n + 2)) $((n + 1)) $((n + 4)) $((n + 3))
 } > "$OUT/scene.obj"
 printf 'newmtl grey\nKd 0.5 0.5 0.5\n' > "$OUT/scene.mtl"
-CAM="--eye -0.05,0.2,0.38 --target -0.017,0.09,0 --fov 40 --size $SIZE"
+CAM="--eye=-0.05,0.2,0.38 --target=-0.017,0.09,0 --fov 40 --size $SIZE"
 cycles() {   # spp seed out.exr: prints the render seconds
     blender -b --factory-startup --python bench/cycles_ref_sky.py -- "$OUT/scene.obj" $CAM --up 0,1,0 --spp "$1" --seed "$2" \
         --threads "$THREADS" --sky "$OUT/sky.hdr" --out "$3" 2>&1 | sed -n 's/^CYCLES_DONE \([0-9.]*\) s/\1/p'
 }
 pathlab() {  # out.pfm flags...: prints the render seconds
     local out=$1; shift
-    $PATHLAB render "$OUT/scene.obj" $CAM --sky "$OUT/sky.hdr" --threads "$THREADS" -o "$out" "$@" 2>&1 | sed -n 's/^\([0-9.]*\) s, .*/\1/p'
+    $PATHLAB render "$OUT/scene.obj" $CAM --sky "$OUT/sky.pfm" --threads "$THREADS" -o "$out" "$@" 2>&1 | sed -n 's/^\([0-9.]*\) s, .*/\1/p'
 }
 for s in 1 2; do
     [ -f "$OUT/cref$s.exr" ] || echo "cycles ref seed $s: $(cycles $REF_SPP $s "$OUT/cref$s.exr") s"

@@ -90,6 +90,25 @@ static void arvo_sqrt_u1(const light_set *ls, light_strategy st, vec3 p, double 
     light_sample_point(ls, st, p, u0, sqrtf(u1), u2, out);
 }
 
+/* the sky's direction uniform in theta inside its row, not in cos theta (solid angle) */
+static vec3 sky_theta_uniform(const sky *s, double u1, float u2, float *pdf_sa, vec3 *L)
+{
+    vec3 w = sky_sample(s, u1, u2, pdf_sa, L);
+    int j = (int)(acos(fmin(1.0, fmax(-1.0, w.y))) / PI * s->h);
+    double r, c, sin_old, sin_new;
+    if (j >= s->h) j = s->h - 1;
+    r = (s->cos_edge[j] - w.y) / (s->cos_edge[j] - s->cos_edge[j + 1]);
+    c = cos(PI * (j + r) / s->h), sin_old = sqrt(fmax(1e-30, 1.0 - (double)w.y * w.y)), sin_new = sqrt(fmax(0.0, 1.0 - c * c));
+    return v3((float)(w.x * sin_new / sin_old), (float)c, (float)(w.z * sin_new / sin_old));
+}
+
+/* the constant sky sampled over the upper hemisphere only */
+static vec3 sky_upper_only(const sky *s, double u1, float u2, float *pdf_sa, vec3 *L)
+{
+    vec3 w = sky_sample(s, u1, u2, pdf_sa, L);
+    return v3(w.x, fabsf(w.y), w.z);
+}
+
 /* ---------- the list ---------- */
 
 typedef struct { const char *what; sampling_case broken, control; } breakage;
@@ -121,6 +140,10 @@ static int breakages(breakage *b)
     b[n].broken = b[n].control, b[n++].broken.light.sample = light_by_power;
     b[n].what = "Arvo's map fed sqrt(u1) (Omega = 0.5 sr)", b[n].control = find("solid-angle, Omega = 0.5 sr");
     b[n].broken = b[n].control, b[n++].broken.light.sample = arvo_sqrt_u1;
+    b[n].what = "sky directions uniform in theta inside their row (16 x 8 image)", b[n].control = find("sky_sample, 16 x 8 image");
+    b[n].broken = b[n].control, b[n++].broken.sky.sample = sky_theta_uniform;
+    b[n].what = "constant sky sampled over the upper hemisphere only", b[n].control = find("sky_sample, constant sky");
+    b[n].broken = b[n].control, b[n++].broken.sky.sample = sky_upper_only;
     return n;
 }
 

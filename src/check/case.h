@@ -14,8 +14,9 @@
 #include "stats/chi2.h"
 #include "tracer/brdf.h"
 #include "tracer/light.h"
+#include "tracer/sky.h"
 
-typedef enum { CASE_WARP, CASE_TRIANGLE, CASE_BRDF, CASE_LIGHT_CHOICE, CASE_LIGHT_POINT } sampling_case_kind;
+typedef enum { CASE_WARP, CASE_TRIANGLE, CASE_BRDF, CASE_LIGHT_CHOICE, CASE_LIGHT_POINT, CASE_SKY } sampling_case_kind;
 
 typedef struct {                 /* a warp of sampling.c: a direction about +z */
     vec3 (*sample)(float u1, float u2, float m);
@@ -43,6 +44,12 @@ typedef struct {                 /* light_sample_point and light_pdf_area in a t
     int grid;                    /* CASE_LIGHT_POINT: grid^2 cells per emitter */
 } light_routine;
 
+typedef struct {                 /* sky_sample and sky_pdf_sa on the test sky of w x h pixels (sky_check.h) */
+    vec3 (*sample)(const sky *s, double u1, float u2, float *pdf_sa, vec3 *L);
+    float (*pdf)(const sky *s, vec3 w);
+    int w, h;                    /* 1 x 1: the constant sky */
+} sky_routine;
+
 typedef struct {                 /* the routine of `kind` is the one used */
     sampling_case_kind kind;
     char name[80];
@@ -51,6 +58,7 @@ typedef struct {                 /* the routine of `kind` is the one used */
     triangle_routine triangle;
     brdf_routine brdf;
     light_routine light;
+    sky_routine sky;
 } sampling_case;
 
 typedef struct {

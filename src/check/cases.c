@@ -33,6 +33,7 @@ static sampling_case *add(sampling_case *c, int *n, int max, sampling_case_kind 
     snprintf(c->name, sizeof c->name, "%s", name);
     c->brdf.sample = brdf_sample, c->brdf.pdf = brdf_pdf;
     c->light.sample = light_sample_point, c->light.pdf = light_pdf_area;
+    c->sky.sample = sky_sample, c->sky.pdf = sky_pdf_sa;
     return c;
 }
 
@@ -104,10 +105,14 @@ static void add_lights(sampling_case *cases, int *n, int max)
 
 int check_sampling_cases(sampling_case *cases, int max)
 {
+    sampling_case *c;
     int n = 0;
     add_warps(cases, &n, max);
     add_brdfs(cases, &n, max);
     if (add(cases, &n, max, CASE_TRIANGLE, "sample_uniform_triangle")) cases[n - 1].triangle.sample = sample_uniform_triangle;
     add_lights(cases, &n, max);
+    if ((c = add(cases, &n, max, CASE_SKY, "sky_sample, constant sky"))) c->sky.w = c->sky.h = 1;
+    if ((c = add(cases, &n, max, CASE_SKY, "sky_sample, 16 x 8 image"))) c->sky.w = 16, c->sky.h = 8;
+    if ((c = add(cases, &n, max, CASE_SKY, "sky_sample, 5 x 3 image"))) c->sky.w = 5, c->sky.h = 3;
     return n;
 }

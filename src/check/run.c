@@ -2,6 +2,7 @@
 #include "check/run.h"
 #include "check/brdf_check.h"
 #include "check/light_check.h"
+#include "check/sky_check.h"
 #include "check/warp_check.h"
 #include "sys/parallel.h"
 #include <stdio.h>
@@ -19,6 +20,7 @@ static void run_case(const sampling_case *c, long n, uint64_t seed, sampling_res
     case CASE_BRDF: check_brdf(&c->brdf, m, seed, r); break;
     case CASE_LIGHT_CHOICE: check_light_choice(&c->light, m, seed, r); break;
     case CASE_LIGHT_POINT: check_light_point(&c->light, m, seed, r); break;
+    case CASE_SKY: check_sky(&c->sky, m, seed, r); break;
     }
 }
 

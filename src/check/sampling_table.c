@@ -14,6 +14,7 @@ static const char *group_title(sampling_case_kind k)
     case CASE_TRIANGLE: return "sampling.c: a uniform point on a triangle; 16 x 16 sub-triangles";
     case CASE_LIGHT_CHOICE: return "light.c: the choice of an emitter among 5; one cell per emitter";
     case CASE_LIGHT_POINT: return "light.c: the point on the emitter; sub-triangles, or Arvo's (u1, u2) for solid-angle";
+    case CASE_SKY: return "sky.c: a direction toward the sky, by luminance x solid angle; 2 x 2 cells in (cos theta, phi) per pixel";
     }
     return "";
 }

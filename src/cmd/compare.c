@@ -162,7 +162,8 @@ static int parse_args(comparison *c, int argc, char **argv)
 static int load_scene(const comparison *c, scene *s)
 {
     if (scene_load(s, c->base.scene, &c->base.so, c->base.ro.threads, 1)) return 1;
-    if (s->lights.n == 0) fprintf(stderr, "pathlab: warning: %s has no emitters: every image is black\n", shown(c->base.scene));
+    if (scene_add_sky(s, &c->base.ro.sky)) { scene_free(s); return 1; }
+    if (!scene_has_light(s)) fprintf(stderr, "pathlab: warning: %s has no emitters and no --sky: every image is black\n", shown(c->base.scene));
     return 0;
 }
 

@@ -99,6 +99,8 @@ static const char USAGE_RENDER[] =
     "  --bounce K           the same as --bounces K:K\n"
     "  --split              also write one image per bounce: FILE_L0.pfm, FILE_L1.pfm, ...\n"
     "  --light {light|}   how a point s on a light is chosen (default area)\n"
+    "  --sky R,G,B|FILE     a sky: a constant radiance, or an equirectangular FILE.pfm or FILE.hdr (+Y up,\n"
+    "                       top row the zenith); sampled by luminance, chosen against emitters by power (docs/sky.md)\n"
     "  --dir {dir|}        how a direction is chosen at a surface (default brdf)\n"
     "  --direct {direct|}   the estimator of direct light (default mis-power)\n"
     "  --rr D|off           Russian roulette after D bounces (default 3)\n"

@@ -5,6 +5,7 @@
 #include "sys/shown.h"
 #include "sys/parallel.h"
 #include <math.h>
+#include <ctype.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -208,6 +209,37 @@ static int parse_pixel_offset(void *ctx, const char *flag, const char *v)
     return 0;
 }
 
+/* 1 if path ends in ext (".pfm"), in any case */
+static int has_extension(const char *path, const char *ext)
+{
+    const char *e = img_extension(path);
+    size_t k;
+    if (strlen(e) != strlen(ext)) return 0;
+    for (k = 0; e[k]; k++)
+        if (tolower((unsigned char)e[k]) != ext[k]) return 0;
+    return 1;
+}
+
+/* --sky R,G,B (a constant radiance, each finite and >= 0) or --sky FILE.pfm|FILE.hdr (an
+ * equirectangular image, tracer/sky.h; read with the scene) */
+static int parse_sky(void *ctx, const char *flag, const char *v)
+{
+    render_args *a = ctx;
+    const cli_flag f = {flag, CLI_VEC3, &a->ro.sky.rgb, 0, 0, NULL, NULL, NULL};
+    vec3 c;
+    if (has_extension(v, ".pfm") || has_extension(v, ".hdr")) {
+        a->ro.sky.kind = SKY_IMAGE, a->ro.sky.path = v;
+        return 0;
+    }
+    if (!strchr(v, ',')) return cli_fail(a->cmd, flag, "R,G,B (a radiance, e.g. 1,1,1) or an equirectangular image FILE.pfm or FILE.hdr", v);
+    if (cli_parse_value(a->cmd, &f, v, NULL)) return 1;
+    c = a->ro.sky.rgb;
+    if (!(c.x >= 0.0f && c.y >= 0.0f && c.z >= 0.0f && c.x <= 3.4e38f && c.y <= 3.4e38f && c.z <= 3.4e38f))
+        return cli_fail(a->cmd, flag, "a radiance R,G,B with each value finite and >= 0 (e.g. 1,1,1)", v);
+    a->ro.sky.kind = SKY_CONSTANT;
+    return 0;
+}
+
 void render_flag_table(render_args *a, cli_flag t[RENDER_NFLAGS])
 {
     const cli_flag flags[RENDER_NFLAGS] = {
@@ -245,6 +277,7 @@ void render_flag_table(render_args *a, cli_flag t[RENDER_NFLAGS])
         {"--texture-filter", CLI_CUSTOM, NULL, 0, 0, TEXTURE_FILTER_NAMES, parse_texture_filter, NULL},
         {"--texture-decode", CLI_CUSTOM, NULL, 0, 0, TEXTURE_DECODE_NAMES, parse_texture_decode, NULL},
         {"--mtl", CLI_STRING, &a->so.obj.mtl, 0, 0, NULL, NULL, NULL},
+        {"--sky", CLI_CUSTOM, NULL, 0, 0, NULL, parse_sky, NULL},
         {NULL, CLI_SWITCH, NULL, 0, 0, NULL, NULL, NULL}};
     memcpy(t, flags, sizeof flags);
 }

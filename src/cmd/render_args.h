@@ -26,7 +26,7 @@ typedef struct {
     adaptive_opts ao;
 } render_args;
 
-#define RENDER_NFLAGS 35   /* the flags of render_flag_table, and its closing NULL entry */
+#define RENDER_NFLAGS 36   /* the flags of render_flag_table, and its closing NULL entry */
 
 /* The defaults of pathlab render (16 spp, seed 1, every core, area, brdf, mis-power, 0:inf, rr 3;
  * ro.sampler independent, which is compare's default: render's plan picks its own when --sampler is

@@ -224,6 +224,7 @@ int render_main(int argc, char **argv)
     if (render_resume_args(argc, argv, args, &nargs, words, sizeof words)) return 2;
     if (parse_render_args(&a, &p, nargs, args)) return 2;
     if (scene_load(&s, a.scene, &a.so, a.ro.threads, a.ro.quiet)) return 2;
+    if (scene_add_sky(&s, &a.ro.sky)) { scene_free(&s); return 2; }
     if (!a.ro.quiet) {
         char tex[48] = "";
         if (s.m.ntextures > 0) snprintf(tex, sizeof tex, ", %d texture%s", s.m.ntextures, s.m.ntextures > 1 ? "s" : "");
@@ -231,8 +232,8 @@ int render_main(int argc, char **argv)
                 shown(a.scene), s.m.ntris, s.m.ndegenerate, s.lights.n, s.m.nmats - 1, tex, 1e3 * s.load_seconds, 1e3 * s.bvh_seconds);
     }
     if (render_make_camera(&a, &s, &cam)) { scene_free(&s); return 2; }
-    if (s.lights.n == 0)
-        fprintf(stderr, "pathlab render: warning: %s has no emitters (no material with Ke > 0): the image is black\n", shown(a.scene));
+    if (!scene_has_light(&s))
+        fprintf(stderr, "pathlab render: warning: %s has no emitters (no material with Ke > 0) and no --sky: the image is black\n", shown(a.scene));
     rc = render_and_write(&a, &p, &s, &cam);
     scene_free(&s);
     return rc;

@@ -4,6 +4,16 @@
 #include <stdio.h>
 #include <string.h>
 
+/* --sky, at the end of the flags, only when given: the sidecars of renders without a sky stay comparable */
+static void describe_sky(char *flags, size_t cap, const sky_spec *sky)
+{
+    size_t n = strlen(flags);
+    if (sky->kind == SKY_CONSTANT)
+        snprintf(flags + n, cap - n, " --sky %.9g,%.9g,%.9g", sky->rgb.x, sky->rgb.y, sky->rgb.z);
+    else if (sky->kind == SKY_IMAGE)
+        snprintf(flags + n, cap - n, " --sky %s", sky->path);
+}
+
 void render_meta_describe(sidecar *m, const render_opts *o, const char *scene_path, uint64_t scene_id, const view *v,
                           const char *revision)
 {
@@ -25,6 +35,7 @@ void render_meta_describe(sidecar *m, const render_opts *o, const char *scene_pa
              io->bmin, bmax, LIGHT_STRATEGY_NAMES[io->light], DIR_STRATEGY_NAMES[io->dir], DIRECT_STRATEGY_NAMES[io->direct],
              rr, o->pixel_offset, o->pixel_center ? " --pixel-center" : "", o->sampler != SAMPLER_INDEPENDENT ? " --sampler " : "",
              o->sampler != SAMPLER_INDEPENDENT ? SAMPLER_NAMES[o->sampler] : "");
+    describe_sky(m->flags, sizeof m->flags, &o->sky);
     snprintf(m->camera, sizeof m->camera, "eye %.9g,%.9g,%.9g target %.9g,%.9g,%.9g up %.9g,%.9g,%.9g fov %.9g size %dx%d",
              v->eye.x, v->eye.y, v->eye.z, v->target.x, v->target.y, v->target.z, v->up.x, v->up.y, v->up.z, v->fov,
              v->width, v->height);

@@ -98,7 +98,7 @@ int view_setup_camera(view_setup *v, const char *cmd, const char *scene_path, co
     if (v->up) { v->vw.up = v->flags.up; v->vw.line_up = 0; }
     if (v->fov) { v->vw.fov = v->flags.fov; v->vw.line_fov = 0; }
     if (v->size) { v->vw.width = v->flags.width; v->vw.height = v->flags.height; v->vw.line_size = 0; }
-    mesh_bounds(m, &lo, &hi);
+    mesh_framing_bounds(m, &lo, &hi);   /* a large floor is not framed: it would make the object tiny */
     view_frame_bounds(&v->vw, lo, hi);
     if (camera_init(cam, &v->vw)) return 1;
     return v->write_view ? write_view(v, cmd, scene_path) : 0;

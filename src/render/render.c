@@ -297,8 +297,8 @@ int render(const scene *sc, const camera *cam, const render_opts *o, render_resu
     }
     progress_start(&j.pr, !o->quiet);
     pthread_mutex_init(&j.lock, NULL);
-    if (sc->lights.n > 0) run_passes(&j, nthreads);
-    else j.done = o->spp;   /* without emitters every pixel is black: no work at all */
+    if (scene_has_light(sc)) run_passes(&j, nthreads);
+    else j.done = o->spp;   /* without emitters or a sky every pixel is black: no work at all */
     pthread_mutex_destroy(&j.lock);
     out->seconds = clock_seconds() - j.pr.t0;
     out->spp = j.done;

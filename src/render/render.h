@@ -27,6 +27,7 @@ typedef struct {
     uint64_t seed;
     sampler_kind sampler;   /* --sampler: independent, sobol or sobol1 */
     integrator_opts io;     /* io.rr_below resolved (render_rr_below) */
+    sky_spec sky;           /* --sky: put over the scene by scene_add_sky, recorded in the sidecar */
     const int *pixel_spp;   /* adaptive sampling: pixel p (row-major) gets only the samples first ..
                                first + pixel_spp[p] - 1, each <= spp, chosen before the render
                                (tracer/adaptive.h); NULL: every pixel gets spp */

@@ -156,16 +156,39 @@ void view_print(FILE *f, const view *vw)
     fprintf(f, "size %d %d\n", vw->width, vw->height);
 }
 
+/* The distance along +z from the target at which the box lo..hi fills the field of view (tangents
+ * tan_v and tan_h of its half angles) but for a 5% margin: every corner's offset across the view,
+ * over its depth from the eye, within the tangent. The box's image is the convex hull of its
+ * corners', so the whole box is in the picture; tighter than its bounding sphere, which left a mesh
+ * in 60% of the width. -1 when up is along the view (the sphere's distance serves then). */
+static float fit_distance(const view *vw, vec3 lo, vec3 hi, float tan_v, float tan_h, float radius)
+{
+    vec3 w = v3(0, 0, 1), u = v3_cross(vw->up, w), v;
+    float len = v3_length(u), d = 0.0f;
+    int k;
+    if (!(len > 1e-6f * v3_length(vw->up))) return -1.0f;
+    u = v3_scale(u, 1.0f / len);
+    v = v3_cross(w, u);
+    for (k = 0; k < 8; k++) {
+        vec3 c = v3_sub(v3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z), vw->target);
+        float across = fmaxf(fabsf(v3_dot(c, u)) / tan_h, fabsf(v3_dot(c, v)) / tan_v);
+        d = fmaxf(d, c.z + fmaxf(1.05f * across, 0.05f * radius));   /* the eye outside the box */
+    }
+    return d;
+}
+
 void view_frame_bounds(view *vw, vec3 lo, vec3 hi)
 {
     vec3 c = v3_scale(v3_add(lo, hi), 0.5f);
-    float radius = 0.5f * v3_length(v3_sub(hi, lo));
-    /* far enough along +z that the bounding sphere fits in the narrower field of view */
+    float radius = 0.5f * v3_length(v3_sub(hi, lo)), dist;
+    /* far enough along +z that the box fits in the field of view; else its bounding sphere in the narrower one */
     float half = 0.5f * vw->fov * PI_F / 180.0f;
     float aspect = (float)vw->width / (float)vw->height;
     float half_min = aspect < 1.0f ? atanf(tanf(half) * aspect) : half;
     if (!vw->has_target) vw->target = c;
-    if (!vw->has_eye) vw->eye = v3_add(vw->target, v3(0, 0, 1.05f * radius / sinf(half_min)));
+    dist = fit_distance(vw, lo, hi, tanf(half), tanf(half) * aspect, radius);
+    if (!(dist > 0.0f && dist < INFINITY)) dist = 1.05f * radius / sinf(half_min);
+    if (!vw->has_eye) vw->eye = v3_add(vw->target, v3(0, 0, dist));
     vw->has_eye = vw->has_target = 1;
 }
 

@@ -36,6 +36,35 @@ void mesh_bounds(const mesh *m, vec3 *lo, vec3 *hi)
     }
 }
 
+/* 1 if triangle i emits nothing and has an edge of length >= len */
+static int is_backdrop(const mesh *m, int i, float len)
+{
+    const int *t = m->tri + 3 * i;
+    int k;
+    if (!v3_is_zero(m->mats[m->tri_mat[i]].Ke)) return 0;
+    for (k = 0; k < 3; k++)
+        if (v3_length(v3_sub(m->P[t[k]], m->P[t[(k + 1) % 3]])) >= len) return 1;
+    return 0;
+}
+
+void mesh_framing_bounds(const mesh *m, vec3 *lo, vec3 *hi)
+{
+    vec3 olo = v3(0, 0, 0), ohi = olo;
+    float quarter;
+    int i, k, objects = 0;
+    mesh_bounds(m, lo, hi);
+    quarter = 0.25f * v3_length(v3_sub(*hi, *lo));
+    for (i = 0; i < m->ntris; i++) {
+        if (is_backdrop(m, i, quarter)) continue;
+        for (k = 0; k < 3; k++) {
+            vec3 p = m->P[m->tri[3 * i + k]];
+            olo = objects ? v3_min(olo, p) : p;
+            ohi = objects++ ? v3_max(ohi, p) : p;
+        }
+    }
+    if (objects && v3_length(v3_sub(ohi, olo)) <= quarter) *lo = olo, *hi = ohi;
+}
+
 static uint64_t fnv1a(uint64_t h, const void *data, size_t n)
 {
     const unsigned char *p = data;

@@ -47,4 +47,12 @@ void mesh_free(mesh *m);
 uint64_t mesh_fingerprint(const mesh *m);
 /* Bounds of the vertices used by triangles. */
 void mesh_bounds(const mesh *m, vec3 *lo, vec3 *hi);
+/* What the camera frames when no view gives the eye and target: the bounds of the scene, but not
+ * of a backdrop that dwarfs the rest. A backdrop triangle emits nothing and has an edge at least
+ * a quarter of the scene's bounding-box diagonal D (a floor, a wall, a sky dome made of a few
+ * large triangles); if the other triangles' bounds have a diagonal of D / 4 at most (the objects
+ * are dwarfed: a mesh on a floor 4 or more times its size), those bounds are framed, else the whole
+ * scene (a Cornell box: its blocks and light span more than a quarter of the box). Nothing is
+ * left out of the picture but the backdrop's far parts. */
+void mesh_framing_bounds(const mesh *m, vec3 *lo, vec3 *hi);
 #endif

@@ -133,14 +133,50 @@ static int visible(const scene *sc, const vertex *p, const light_sample *s, trac
     return !bvh_occluded(sc->accel, &shadow);
 }
 
+/* The shadow ray from just off p toward the sky in the direction wi_world: nothing in the way, to infinity. */
+static int sky_visible(const scene *sc, const vertex *p, vec3 wi_world, trace_stats *st)
+{
+    ray shadow;
+    shadow.o = offset_ray_origin(p->pos, p->ng, p->scale);
+    shadow.d = wi_world;
+    shadow.tmax = INFINITY;
+    st->shadow_rays++;
+    return !bvh_occluded(sc->accel, &shadow);
+}
+
+/* L_k by light sampling the sky at p: a direction s with pdf1_sa = P(sky) x the sky's pdf, then
+ * L(s) f cos(theta_p) / pdf1_sa, MIS-weighted against direction sampling. u1 is what is left of the
+ * light's choice number once the sky was chosen. */
+static vec3 direct_from_sky(const scene *sc, const integrator_opts *opt, const vertex *p, double u1, float u2, trace_stats *st)
+{
+    vec3 L, wi_local, f, wi_world;
+    float pdf_sky, pdf1_sa, cos_p, w_mis;
+    wi_world = sky_sample(&sc->sky, u1, u2, &pdf_sky, &L);
+    cos_p = v3_dot(p->n, wi_world);
+    if (cos_p <= 0.0f || !(pdf_sky > 0.0f)) return v3(0, 0, 0);
+    if (p->shaded && !(v3_dot(p->ng, wi_world) > 0.0f)) return v3(0, 0, 0);      /* below the surface */
+    wi_local = frame_to_local(&p->frame, wi_world);
+    f = brdf_eval(p->mat, p->wo_local, wi_local);
+    if (v3_is_zero(f) || !sky_visible(sc, p, wi_world, st)) return v3(0, 0, 0);
+    pdf1_sa = (float)sc->sky_prob * pdf_sky;
+    w_mis = mis_weight(opt->direct, pdf1_sa, dir_pdf2_sa(opt, p, wi_local));
+    return v3_scale(v3_mul(f, L), cos_p / pdf1_sa * w_mis);
+}
+
 /* L_k by light sampling at p: Le(s) f cos(theta_p) cos(theta_s) / d^2 / pdf1_area(s), which is
- * Le(s) f cos(theta_p) / pdf1_sa(s), MIS-weighted against direction sampling. */
+ * Le(s) f cos(theta_p) / pdf1_sa(s), MIS-weighted against direction sampling. The light's choice
+ * number picks the sky below sky_prob, an emitter above (its pdf1 times emitter_prob). */
 static vec3 direct_from_light(const scene *sc, const integrator_opts *opt, const vertex *p, const vertex_numbers *u, trace_stats *st)
 {
     light_sample s;
     vec3 to_s, wi_world, wi_local, f;
     float dist2, dist, cos_p, cos_s, pdf1_sa, w_mis;
-    light_sample_point_joint(&sc->lights, opt->light, p->pos, u->light_choice, u->light_u2, &s);
+    double u0 = u->light_choice;
+    if (sc->sky_prob > 0.0) {
+        if (u0 < sc->sky_prob) return direct_from_sky(sc, opt, p, u0 / sc->sky_prob, u->light_u2, st);
+        u0 = fmin((u0 - sc->sky_prob) / (1.0 - sc->sky_prob), 0x1.fffffffffffffp-1);
+    }
+    light_sample_point_joint(&sc->lights, opt->light, p->pos, u0, u->light_u2, &s);
     to_s = v3_sub(s.pos, p->pos);
     dist2 = v3_dot(to_s, to_s);
     dist = sqrtf(dist2);
@@ -152,7 +188,7 @@ static vec3 direct_from_light(const scene *sc, const integrator_opts *opt, const
     wi_local = frame_to_local(&p->frame, wi_world);
     f = brdf_eval(p->mat, p->wo_local, wi_local);
     if (v3_is_zero(f) || !visible(sc, p, &s, st)) return v3(0, 0, 0);
-    pdf1_sa = pdf_area_to_solid_angle(s.pdf_area, dist2, cos_s);
+    pdf1_sa = pdf_area_to_solid_angle(s.pdf_area, dist2, cos_s) * sc->emitter_prob;
     w_mis = mis_weight(opt->direct, pdf1_sa, dir_pdf2_sa(opt, p, wi_local));
     return v3_scale(v3_mul(f, surface_Le_at(sc, opt->filter, &s)), cos_p / pdf1_sa * w_mis);
 }
@@ -164,7 +200,7 @@ static float light_pdf1_sa(const scene *sc, const integrator_opts *opt, const ve
     float dist2 = q->t * q->t * v3_dot(ray_pq->d, ray_pq->d);
     float cos_s = -v3_dot(sc->Ng[q->tri], ray_pq->d) / v3_length(ray_pq->d);
     assert(i >= 0);   /* q emits light, so its triangle is one of the emitters */
-    return pdf_area_to_solid_angle(light_pdf_area(&sc->lights, opt->light, i, p->pos, scene_hit_point(sc, q)), dist2, cos_s);
+    return pdf_area_to_solid_angle(light_pdf_area(&sc->lights, opt->light, i, p->pos, scene_hit_point(sc, q)), dist2, cos_s) * sc->emitter_prob;
 }
 
 /* L_k by direction sampling: the ray from p, of density pdf2_sa, hit q; Le(q) if q emits toward p,
@@ -179,6 +215,16 @@ static vec3 direct_from_dir(const scene *sc, const integrator_opts *opt, const v
         w_mis = mis_weight(opt->direct, pdf2_sa, pdf1_sa);
     }
     return v3_scale(Le, w_mis);
+}
+
+/* L_k by direction sampling: the ray from p, of density pdf2_sa, left the scene: the sky's L, MIS-weighted
+ * against light sampling of the sky. */
+static vec3 sky_from_dir(const scene *sc, const integrator_opts *opt, const ray *ray_pq, float pdf2_sa)
+{
+    vec3 L = sky_radiance(&sc->sky, ray_pq->d);
+    float w_mis = 1.0f;
+    if (uses_light_sampling(opt->direct)) w_mis = mis_weight(opt->direct, pdf2_sa, (float)sc->sky_prob * sky_pdf_sa(&sc->sky, ray_pq->d));
+    return v3_scale(L, w_mis);
 }
 
 /* *r = the ray from just off p in the direction wi_local, toward the next vertex q. Written field by
@@ -261,10 +307,13 @@ vec3 integrate(const scene *sc, const integrator_opts *opt, const ray *camera, s
     /* the hard bounce cap: with the roulette on (p_survive <= 0.95 from bounce 32) a path reaches it with
      * probability below 0.95^(BOUNCES_CAP - RR_CAP_FROM), never in practice; with --rr off and Kd >= 1
      * it is what ends the path. The paths it cuts are counted: the stats line shows them. */
-    int k, has_lights = sc->lights.n > 0, kmax = opt->bmax < BOUNCES_CAP ? opt->bmax : BOUNCES_CAP;
+    int k, has_lights = scene_has_light(sc), kmax = opt->bmax < BOUNCES_CAP ? opt->bmax : BOUNCES_CAP;
 
     st->camera_rays++;
-    if (!bvh_intersect(sc->accel, &ray_pq, &q)) return sum.L;
+    if (!bvh_intersect(sc->accel, &ray_pq, &q)) {                                     /* L0: the sky */
+        if (opt->bmin == 0) add_Lk(&sum, 0, sky_radiance(&sc->sky, ray_pq.d));
+        return sum.L;
+    }
     if (opt->bmin == 0) add_Lk(&sum, 0, surface_emitted(sc, opt->filter, &q, ray_pq.d));                    /* L0 */
 
     for (k = 1; k <= kmax; k++) {
@@ -293,7 +342,10 @@ vec3 integrate(const scene *sc, const integrator_opts *opt, const ray *camera, s
         beta = v3_mul(beta, v3_scale(f, cos_p / pdf2_sa));
         if (v3_is_zero(beta)) break;                                    /* no light can follow */
         st->continuation_rays++;
-        if (!bvh_intersect(sc->accel, &ray_pq, &q)) break;
+        if (!bvh_intersect(sc->accel, &ray_pq, &q)) {   /* L_k by direction sampling: the sky */
+            if (adds_Lk && uses_dir_sampling(opt->direct) && sc->sky.w) add_Lk(&sum, k, v3_mul(beta, sky_from_dir(sc, opt, &ray_pq, pdf2_sa)));
+            break;
+        }
 
         /* L_k by direction sampling: q is on a light */
         if (adds_Lk && uses_dir_sampling(opt->direct))

@@ -52,6 +52,7 @@ int scene_load(scene *sc, const char *path, const scene_opts *so, int threads, i
     memset(sc, 0, sizeof *sc);   /* so that scene_free is safe wherever loading stops */
     memset(&none, 0, sizeof none);
     if (!so) so = &none;
+    sc->emitter_prob = 1.0f;
     t0 = clock_seconds();
     if (obj_load_with(path, &sc->m, &so->obj, quiet)) return 1;
     sc->load_seconds = clock_seconds() - t0;
@@ -77,10 +78,33 @@ void scene_free(scene *sc)
 {
     bvh_free(sc->accel);
     light_free(&sc->lights);
+    sky_free(&sc->sky);
     free(sc->Ng);
     free(sc->area);
     free(sc->scale);
     mesh_free(&sc->m);
+}
+
+int scene_add_sky(scene *sc, const sky_spec *spec)
+{
+    double emitters = 0.0, sky_power, radius;
+    vec3 lo, hi;
+    int i;
+    sky_free(&sc->sky);
+    if (sky_build(&sc->sky, spec)) return 1;
+    if (!sky_present(&sc->sky)) {
+        sky_free(&sc->sky);
+        sc->sky_prob = 0.0, sc->emitter_prob = 1.0f;
+        return 0;
+    }
+    for (i = 0; i < sc->lights.n; i++) emitters += PI * sc->lights.e[i].area * fmax(0.0, luminance(sc->lights.e[i].Le));
+    mesh_bounds(&sc->m, &lo, &hi);
+    radius = 0.5 * v3_length(v3_sub(hi, lo));
+    sky_power = PI * radius * radius * sc->sky.integral;
+    if (!(emitters > 0.0)) sc->sky_prob = 1.0;   /* no emitters: the sky is the only light */
+    else sc->sky_prob = sky_power / (sky_power + emitters);
+    sc->emitter_prob = (float)(1.0 - sc->sky_prob);
+    return 0;
 }
 
 vec3 scene_hit_point(const scene *sc, const hit *h)

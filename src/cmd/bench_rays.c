@@ -8,11 +8,20 @@
 #include "sys/parallel.h"
 #include "util/cli.h"
 #include <stdio.h>
+#include <sys/resource.h>
 
 #define BENCH_MAX_RES 16384
 
-/* The mesh and build lines, then the three ray kinds' lines. */
-static void print_result(const char *path, const mesh *m, double load_ms, int threads, const ray_bench_result *r)
+/* The process's peak resident memory so far, in MB (0 where getrusage cannot say). */
+static double peak_rss_mb(void)
+{
+    struct rusage u;
+    return getrusage(RUSAGE_SELF, &u) ? 0.0 : (double)u.ru_maxrss / 1024.0;
+}
+
+/* The mesh, build and memory lines, then the three ray kinds' lines. */
+static void print_result(const char *path, const mesh *m, double load_ms, int threads, const ray_bench_result *r,
+                         double loaded_mb)
 {
     static const char *fmt[3] = {"primary: %ld rays, %ld hits, %.2f Mrays/s\n",
                                  "diffuse: %ld rays, %ld hits, %.2f Mrays/s\n",
@@ -20,6 +29,8 @@ static void print_result(const char *path, const mesh *m, double load_ms, int th
     int kind;
     printf("mesh %s: %d triangles, %d vertices, load %.0f ms\n", path, m->ntris, m->nverts, load_ms);
     printf("pathlab build (binned SAH, %d threads): %.1f ms (best of %d)\n", threads, r->build_ms, RAY_BENCH_BUILDS);
+    printf("memory: BVH and triangles %.2f bytes/triangle; peak RSS %.0f MB (%.0f MB once the mesh was read)\n",
+           r->bvh_bytes / (m->ntris > 0 ? m->ntris : 1), peak_rss_mb(), loaded_mb);
     for (kind = RAY_BENCH_PRIMARY; kind <= RAY_BENCH_SHADOW; kind++)
         printf(fmt[kind], r->rays[kind], r->hits[kind], (double)r->rays[kind] / r->secs[kind] * 1e-6);
 }
@@ -42,15 +53,16 @@ int bench_rays_main(int argc, char **argv)
     const char *path;
     ray_bench_result r;
     mesh m;
-    double t0, load_ms;
+    double t0, load_ms, loaded_mb;
     tables[0] = flags; tables[1] = NULL;
     if (cli_parse("bench-rays", argc, argv, tables, NULL, &path, 1, &nwords) || nwords != 1) return usage();
     t0 = clock_seconds();
     if (obj_load(path, &m, 1) != 0) return 1;
     load_ms = (clock_seconds() - t0) * 1e3;
+    loaded_mb = peak_rss_mb();
     rc = ray_bench_run(m.P, m.nverts, m.tri, m.ntris, res, threads, &r);
     if (rc) fprintf(stderr, "bench-rays: out of memory\n");
-    else print_result(path, &m, load_ms, threads, &r);
+    else print_result(path, &m, load_ms, threads, &r, loaded_mb);
     mesh_free(&m);
     return rc;
 }

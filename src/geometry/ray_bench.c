@@ -1,6 +1,7 @@
 /* ray_bench.c — the rays of the BVH benchmark, traced and timed (ray_bench.h). Every float
  * expression below follows embree_rays.c operation for operation; do not "simplify" them. */
 #include "geometry/ray_bench.h"
+#include "geometry/bvh_layout.h"
 #include <stdint.h>
 #include <stdlib.h>
 #include "sys/clock.h"
@@ -161,6 +162,7 @@ int ray_bench_run(const vec3 *P, int nverts, const int *tri, int ntris, int res,
     s.b = b = timed_build(P, tri, ntris, threads, &out->build_ms);
     s.hitp = malloc(npix * sizeof(vec3)); s.hitn = malloc(npix * sizeof(vec3)); s.hitok = calloc(npix, 1);
     if (b && s.hitp && s.hitn && s.hitok) {
+        out->bvh_bytes = (double)b->nnodes * sizeof(wnode) + (double)b->nblocks * sizeof(tri_block);
         for (kind = RAY_BENCH_PRIMARY; kind <= RAY_BENCH_SHADOW; kind++)
             out->secs[kind] = trace(&s, kind, threads, &out->rays[kind], &out->hits[kind]);
         rc = 0;

@@ -14,6 +14,7 @@ enum { RAY_BENCH_PRIMARY, RAY_BENCH_DIFFUSE, RAY_BENCH_SHADOW };
 
 typedef struct {
     double build_ms;            /* the fastest build */
+    double bvh_bytes;           /* the tree's nodes and triangle blocks (all it keeps of the mesh) */
     long rays[3], hits[3];      /* per kind; a shadow ray's hit: it is occluded */
     double secs[3];
 } ray_bench_result;

@@ -13,6 +13,9 @@
 # adds to it instead), then draws
 # docs/scale.svg and prints the table and slopes (bench/scale_plot.py). PATHLAB_FLAGS are passed to
 # bench-rays (e.g. "--bvh-quality high"); SCALE_TAG names them in the CSV (default: pathlab).
+# SCALE_CLOCK=cpu times both with the process's CPU clock instead of the wall clock (bench-rays
+# --cpu-time, and embree-rays built as build/embree-rays-cpu with bench/cpu_clock.h): on a machine
+# loaded by other processes, wall seconds count their time slices too.
 set -eu
 PATHLAB=${PATHLAB:-./pathlab}
 BUILD=${BUILD:-build}
@@ -24,19 +27,25 @@ OUT=${SCALE_OUT:-bench/scale.csv}
 TAG=${SCALE_TAG:-pathlab}
 FLAGS=${PATHLAB_FLAGS:-}
 BASE=../shared/data/meshes/bunny.obj
+CLOCK=${SCALE_CLOCK:-wall}
 EMBREE=$BUILD/embree-rays
+case $CLOCK in
+  wall) CPU=() ;;
+  cpu) EMBREE=$BUILD/embree-rays-cpu; CPU=(-include bench/cpu_clock.h); FLAGS="$FLAGS --cpu-time" ;;
+  *) echo "scale.sh: SCALE_CLOCK is wall or cpu" >&2; exit 2 ;;
+esac
 
 [ -x "$PATHLAB" ] || { echo "scale.sh: no $PATHLAB (run make first)" >&2; exit 2; }
-[ -x "$EMBREE" ] || cc -O2 -std=c99 -o "$EMBREE" ../shared/tools/embree-rays/embree_rays.c -lembree3 -lpthread -lm
+[ -x "$EMBREE" ] || cc -O2 -std=c99 "${CPU[@]}" -o "$EMBREE" ../shared/tools/embree-rays/embree_rays.c -lembree3 -lpthread -lm
 mkdir -p "$CACHE"
-[ -n "${SCALE_APPEND:-}" ] && [ -s "$OUT" ] || echo "tool,threads,triangles,load_ms,build_ms,bytes_per_tri,peak_rss_mb,primary,diffuse,shadow,primary_hits,loadavg,date" > "$OUT"
+[ -n "${SCALE_APPEND:-}" ] && [ -s "$OUT" ] || echo "tool,threads,triangles,load_ms,build_ms,bytes_per_tri,peak_rss_mb,primary,diffuse,shadow,primary_hits,loadavg,date,clock" > "$OUT"
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 
 # run TOOL THREADS MESH CMD...: one line of the CSV from the command's output and peak memory.
 run() {
   local tool=$1 t=$2 mesh=$3; shift 3
   /usr/bin/time -f "rss %M" -o "$tmp/time" "$@" > "$tmp/out" 2>/dev/null || { echo "scale.sh: $tool failed on $mesh" >&2; return 1; }
-  python3 - "$tmp/out" "$tmp/time" "$tool" "$t" "$(cut -d' ' -f1 /proc/loadavg)" "${BPT:-}" >> "$OUT" <<'PY'
+  python3 - "$tmp/out" "$tmp/time" "$tool" "$t" "$(cut -d' ' -f1 /proc/loadavg)" "${BPT:-}" "$CLOCK" >> "$OUT" <<'PY'
 import re, sys, time
 out, tm, tool, t, load = open(sys.argv[1]).read(), open(sys.argv[2]).read(), sys.argv[3], sys.argv[4], sys.argv[5]
 g = lambda pat: re.search(pat, out).group(1)
@@ -45,7 +54,7 @@ bpt = re.search(r'BVH and triangles ([\d.]+) bytes/triangle', out)
 print(",".join([tool, t, g(r'(\d+) triangles'), g(r'load (\d+) ms'), g(r'build.*?: ([\d.]+) ms'),
                 bpt.group(1) if bpt else sys.argv[6], "%.0f" % (int(re.search(r'rss (\d+)', tm).group(1)) / 1024),
                 rate('primary'), rate('diffuse'), rate('shadow'), g(r'primary:\s*\d+ rays,\s*(\d+)'), load,
-                time.strftime('%Y-%m-%d %H:%M', time.gmtime())]))
+                time.strftime('%Y-%m-%d %H:%M', time.gmtime()), sys.argv[7]]))
 PY
   tail -1 "$OUT"
 }

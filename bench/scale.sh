@@ -3,16 +3,19 @@
 #
 # For each size N in SCALE_SIZES (millions of triangles, default "1 2 4 8 16"), a field of copies of
 # the bunny (build/bench-scale-mesh, bench/scale_mesh.c) is written once to SCALE_CACHE (default
-# ~/.cache/pathlab-bench-scale: outside git, 0.04 GB of OBJ per million triangles). Then, for each
-# thread count of SCALE_THREADS (default "1 2"), embree-rays and `pathlab bench-rays` run on it back
-# to back (same rays, ../shared/tools/embree-rays/README.md), each under /usr/bin/time for its peak
-# resident memory, SCALE_ROUNDS times (default 1), alternated. Embree's own BVH size comes from one
-# more run with EMBREE_VERBOSE=1 (its statistics: "total ... #bytes/prim"), at 1 thread and 64x64
-# rays; pathlab prints its own (nodes and triangle blocks: all the tree keeps of the mesh).
-# Writes one line per run to SCALE_OUT (default bench/scale.csv, with the load average; SCALE_APPEND=1
-# adds to it instead), then draws
-# docs/scale.svg and prints the table and slopes (bench/scale_plot.py). PATHLAB_FLAGS are passed to
-# bench-rays (e.g. "--bvh-quality high"); SCALE_TAG names them in the CSV (default: pathlab).
+# ~/.cache/pathlab-bench-scale: outside git, 0.04 GB of OBJ per million triangles).
+# SCALE_KIND=subdivide: the bunny itself cut into 4^k times its triangles instead (at least N
+# million: "1 4 16" gives 1.1M, 4.4M, 17.8M), the same surface and view at every size, so that
+# only the tree grows. Then, for each thread count of SCALE_THREADS (default "1 2"), embree-rays
+# and `pathlab bench-rays` run on it back to back (same rays, ../shared/tools/embree-rays/README.md),
+# each under /usr/bin/time for its peak resident memory, SCALE_ROUNDS times (default 1),
+# alternated. Embree's own BVH size comes from one more run with EMBREE_VERBOSE=1 (its statistics:
+# "total ... #bytes/prim"), at 1 thread and 64x64 rays; pathlab prints its own (nodes and triangle
+# blocks: all the tree keeps of the mesh).
+# Writes one line per run to SCALE_OUT (default bench/scale.csv; with the load average; SCALE_APPEND=1
+# adds to it instead), then draws docs/NAME.svg for bench/NAME.csv and prints the tables and slopes
+# (bench/scale_plot.py). PATHLAB_FLAGS are passed to bench-rays (e.g. "--bvh-quality split");
+# SCALE_TAG names them in the CSV (default: pathlab).
 # SCALE_CLOCK=cpu times both with the process's CPU clock instead of the wall clock (bench-rays
 # --cpu-time, and embree-rays built as build/embree-rays-cpu with bench/cpu_clock.h): on a machine
 # loaded by other processes, wall seconds count their time slices too.
@@ -25,6 +28,8 @@ ROUNDS=${SCALE_ROUNDS:-1}
 CACHE=${SCALE_CACHE:-$HOME/.cache/pathlab-bench-scale}
 OUT=${SCALE_OUT:-bench/scale.csv}
 TAG=${SCALE_TAG:-pathlab}
+KIND=${SCALE_KIND:-field}
+case $KIND in field) SUB="" ;; subdivide) SUB=subdivide ;; *) echo "scale.sh: SCALE_KIND is field or subdivide" >&2; exit 2 ;; esac
 FLAGS=${PATHLAB_FLAGS:-}
 BASE=../shared/data/meshes/bunny.obj
 CLOCK=${SCALE_CLOCK:-wall}
@@ -60,8 +65,8 @@ PY
 }
 
 for n in $SIZES; do
-  mesh=$CACHE/bunny-${n}M.obj
-  [ -s "$mesh" ] || "$BUILD/bench-scale-mesh" "$BASE" $((n * 1000000)) "$mesh"
+  mesh=$CACHE/bunny-${SUB:+sub-}${n}M.obj
+  [ -s "$mesh" ] || "$BUILD/bench-scale-mesh" "$BASE" $((n * 1000000)) "$mesh" $SUB
   # Embree's BVH statistics: bytes per primitive of its nodes and leaves (the leaves hold the triangles)
   EMBREE_VERBOSE=1 "$EMBREE" "$mesh" -t 1 -r 64 > "$tmp/verbose" 2>&1 || true
   ebpt=$(sed -n 's/^ *total *: sah.*#bytes\/prim = *\([0-9.]*\).*/\1/p' "$tmp/verbose" | tail -1)
@@ -74,4 +79,4 @@ for n in $SIZES; do
     done
   done
 done
-python3 bench/scale_plot.py "$OUT" docs/scale.svg
+python3 bench/scale_plot.py "$OUT" "docs/$(basename "$OUT" .csv).svg"

@@ -1,13 +1,16 @@
 /* bench/scale_mesh.c — the big meshes of `make bench-scale` (bench/scale.sh), built as
  * build/bench-scale-mesh:
  *
- *   bench-scale-mesh MESH.obj NTRIS OUT.obj
+ *   bench-scale-mesh MESH.obj NTRIS OUT.obj [subdivide]
  *
  * writes a field of copies of MESH (its `v` and `f` lines; polygons fan-triangulated, negative
  * indices allowed), as many as it takes to reach NTRIS triangles, on a square grid of the xz plane.
  * Each copy is turned about y, scaled by 0.8-1.2 and raised by up to a third of its height, by
  * hashes of its number, so no two copies are alike and no two overlap; the same arguments give the
- * same file. OUT.obj is written to OUT.obj.tmp and renamed. Exit 0, or 2 with a message. */
+ * same file. With `subdivide`, MESH itself instead, each triangle cut into 4 at its edges' midpoints
+ * (shared between neighbours) as many times as it takes: the same surface, seen the same way by
+ * bench-rays' camera, with 4^k times the triangles. OUT.obj is written to OUT.obj.tmp and renamed.
+ * Exit 0, or 2 with a message. */
 #include <errno.h>
 #include <math.h>
 #include <stdint.h>
@@ -109,6 +112,46 @@ static int write_copy(FILE *out, const mesh_in *m, long c, long g, const double 
     return 0;
 }
 
+/* The midpoint of edge (a, b), made once: an open-addressing table of the level's edges. */
+typedef struct { long *key, *mid; long cap; } edge_table;
+
+static long midpoint(mesh_in *m, edge_table *E, long a, long b)
+{
+    long lo = a < b ? a : b, hi = a < b ? b : a, k = lo * 2654435761L + hi, i;
+    int c;
+    for (i = (k & 0x7fffffffffffL) % E->cap;; i = (i + 1) % E->cap) {
+        if (E->key[2 * i] == lo && E->key[2 * i + 1] == hi) return E->mid[i];
+        if (E->key[2 * i] < 0) break;
+    }
+    E->key[2 * i] = lo; E->key[2 * i + 1] = hi; E->mid[i] = m->nv;
+    for (c = 0; c < 3; c++) m->v[3 * m->nv + c] = 0.5f * (m->v[3 * a + c] + m->v[3 * b + c]);
+    return m->nv++;
+}
+
+/* One level: every triangle into 4; -1 when out of memory. */
+static int subdivide(mesh_in *m)
+{
+    edge_table E;
+    long nf = m->nf, f, i, *nfaces;
+    E.cap = 3 * nf + 1;
+    E.key = malloc((size_t)E.cap * 2 * sizeof(long)); E.mid = malloc((size_t)E.cap * sizeof(long));
+    nfaces = malloc((size_t)nf * 12 * sizeof(long));
+    if (!E.key || !E.mid || !nfaces || grow((void **)&m->v, &m->capv, 3 * (m->nv + 3 * nf), sizeof(float))) {
+        free(E.key); free(E.mid); free(nfaces);
+        return -1;
+    }
+    for (i = 0; i < 2 * E.cap; i++) E.key[i] = -1;
+    for (f = 0; f < nf; f++) {
+        long a = m->f[3 * f], b = m->f[3 * f + 1], c = m->f[3 * f + 2];
+        long ab = midpoint(m, &E, a, b), bc = midpoint(m, &E, b, c), ca = midpoint(m, &E, c, a);
+        long t[12] = {a, ab, ca, ab, b, bc, ca, bc, c, ab, bc, ca};
+        memcpy(&nfaces[12 * f], t, sizeof t);
+    }
+    free(m->f); free(E.key); free(E.mid);
+    m->f = nfaces; m->nf = 4 * nf; m->capf = 12 * nf;
+    return 0;
+}
+
 static int write_field(const char *path, const mesh_in *m, long ntris)
 {
     char tmp[4096];
@@ -140,10 +183,16 @@ int main(int argc, char **argv)
     char *end;
     long ntris;
     int rc;
-    if (argc != 4) { fprintf(stderr, "usage: bench-scale-mesh MESH.obj NTRIS OUT.obj\n"); return 2; }
+    if (argc < 4 || argc > 5 || (argc == 5 && strcmp(argv[4], "subdivide"))) {
+        fprintf(stderr, "usage: bench-scale-mesh MESH.obj NTRIS OUT.obj [subdivide]\n");
+        return 2;
+    }
     ntris = strtol(argv[2], &end, 10);
     if (*end || ntris < 1 || ntris > 1000000000L) { fprintf(stderr, "bench-scale-mesh: bad NTRIS %s\n", argv[2]); return 2; }
-    rc = read_mesh(argv[1], &m) || write_field(argv[3], &m, ntris) ? 2 : 0;
+    rc = read_mesh(argv[1], &m) ? 2 : 0;
+    while (!rc && argc == 5 && m.nf < ntris)
+        if (subdivide(&m)) { fprintf(stderr, "bench-scale-mesh: out of memory\n"); rc = 2; }
+    if (!rc && write_field(argv[3], &m, argc == 5 ? m.nf : ntris)) rc = 2;
     free(m.v); free(m.f);
     return rc;
 }

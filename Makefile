@@ -229,6 +229,17 @@ bench-portable:
 	$(MAKE) NATIVE=1 build-native/pathlab
 	bench/portable.sh ./pathlab build-native/pathlab $(BENCH_MESHES)
 
+# The BVH from 1M to 16M triangles against Embree 3 (bench/scale.sh: fields of bunny copies cached in
+# ~/.cache/pathlab-bench-scale, build time, bytes per triangle, Mrays/s per ray kind at 1 and 2
+# threads; bench/scale.csv, docs/scale.svg). The `make` build, as users get it; about 30 minutes on
+# the loaded machine. SCALE_SIZES="1 2" SCALE_THREADS=1 for a shorter run.
+bench-scale: $(PROG) $(BUILD)/bench-scale-mesh
+	BUILD=$(BUILD) PATHLAB=./$(PROG) bench/scale.sh
+
+$(BUILD)/bench-scale-mesh: bench/scale_mesh.c
+	$(call say,LINK,$@)
+	$(Q)$(CC) $(CFLAGS) -o $@ bench/scale_mesh.c -lm
+
 # Efficiency against Blender Cycles 3.4 (bench/cycles.sh): MSE x time at equal time on the
 # diffuse Cornell boxes (scenes/cornell and ../shared's CornellBox-Original), 200x200, 2 threads, 64
 # and 256 spp; writes the table into docs/performance.md. Optional: installs Debian's blender and
@@ -300,4 +311,4 @@ mutants:
 clean:
 	rm -rf build build-san build-clang-san build-fuzz build-native pathlab
 
-.PHONY: all run install uninstall test test-estimators test-deps fuzz stress refs bench bench-native bench-portable bench-cycles bench-cycles-deps grade-calibration clean mutants test-parallel test-slurm
+.PHONY: all run install uninstall test test-estimators test-deps fuzz stress refs bench bench-native bench-portable bench-scale bench-cycles bench-cycles-deps grade-calibration clean mutants test-parallel test-slurm

@@ -11,6 +11,7 @@
  *     its move is 16 ldexpf(1, ilogbf(fmaxf(scale, FLT_MIN)) - 23) (the libm formula it replaced)
  *     for every kind of scale, and triangle_scale is the largest |coordinate|.
  *  6. big_array (the BVH's arrays): aligned, writable, NULL when n * size overflows.
+ *  7. 1 and 2 again with the triangles split before the build (BVH_BUILD_SPLIT): the same hits.
  * Sanitizer builds, and PATHLAB_TEST_QUICK=1, shrink the sizes. */
 #include "geometry/bvh.h"
 #include "geometry/ray.h"
@@ -34,6 +35,9 @@
 #endif
 
 static int quick;
+static int quality = BVH_BUILD_DEFAULT;   /* of the trees built by build() */
+static const char *quality_tag(void) { return quality == BVH_BUILD_SPLIT ? "_split" : ""; }
+static bvh *build(const vec3 *P, const int *tri, int ntris, int threads) { return bvh_build_quality(P, tri, ntris, threads, quality); }
 
 /* ---- Random numbers: a 64-bit LCG, its top bits -------------------------------------------- */
 static uint64_t rng_state = 0x9e3779b97f4a7c15ULL;
@@ -254,7 +258,7 @@ static void test_soup(int kind, int n, int nrays)
     const char *why = "", *first_why = "";
     char name[64];
     make_soup(&s, kind, n);
-    b = bvh_build(s.P, s.tri, s.ntris, 2);
+    b = build(s.P, s.tri, s.ntris, 2);
     for (i = 0; i < nrays && b; i++) {
         ray r = random_ray(1.5f);
         hit h;
@@ -267,7 +271,7 @@ static void test_soup(int kind, int n, int nrays)
         hits += bvh_intersect(b, &r, &h);
         if (!agrees(b, &s, &r, &why)) { if (!bad++) first_why = why; }
     }
-    snprintf(name, sizeof name, "soup_%s_%d", kind_name[kind], n);
+    snprintf(name, sizeof name, "soup_%s_%d%s", kind_name[kind], n, quality_tag());
     check(b && bad == 0, name, "%d of %d rays disagree with brute force (%s); %d hits", bad, nrays, first_why, hits);
     bvh_free(b);
     soup_free(&s);
@@ -303,7 +307,7 @@ static int count_misses(const bvh *b, const soup *s, vec3 o, int outside, vec3 c
 
 static void test_closed(const char *name, const soup *s, vec3 center, float radius)
 {
-    bvh *b = bvh_build(s->P, s->tri, s->ntris, 2);
+    bvh *b = build(s->P, s->tri, s->ntris, 2);
     int miss_in = 0, miss_out = 0, nin = 0, nout = 0;
     vec3 inside[3] = {center, v3_add(center, v3_scale(v3(0.3f, -0.2f, 0.1f), radius)),
                       v3_add(center, v3_scale(v3(-0.05f, 0.4f, -0.3f), radius))};
@@ -319,7 +323,7 @@ static void test_closed(const char *name, const soup *s, vec3 center, float radi
  * zero components and the origin lies on box planes of the bvh. */
 static void test_axis_rays(const char *name, const soup *cube, vec3 c, float h, int n)
 {
-    bvh *b = bvh_build(cube->P, cube->tri, cube->ntris, 1);
+    bvh *b = build(cube->P, cube->tri, cube->ntris, 1);
     int misses = 0, nrays = 0, i, j, axis, sign;
     for (i = 1; i < n && b; i++)
         for (j = 1; j < n; j++)
@@ -347,11 +351,11 @@ static void test_watertight(void)
         char name[64];
         make_icosphere(&sphere, c, 1.0f, levels);
         make_cube(&cube, c, 1.0f, grid);
-        snprintf(name, sizeof name, "watertight_icosphere%s", moved ? "_at_1e4" : "");
+        snprintf(name, sizeof name, "watertight_icosphere%s%s", moved ? "_at_1e4" : "", quality_tag());
         test_closed(name, &sphere, c, 1.0f);
-        snprintf(name, sizeof name, "watertight_cube%s", moved ? "_at_1e4" : "");
+        snprintf(name, sizeof name, "watertight_cube%s%s", moved ? "_at_1e4" : "", quality_tag());
         test_closed(name, &cube, c, 1.0f);
-        snprintf(name, sizeof name, "watertight_cube_axis_rays%s", moved ? "_at_1e4" : "");
+        snprintf(name, sizeof name, "watertight_cube_axis_rays%s%s", moved ? "_at_1e4" : "", quality_tag());
         test_axis_rays(name, &cube, c, 1.0f, grid);
         soup_free(&sphere); soup_free(&cube);
     }
@@ -559,5 +563,10 @@ int main(void)
     test_offset_formula();
     test_big_array();
     test_isa();
+    quality = BVH_BUILD_SPLIT;
+    for (kind = 0; kind < NKINDS; kind++)
+        for (i = 0; i < (int)(sizeof sizes / sizeof sizes[0]); i++)
+            if (sizes[i] <= 1000) test_soup(kind, sizes[i], quick ? 500 : 2000);
+    test_watertight();
     return check_summary();
 }

@@ -47,7 +47,11 @@ static const char SYN_CONVERT[] =
     "                prints the size and each channel's mean, min and max\n";
 static const char MORE_BENCH[] =
     "  -r RES        the rays: a RES x RES grid of camera rays (default 1024)\n"
-    "  -t THREADS    worker threads (default 1)\n";
+    "  -t THREADS    worker threads (default 1)\n"
+    "  --cpu-time    time with the process's CPU clock (all threads' seconds together), not the wall\n"
+    "                clock: on a machine loaded by other processes it does not count their time slices\n"
+    "  --bvh-quality default|split   split: cut the triangles that fill least of their boxes into\n"
+    "                pieces first (a quarter more primitives, a slower build; the same hits)\n";
 static const char MORE_DIFF[] =
     "  prints RMSE, relMSE, MAE, max, PSNR and the mean difference (with its standard error)\n"
     "  --heatmap OUT.ppm|OUT.png   also write the heatmap of |A - REF|\n"

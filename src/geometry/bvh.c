@@ -43,7 +43,9 @@
 #include <assert.h>
 #include <float.h>
 #include <limits.h>
+#include <math.h>
 #include <stddef.h>
+#include <stdint.h>
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -497,24 +499,221 @@ static void make_refs(void *ctx, int thread, int begin, int end)
     aabb_grow(&M->cb[thread], &cb);
 }
 
-/* Step 1; returns the number of leaves, 0 when out of memory. */
-static int build_binary(builder *B, const vec3 *P, const int *tri, int ntris, int threads)
+/* ---- Build, step 0 (BVH_BUILD_SPLIT only): triangles cut into several primrefs ----------------
+ * A long thin or tilted triangle fills little of its box, and that box overlaps its neighbours':
+ * rays enter it for nothing. Before the build, such triangles get more than one primref, each
+ * bounding the part of the triangle on one side of a plane that halves the box on its longest axis,
+ * recursively (early split clipping: Ernst and Greiner 2007; Karras and Aila 2013, section 4.2, pick
+ * the triangles alike). The extra primrefs, BVH_SPLIT_BUDGET times the triangles, are shared out in
+ * proportion to each triangle's waste, the half area of its box less twice its own area (0 for a
+ * right triangle in an axis plane), rounded up or down by a hash of its index so that the total
+ * comes out right. A leaf then lists a triangle once per primref it holds: the same hit. */
+#define BVH_SPLIT_BUDGET 0.25   /* extra primrefs per triangle, on average */
+#define BVH_SPLIT_MAX 15        /* extra primrefs of one triangle, at most */
+
+typedef struct {
+    const vec3 *P;
+    const int *tri;
+    float *waste;       /* per triangle */
+    int *first;         /* its first primref; first[ntris] = all of them */
+    primref *refs;
+    double sum[PARALLEL_MAX_THREADS];
+    aabb box[PARALLEL_MAX_THREADS], cb[PARALLEL_MAX_THREADS];
+} splitter;
+
+static void corners(const vec3 *P, const int *tri, int i, float v[3][4])
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        vec3 p = P[tri[3 * i + k]];
+        v[k][0] = p.x; v[k][1] = p.y; v[k][2] = p.z; v[k][3] = 0;
+    }
+}
+static aabb corner_box(float v[3][4])
+{
+    aabb b = aabb_empty();
+    int k;
+    for (k = 0; k < 3; k++) { aabb q; memcpy(q.lo, v[k], sizeof q.lo); memcpy(q.hi, v[k], sizeof q.hi); aabb_grow(&b, &q); }
+    return b;
+}
+
+/* parallel_body: the waste of triangles [begin, end), and their sum per thread. */
+static void split_waste(void *ctx, int thread, int begin, int end)
+{
+    splitter *S = ctx;
+    float v[3][4];
+    double sum = 0;
+    int i;
+    for (i = begin; i < end; i++) {
+        aabb b;
+        vec3 e1, e2, n;
+        corners(S->P, S->tri, i, v);
+        b = corner_box(v);
+        e1 = v3(v[1][0] - v[0][0], v[1][1] - v[0][1], v[1][2] - v[0][2]);
+        e2 = v3(v[2][0] - v[0][0], v[2][1] - v[0][1], v[2][2] - v[0][2]);
+        n = v3_cross(e1, e2);                       /* |n| = twice the triangle's area */
+        S->waste[i] = fmaxf(0.0f, aabb_area(&b) - sqrtf(v3_dot(n, n)));
+        sum += S->waste[i];
+    }
+    S->sum[thread] += sum;
+}
+
+/* Grows l and r by the point x, widened by `slack` on every axis. */
+static void grow_both(aabb *l, aabb *r, const float x[4], float slack)
+{
+    aabb q;
+    int a;
+    for (a = 0; a < 4; a++) { q.lo[a] = x[a] - slack; q.hi[a] = x[a] + slack; }
+    aabb_grow(l, &q);
+    aabb_grow(r, &q);
+}
+
+/* The bounds of the part of triangle v inside `box` on each side of the plane x[axis] = c: its
+ * corners on that side and the points where its edges cross the plane, those widened by a few ulps
+ * of the corners (the crossing is rounded), then clipped to the side and to the box. */
+static void clip_split(float v[3][4], const aabb *box, int axis, float c, aabb *l, aabb *r)
+{
+    float x[4];
+    int e, a;
+    *l = *r = aabb_empty();
+    for (e = 0; e < 3; e++) {
+        const float *p = v[e], *q = v[(e + 1) % 3];
+        aabb pt;
+        memcpy(pt.lo, p, sizeof pt.lo); memcpy(pt.hi, p, sizeof pt.hi);
+        if (p[axis] <= c) aabb_grow(l, &pt);
+        if (p[axis] >= c) aabb_grow(r, &pt);
+        if ((p[axis] < c && q[axis] > c) || (p[axis] > c && q[axis] < c)) {
+            float t = (c - p[axis]) / (q[axis] - p[axis]), slack = 0;
+            for (a = 0; a < 3; a++) {
+                x[a] = p[a] + t * (q[a] - p[a]);
+                slack = fmaxf(slack, (fabsf(p[a]) + fabsf(q[a])) * 0x1p-20f);
+            }
+            x[3] = 0;
+            grow_both(l, r, x, slack);
+        }
+    }
+    l->hi[axis] = fminf(l->hi[axis], c);
+    r->lo[axis] = fmaxf(r->lo[axis], c);
+    for (a = 0; a < 3; a++) {
+        l->lo[a] = fmaxf(l->lo[a], box->lo[a]); l->hi[a] = fminf(l->hi[a], box->hi[a]);
+        r->lo[a] = fmaxf(r->lo[a], box->lo[a]); r->hi[a] = fminf(r->hi[a], box->hi[a]);
+    }
+    l->lo[3] = l->hi[3] = r->lo[3] = r->hi[3] = 0;
+}
+
+/* Writes extra + 1 primrefs of triangle id covering its part inside box; returns the next slot. */
+static primref *split_tri(float v[3][4], aabb box, int extra, int id, primref *out)
+{
+    aabb l, r;
+    float ex = box.hi[0] - box.lo[0], ey = box.hi[1] - box.lo[1], ez = box.hi[2] - box.lo[2];
+    int axis = ex >= ey && ex >= ez ? 0 : ey >= ez ? 1 : 2, nl;
+    if (extra > 0 && box.hi[axis] > box.lo[axis]) {
+        clip_split(v, &box, axis, 0.5f * (box.lo[axis] + box.hi[axis]), &l, &r);
+        if (l.lo[axis] <= l.hi[axis] && r.lo[axis] <= r.hi[axis]) {
+            nl = (extra - 1 + (aabb_area(&l) >= aabb_area(&r))) / 2;   /* the bigger part gets the odd one */
+            out = split_tri(v, l, nl, id, out);
+            return split_tri(v, r, extra - 1 - nl, id, out);
+        }
+    }
+    for (; extra >= 0; extra--, out++) {           /* a point, or a piece too thin to cut: copies */
+        *out = box;
+        memcpy(&out->lo[3], &id, sizeof id);
+        out->hi[3] = 0;
+    }
+    return out;
+}
+
+/* parallel_body: the primrefs of triangles [begin, end), at first[i], and their bounds per thread. */
+static void split_refs(void *ctx, int thread, int begin, int end)
+{
+    splitter *S = ctx;
+    float v[3][4];
+    aabb box = aabb_empty(), cb = aabb_empty();
+    int i, j;
+    for (i = begin; i < end; i++) {
+        corners(S->P, S->tri, i, v);
+        split_tri(v, corner_box(v), S->first[i + 1] - S->first[i] - 1, i, S->refs + S->first[i]);
+        for (j = S->first[i]; j < S->first[i + 1]; j++) { aabb_grow(&box, &S->refs[j]); aabb_grow_centroid(&cb, &S->refs[j]); }
+    }
+    aabb_grow(&S->box[thread], &box);
+    aabb_grow(&S->cb[thread], &cb);
+}
+
+/* Each triangle's share of the extra primrefs: first[] as splitter says; the total, or -1 if it
+ * would not fit an int (then no triangle is split). */
+static int split_counts(splitter *S, int ntris, int threads)
+{
+    double total = 0, scale;
+    long n = 0;
+    int i, t;
+    for (t = 0; t < threads; t++) S->sum[t] = 0;
+    parallel_for(ntris, parallel_even_grain(ntris, threads), threads, split_waste, S);
+    for (t = 0; t < threads; t++) total += S->sum[t];
+    scale = total > 0 ? BVH_SPLIT_BUDGET * ntris / total : 0;
+    S->first[0] = 0;
+    for (i = 0; i < ntris; i++) {
+        uint32_t h = (uint32_t)i * 0x9e3779b9u;    /* a hash of i, for the rounding */
+        double share = scale * S->waste[i] + (double)((h ^ h >> 15) >> 8) * (1.0 / 16777216.0);
+        int extra = share < BVH_SPLIT_MAX ? (int)share : BVH_SPLIT_MAX;
+        n += 1 + extra;
+        if (n > INT_MAX / 2) return -1;
+        S->first[i + 1] = (int)n;
+    }
+    return (int)n;
+}
+
+/* Step 0: B->refs, the triangles split; returns their number (0: out of memory, or -1: too many). */
+static int build_split_refs(builder *B, const vec3 *P, const int *tri, int ntris, int threads, aabb *cb)
+{
+    splitter S;
+    int nrefs = 0, t;
+    S.P = P; S.tri = tri;
+    S.waste = big_array((size_t)ntris, sizeof(float), 64);
+    S.first = big_array((size_t)ntris + 1, sizeof(int), 64);
+    if (S.waste && S.first) nrefs = split_counts(&S, ntris, threads);
+    if (nrefs > 0 && (B->refs = big_array((size_t)nrefs, sizeof(primref), 64)) != NULL) {
+        S.refs = B->refs;
+        for (t = 0; t < threads; t++) S.box[t] = S.cb[t] = aabb_empty();
+        parallel_for(ntris, parallel_even_grain(ntris, threads), threads, split_refs, &S);
+        for (t = 1; t < threads; t++) { aabb_grow(&S.box[0], &S.box[t]); aabb_grow(&S.cb[0], &S.cb[t]); }
+        cb[0] = S.box[0]; cb[1] = S.cb[0];
+    } else if (nrefs > 0) nrefs = 0;
+    free(S.waste);
+    free(S.first);
+    return nrefs;
+}
+
+/* Step 0 without splits: one primref per triangle; its bounds in cb[0], its centroids' in cb[1]. */
+static int build_refs(builder *B, const vec3 *P, const int *tri, int ntris, int threads, aabb *cb)
 {
     ref_maker M;
-    int t, leaves, next = 1;
-    B->nslots = 2 * ntris;
+    int t;
     B->refs = big_array((size_t)ntris, sizeof(primref), 64);
-    B->nodes = big_array((size_t)B->nslots, sizeof(node2), 64);
-    B->sub = big_array((size_t)B->nslots, sizeof(subtree), 64);
-    if (!B->refs || !B->nodes || !B->sub) return 0;
+    if (!B->refs) return 0;
     M.P = P; M.tri = tri; M.refs = B->refs;
     for (t = 0; t < threads; t++) M.box[t] = M.cb[t] = aabb_empty();
     parallel_for(ntris, parallel_even_grain(ntris, threads), threads, make_refs, &M);
     for (t = 1; t < threads; t++) { aabb_grow(&M.box[0], &M.box[t]); aabb_grow(&M.cb[0], &M.cb[t]); }
-    set_node(&B->nodes[0], &M.box[0]);
+    cb[0] = M.box[0]; cb[1] = M.cb[0];
+    return ntris;
+}
+
+/* Step 1; returns the number of leaves, 0 when out of memory. */
+static int build_binary(builder *B, const vec3 *P, const int *tri, int ntris, int threads, int quality)
+{
+    aabb cb[2];
+    int leaves, next = 1, nrefs = -1;
+    if (quality == BVH_BUILD_SPLIT) nrefs = build_split_refs(B, P, tri, ntris, threads, cb);
+    if (nrefs < 0) nrefs = build_refs(B, P, tri, ntris, threads, cb);   /* too many to split: as usual */
+    if (nrefs == 0) return 0;
+    B->nslots = 2 * nrefs;
+    B->nodes = big_array((size_t)B->nslots, sizeof(node2), 64);
+    B->sub = big_array((size_t)B->nslots, sizeof(subtree), 64);
+    if (!B->nodes || !B->sub) return 0;
+    set_node(&B->nodes[0], &cb[0]);
     B->idle = threads - 1;
     pthread_mutex_init(&B->lock, NULL);
-    leaves = build_rec(B, 0, 0, ntris, M.cb[0], 0, &next);
+    leaves = build_rec(B, 0, 0, nrefs, cb[1], 0, &next);
     pthread_mutex_destroy(&B->lock);
     return leaves;
 }
@@ -600,6 +799,11 @@ int bvh_occluded(const bvh *b, const ray *r) { return b->trav->occluded(b, r); }
 
 bvh *bvh_build(const vec3 *P, const int *tri, int ntris, int threads)
 {
+    return bvh_build_quality(P, tri, ntris, threads, BVH_BUILD_DEFAULT);
+}
+
+bvh *bvh_build_quality(const vec3 *P, const int *tri, int ntris, int threads, int quality)
+{
     builder B;
     bvh *b = calloc(1, sizeof *b);
     int ok, leaves;
@@ -611,7 +815,7 @@ bvh *bvh_build(const vec3 *P, const int *tri, int ntris, int threads)
     /* a small mesh builds faster than a thread starts (a loaded machine took 5-33 ms to start the
      * two parallel passes' threads for the Cornell box's 38 triangles, against 0 ms on one thread) */
     threads = ntris < BVH_PARALLEL_MIN ? 1 : parallel_threads(threads);
-    leaves = build_binary(&B, P, tri, ntris, threads);
+    leaves = build_binary(&B, P, tri, ntris, threads, quality);
     ok = leaves > 0 && build_wide(b, &B, P, tri, leaves, threads);
     free(B.refs);
     free(B.nodes);

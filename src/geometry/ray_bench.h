@@ -14,11 +14,17 @@ enum { RAY_BENCH_PRIMARY, RAY_BENCH_DIFFUSE, RAY_BENCH_SHADOW };
 
 typedef struct {
     double build_ms;            /* the fastest build */
+    double bvh_bytes;           /* the tree's nodes and triangle blocks (all it keeps of the mesh) */
     long rays[3], hits[3];      /* per kind; a shadow ray's hit: it is occluded */
     double secs[3];
 } ray_bench_result;
 
-/* The triangles P[tri[3i+k]] (nverts vertices, ntris triangles), res x res primary rays on
- * `threads` threads. 0, or 1 when out of memory. */
-int ray_bench_run(const vec3 *P, int nverts, const int *tri, int ntris, int res, int threads, ray_bench_result *out);
+/* How to run it: res x res primary rays on `threads` threads; the BVH built by bvh_build_quality
+ * with `quality`; cpu_time: times are the process's CPU seconds (all threads' together) instead of
+ * wall seconds, which a loaded machine inflates by the time slices it gives to other processes. */
+typedef struct { int res, threads, quality, cpu_time; } ray_bench_options;
+
+/* The triangles P[tri[3i+k]] (nverts vertices, ntris triangles). 0, or 1 when out of memory. */
+int ray_bench_run(const vec3 *P, int nverts, const int *tri, int ntris, const ray_bench_options *opt,
+                  ray_bench_result *out);
 #endif

@@ -99,5 +99,5 @@ expect_status "a pdf on some lines only: exit 2" 2 $PATHLAB check-sampler "$TMP/
 expect_err "a pdf on some lines only: FILE:4" "mix\.txt:4: 3 numbers, but line 1 has 4"
 expect_status "blinn without --wo: exit 2" 2 $PATHLAB check-sampler "$TMP/cos.txt" --pdf blinn:20
 expect_status "unknown --pdf: exit 2" 2 $PATHLAB check-sampler "$TMP/cos.txt" --pdf phong
-expect_err "unknown --pdf: the names" "uniform, hemisphere, cosine, cosm:M or blinn:M, got 'phong'"
+expect_err "unknown --pdf: the names" "one of uniform, hemisphere, cosine, cosm:M, blinn:M, got 'phong'"
 expect_status "missing file: exit 2" 2 $PATHLAB check-sampler "$TMP/none.txt" --pdf cosine

@@ -55,6 +55,7 @@ static int build_scene(scene *s)
     mesh *m = &s->m;
     int i;
     memset(s, 0, sizeof *s);
+    s->emitter_prob = 1.0f;   /* no sky: light sampling always picks an emitter (scene_load sets it so) */
     m->nverts = 13, m->ntris = 8, m->nmats = 1 + NLIGHT;
     m->P = malloc(sizeof(vec3) * 13);
     m->tri = malloc(sizeof(int) * 24);

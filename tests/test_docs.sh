@@ -16,8 +16,11 @@
 ROOT=${DOCS_ROOT:-.}   # another tree to check (this file's own negative checks use it)
 LAYER_RE='sys|math|geometry|scene|image|sampler|tracer|render|stats|util|files|grade|compare|check|cmd'
 docs() { echo "$ROOT/README.md"; ls "$ROOT"/docs/*.md; }
+# DOCS_ONLY=N runs check N alone (the negative checks below run only the check each plant breaks)
+want() { [ -z "${DOCS_ONLY:-}" ] || [ "$DOCS_ONLY" = "$1" ]; }
 
 # 1. issues and branches (grep -n: file:line: text)
+if want 1; then
 issue=$(docs | xargs grep -niE '\bissues? #?[0-9]+' || true)
 if [ -z "$issue" ]; then pass "no doc names an issue number"
 else fail "docs name an issue (say what is true now instead): $(echo "$issue" | cut -c1-160 | head -n 8 | tr '\n' ';')"; fi
@@ -27,13 +30,19 @@ branch=$(docs | xargs grep -nE "$BRANCH_RE|$MAIN_RE" || true)
 if [ -z "$branch" ]; then pass "no doc names a branch"
 else fail "docs name a branch (say what is true now instead): $(echo "$branch" | cut -c1-160 | head -n 8 | tr '\n' ';')"; fi
 
+fi
+
 # 2. performance.md's length
+if want 2; then
 n=$(wc -l < "$ROOT/docs/performance.md")
 if [ "$n" -le 400 ]; then pass "docs/performance.md is $n lines (at most 400)"
 else fail "docs/performance.md is $n lines, over 400: its history belongs in bench/log.md"; fi
 
+fi
+
 # 3. architecture.md's print list: rows "| N | `src/tracer/FILE` | LINES | ..." of the section whose
 # heading says "Print this", and a row "| | total | LINES |"
+if want 3; then
 list=$(awk '/^#+ .*[Pp]rint this/ { on = 1; next } on && /^#/ { on = 0 } on' "$ROOT/docs/architecture.md")
 stale="" listed="" sum=0
 while IFS='|' read -r _ _ file count _; do
@@ -54,10 +63,13 @@ if [ -z "$listed" ]; then fail "docs/architecture.md has no \"Print this\" list 
 elif [ -z "$stale" ]; then pass "docs/architecture.md's print list: every file of src/tracer/, line counts as wc -l ($sum lines)"
 else fail "docs/architecture.md's print list is stale:$stale"; fi
 
+fi
+
 # 4. every path a doc names exists: words starting src/ tests/ bench/ docs/ (from the project's
 # root), a layer's file (tracer/integrator.c: under src/), a Markdown link (from the doc's folder).
 # A path with a placeholder in capitals (tests/mutants/NAME.patch) or a glob (tests/*.sh) is
 # checked as a pattern: something must match it.
+if want 4; then
 missing=""
 exists() {   # PATH: 0 if the path (or, with * or a placeholder, anything matching it) exists
     local p=$1
@@ -86,8 +98,11 @@ done
 if [ -z "$missing" ]; then pass "every file path named in README.md and docs/*.md exists"
 else fail "docs name paths that do not exist:$missing"; fi
 
+fi
+
 # 5. architecture.md's arrows are tests/test_layout.sh's: the last column of each layer's row of the
 # folders table (`sys/` `math/` ..., "nothing", "every layer") is that layer's allowed() there
+if want 5; then
 eval "$(sed -n -e '/^LAYERS=/p' -e '/^allowed() {/,/^}/p' tests/test_layout.sh)"
 arrows=""
 for l in $LAYERS; do
@@ -102,7 +117,10 @@ done
 if [ -z "$arrows" ]; then pass "docs/architecture.md's arrows are those of tests/test_layout.sh"
 else fail "docs/architecture.md's arrows differ from tests/test_layout.sh's allowed():$arrows"; fi
 
+fi
+
 # 6. "Where to find": every function() a row names is defined in a file that row names
+if want 6; then
 where=$(awk '/^#+ Where to find/ { on = 1; next } on && /^#/ { on = 0 } on && /^\|/' "$ROOT/docs/architecture.md")
 gone=""
 while read -r row; do
@@ -117,8 +135,11 @@ if [ -z "$where" ]; then fail "docs/architecture.md has no \"Where to find\" tab
 elif [ -z "$gone" ]; then pass "docs/architecture.md's \"Where to find\": every function named is in a file its row names"
 else fail "docs/architecture.md's \"Where to find\" names functions not there:$gone"; fi
 
+fi
+
 # 8. a section named by title ("docs/sampler.md, \"Which default\"", "README, \"Polygons\"") exists there:
 # a heading, or a paragraph's bold lead, that contains the title
+if want 8; then
 sections=""
 for d in $(docs); do
     while IFS= read -r m; do
@@ -133,7 +154,10 @@ done
 if [ -z "$sections" ]; then pass "every section a doc names by its title exists"
 else fail "docs name sections that do not exist:$sections"; fi
 
+fi
+
 # 7. README's flag table gives every value list of `pathlab render --help` (--light a|b|c ...) as it is
+if want 7; then
 help=$("$PATHLAB" render --help 2>&1)
 flags=""
 if [ -z "$help" ]; then fail "could not read $PATHLAB render --help (build it first)"
@@ -148,6 +172,8 @@ else
     else fail "README's flag table differs from render --help:$flags"; fi
 fi
 
+fi
+
 # negative checks: the same checks on a copy of the docs with one planted violation each must fail
 # (each its own check, named by what the FAIL line says)
 if [ -z "${DOCS_ROOT:-}" ]; then
@@ -155,11 +181,11 @@ if [ -z "${DOCS_ROOT:-}" ]; then
     R=$TMP/root; mkdir -p "$R/docs"
     for f in * .[!.]*; do case $f in docs|README.md) ;; *) ln -s "$PWD/$f" "$R/$f" ;; esac; done
     for f in docs/*; do case $f in *.md) ;; *) ln -s "$PWD/$f" "$R/$f" ;; esac; done
-    for plant in "issue:name an issue" "branch:name a branch" "main:name a branch" "length:over 400" \
-                 "count:print list is stale" "path:paths that do not exist" "link:paths that do not exist" \
-                 "arrow:arrows differ" "where:names functions not there" "values:differs from render --help" \
-                 "section:sections that do not exist"; do
-        want=${plant#*:}; plant=${plant%%:*}
+    for plant in "1:issue:name an issue" "1:branch:name a branch" "1:main:name a branch" "2:length:over 400" \
+                 "3:count:print list is stale" "4:path:paths that do not exist" "4:link:paths that do not exist" \
+                 "5:arrow:arrows differ" "6:where:names functions not there" "7:values:differs from render --help" \
+                 "8:section:sections that do not exist"; do
+        only=${plant%%:*}; plant=${plant#*:}; want=${plant#*:}; plant=${plant%%:*}
         cp README.md "$R/README.md"; cp docs/*.md "$R/docs/"   # fresh copies, then one violation
         case $plant in
             issue) echo "As issue 7 asks, the image is brighter." >> "$R/docs/guide.md" ;;
@@ -174,7 +200,7 @@ if [ -z "${DOCS_ROOT:-}" ]; then
             values) sed -i 's/\\|solid-angle`/`/' "$R/README.md" ;;
             section) echo "See docs/sampler.md, \"Which sampler to pick\"." >> "$R/docs/guide.md" ;;
         esac
-        if DOCS_ROOT="$R" bash "$0" 2>&1 | grep '^FAIL' | grep -q "$want"; then pass "a planted violation ($plant) is caught"
+        if DOCS_ONLY=$only DOCS_ROOT="$R" bash "$0" 2>&1 | grep '^FAIL' | grep -q "$want"; then pass "a planted violation ($plant) is caught"
         else fail "a planted violation ($plant) was not caught"; fi
     done
 fi

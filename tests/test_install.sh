@@ -9,8 +9,11 @@ mkdir -p "$TMP/tree/tools" "$TMP/root/opt/pl/share/man/man1"
 cp Makefile "$TMP/tree/"; cp tools/man.sh "$TMP/tree/tools/"; cp "$PATHLAB" "$TMP/tree/pathlab"
 touch "$TMP/root/opt/pl/share/man/man1/other.1"   # someone else's file: uninstall leaves it
 cd "$TMP/tree" || exit 0
+# The copy's make sees neither this make's flags nor its build choice: `make test SAN=clang` puts SAN
+# in the environment, and the copy would then look for build-clang-san/pathlab, which it has not.
+mk() { env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL -u SAN -u FUZZ -u NATIVE make "$@"; }
 D=$TMP/root P=/opt/pl
-run_ok "make install" env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make -s install OBJ= PREFIX=$P DESTDIR="$D" > "$TMP/inst.out"
+run_ok "make install" mk -s install OBJ= PREFIX=$P DESTDIR="$D" > "$TMP/inst.out"
 for f in bin/pathlab share/man/man1/pathlab.1 share/bash-completion/completions/pathlab; do
     [ -s "$D$P/$f" ] && pass "install: $P/$f under DESTDIR" || fail "install: $P/$f not installed"
 done
@@ -25,11 +28,11 @@ if command -v man > /dev/null 2>&1; then
 else skip "man -l: man is not installed"; fi
 got=$(bash -c '. "$1"; COMP_WORDS=(pathlab render --spl); COMP_CWORD=2; _pathlab; echo "${COMPREPLY[*]}"' _ "$D$P/share/bash-completion/completions/pathlab")
 [ "$got" = "--split" ] && pass "the installed completion completes render --spl to --split" || fail "installed completion: '$got'"
-run_ok "make uninstall" env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make -s uninstall OBJ= PREFIX=$P DESTDIR="$D" > /dev/null
+run_ok "make uninstall" mk -s uninstall OBJ= PREFIX=$P DESTDIR="$D" > /dev/null
 left=$(cd "$D" && find . -type f | sort | paste -sd' ' -)
 [ "$left" = "./opt/pl/share/man/man1/other.1" ] && pass "uninstall: the three files gone, another's file kept" || fail "uninstall left: $left"
 # the default PREFIX is /usr/local
-env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make -s -n install OBJ= DESTDIR=/x | grep -q "/x/usr/local/bin/pathlab" \
+mk -s -n install OBJ= DESTDIR=/x | grep -q "/x/usr/local/bin/pathlab" \
     && pass "install: PREFIX defaults to /usr/local" || fail "install: the default PREFIX is not /usr/local"
 cd "$src" || exit 0
 exit 0

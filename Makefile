@@ -190,8 +190,11 @@ TOOLS = $(FUZZ_REPLAY) $(BUILD)/tests/zcheck $(BUILD)/tests/pfmtool $(BUILD)/ben
 # parallel one 1m50s, at load 4-5 they were equal within noise (22-26 s against 29 s).
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 test: test-deps
-	$(MAKE) $(if $(filter -j%,$(MAKEFLAGS)),,-j$(JOBS)) $(PROG) $(TEST_BIN) $(TOOLS)
+	$(MAKE) $(if $(filter -j%,$(MAKEFLAGS)),,-j$(JOBS)) test-build
 	BUILD=$(BUILD) PATHLAB=./$(PROG) PATHLAB_FAST=$(if $(SAN),1) TEST_SOURCE_ONLY=$(if $(SAN),skip,run) tests/run.sh
+
+# The program, the test programs and the tools (.ci/run builds them first and fails on any warning).
+test-build: $(PROG) $(TEST_BIN) $(TOOLS)
 
 # The numerical stress suite (tests/stress/run.sh): scaled and moved scenes, slivers, z-fighting,
 # sharp lobes, tiny and grazing lights, rays along edges, acne; about 2 minutes on 2 cores.
@@ -311,4 +314,4 @@ mutants:
 clean:
 	rm -rf build build-san build-clang-san build-fuzz build-native pathlab
 
-.PHONY: all run install uninstall test test-estimators test-deps fuzz stress refs bench bench-native bench-portable bench-scale bench-cycles bench-cycles-deps grade-calibration clean mutants test-parallel test-slurm
+.PHONY: all run install uninstall test test-build test-estimators test-deps fuzz stress refs bench bench-native bench-portable bench-scale bench-cycles bench-cycles-deps grade-calibration clean mutants test-parallel test-slurm

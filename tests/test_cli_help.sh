@@ -142,4 +142,12 @@ expect_status "check-sampler --pdf cosin: status 2" 2 $PATHLAB check-sampler x.t
 expect_err "check-sampler --pdf cosin: did you mean" "^pathlab check-sampler: --pdf expects one of .*, got 'cosin'; did you mean cosine\?"
 expect_status "compare --estimators ligth: status 2" 2 $PATHLAB compare scenes/cornell.obj --estimators ligth -o "$TMP/cmp"
 expect_err "compare --estimators ligth: did you mean" "unknown name 'ligth'; did you mean light\?"
+# a student's file whose name starts with '-': after -- it is a file; without, the error says so
+mkdir -p "$TMP/dash"; cp ref/cornell.pfm "$TMP/dash/-x.pfm"; REFP=$PWD/ref/cornell.pfm PL=$(cd "$(dirname "$PATHLAB")" && pwd)/$(basename "$PATHLAB")
+(cd "$TMP/dash" && "$PL" grade --ref "$REFP" -- -x.pfm > out 2> err); rc=$?
+if [ $rc = 0 ] && grep -q "^pathlab grade: -x.pfm against" "$TMP/dash/out"; then pass "grade --ref R -- -x.pfm grades the file -x.pfm"
+else fail "grade -- -x.pfm: exit $rc: $(head -c 300 "$TMP/dash/err")"; fi
+(cd "$TMP/dash" && "$PL" grade --ref "$REFP" -x.pfm > out 2> err); rc=$?
+if [ $rc = 2 ] && grep -q "unknown flag '-x.pfm'; a file of that name: write ./-x.pfm, or put it after --" "$TMP/dash/err"; then pass "grade -x.pfm: status 2, says to write ./-x.pfm or put it after --"
+else fail "grade -x.pfm: exit $rc: $(head -c 300 "$TMP/dash/err")"; fi
 exit 0

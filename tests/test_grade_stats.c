@@ -59,7 +59,7 @@ static void t_table(void)
 /* Unbiased images with skewed noise: the fraction that fails must stay near or below alpha. */
 static void false_alarms(int spp, double p, int runs)
 {
-    grade_opts o = {0.01, 0, 0, 0, 0};
+    grade_opts o = {0.01, 0, 0, 0, 0, NULL};
     image ref, im;
     grade_report r;
     pcg32 rng;
@@ -85,7 +85,7 @@ static void false_alarms(int spp, double p, int runs)
 /* Images 2% too bright: always found, eps near 2%, and its standard error honest. */
 static void two_percent(int runs)
 {
-    grade_opts o = {0.01, 0, 0, 0, 0};
+    grade_opts o = {0.01, 0, 0, 0, 0, NULL};
     image ref, im;
     grade_report r;
     pcg32 rng;
@@ -116,7 +116,7 @@ static void two_percent(int runs)
 /* A bias in the top-left quadrant only: significant blocks there and nowhere else. */
 static void quadrant(double gain, int sign)
 {
-    grade_opts o = {0.01, 0, 0, 0, 0};
+    grade_opts o = {0.01, 0, 0, 0, 0, NULL};
     image ref, im;
     grade_report r;
     pcg32 rng;
@@ -145,7 +145,7 @@ static void quadrant(double gain, int sign)
  * reference's variance given (noise floor on). */
 static void lamp(void)
 {
-    grade_opts o = {0.01, 0, 0, 0, 0};
+    grade_opts o = {0.01, 0, 0, 0, 0, NULL};
     image ref, im, var;
     grade_report r;
     pcg32 rng;
@@ -183,7 +183,7 @@ static void lamp(void)
  * noise-free region the black pixel is exact and the hit a miss (fail). */
 static void penumbra(void)
 {
-    grade_opts o = {0.01, 0, 0, 0, 0};
+    grade_opts o = {0.01, 0, 0, 0, 0, NULL};
     image ref, im, var;
     grade_report r;
     int p, hard;

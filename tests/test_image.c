@@ -574,7 +574,7 @@ static void test_data_mistakes(void)
 static void test_info_and_refs(void)
 {
     float g[6] = { 0.25f, 1.5f, 3e10f, 7, 8, 9 };
-    img_pfm_info info = { 0, 0, 0.0 };
+    img_pfm_info info = { 0, 0, 0.0, 0, 0 };
     image im;
     DIR *d;
     struct dirent *e;

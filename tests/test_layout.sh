@@ -42,21 +42,28 @@ done)
 if [ -z "$stray" ]; then pass "every source file is in a layer folder ($LAYERS)"
 else fail "files outside the layer folders: $stray"; fi
 
-bad_inc=""; bad_arrow=""; pairs=$TMP/pairs
-: > "$pairs"
-for f in "$SRC"/*/*.[ch]; do
-    layer=${f#"$SRC"/}; layer=${layer%%/*}
-    ok_layers="$layer $(allowed "$layer")"
-    while read -r inc; do
-        [ -z "$inc" ] && continue
-        if [ ! -f "$SRC/$inc" ] || [[ "$inc" != */* ]]; then bad_inc="$bad_inc $f:$inc"; continue; fi
-        to=${inc%%/*}
-        case " $ok_layers " in *" $to "*) ;; *) bad_arrow="$bad_arrow $f->$inc" ;; esac
-        # a module is X.h with X.c: X.c including another module's header is the module's dependency
-        from=${f#"$SRC"/}; from=${from%.*}; to_mod=${inc%.h}
-        [ "$from" != "$to_mod" ] && echo "$from $to_mod" >> "$pairs"
-    done < <(sed -n 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*"\([^"]*\)".*/\1/p' "$f")
-done
+# one awk over every file (a fork per file and per include took 51 s of make test with the
+# planted copies): the includes that name no module, those against the arrows, and the module
+# pairs for tsort; the existing files of $SRC are read first
+pairs=$TMP/pairs
+for l in $LAYERS; do echo "$l $(allowed "$l")"; done > "$TMP/arrows"
+(cd "$SRC" && find . -type f -name '*.[ch]' | sed 's|^\./||') > "$TMP/files"
+awk -v src="$SRC/" -v pairs="$pairs" -v out="$TMP/bad" '
+    FILENAME == ARGV[1] { for (i = 2; i <= NF; i++) ok[$1 " " $i] = 1; ok[$1 " " $1] = 1; next }
+    FILENAME == ARGV[2] { exists[$0] = 1; next }
+    FNR == 1 { f = FILENAME; rel = substr(f, length(src) + 1); split(rel, parts, "/"); layer = parts[1]
+               from = rel; sub(/\.[ch]$/, "", from) }
+    /^[[:space:]]*#[[:space:]]*include[[:space:]]*"/ {
+        inc = $0; sub(/^[^"]*"/, "", inc); sub(/".*/, "", inc)
+        if (inc == "") next
+        if (!(inc in exists) || index(inc, "/") == 0) { printf " %s:%s", f, inc > (out ".inc"); next }
+        split(inc, q, "/")
+        if (!((layer " " q[1]) in ok)) printf " %s->%s", f, inc > (out ".arrow")
+        to = inc; sub(/\.h$/, "", to)
+        if (from != to) print from, to > pairs
+    }' "$TMP/arrows" "$TMP/files" "$SRC"/*/*.[ch]
+touch "$pairs" "$TMP/bad.inc" "$TMP/bad.arrow"
+bad_inc=$(cat "$TMP/bad.inc"); bad_arrow=$(cat "$TMP/bad.arrow")
 if [ -z "$bad_inc" ]; then pass "every #include \"...\" names an existing folder/file.h"
 else fail "includes that name no module of src/:$bad_inc"; fi
 if [ -z "$bad_arrow" ]; then pass "includes follow the arrows of docs/architecture.md"
@@ -99,11 +106,12 @@ if [ -z "${LAYOUT_SRC:-}" ]; then
     done
     # negative checks: the same rules on a copy of src/ with one planted violation each must fail
     # (each must make its own check fail, named by what the FAIL line says)
-    for plant in "arrow:includes against the arrows" "circle:include circle" "long:planted_long" \
+    for plant in "missing:math/planted.h" "arrow:includes against the arrows" "circle:include circle" "long:planted_long" \
                  "exit:planted_exit" "dialect:planted_for"; do
         want=${plant#*:}; plant=${plant%%:*}
         rm -rf "$TMP/src" && cp -r "$SRC" "$TMP/src"
         case $plant in
+            missing) sed -i '0,/#include "/s//#include "math\/planted.h"\n#include "/' "$TMP/src/tracer/integrator.c" ;;
             arrow) sed -i '0,/#include "/s//#include "cmd\/diff.h"\n#include "/' "$TMP/src/tracer/integrator.c" ;;
             circle) sed -i '0,/#include "/s//#include "tracer\/integrator.h"\n#include "/' "$TMP/src/tracer/scene.c" ;;
             long) { echo "int planted_long(void)"; echo "{"; for i in $(seq 60); do echo "    (void)$i;"; done; echo "    return 0;"; echo "}"; } >> "$TMP/src/math/dvec.c" ;;

@@ -101,11 +101,27 @@ npages=$(ls "$TMP/class-pages" | wc -l)
 ngraded=$(grep -c '](class-pages/' "$TMP/class.md")
 if [ "$npages" = "$ngraded" ] && [ "$npages" = "$N" ]; then pass "reports: $npages pages for $N images, each linked once"
 else fail "reports: $npages pages, $ngraded links, $N images"; fi
+# no name reorders or hides what a page shows: no control or bidirectional character in the HTML
+# report or any page (as text or in the viewer's JSON), the override shown as \u202e
+(cd "$TMP" && "$PATHLAB" grade class --ref ref.pfm --report class.html > /dev/null 2>&1)
+python3 - "$TMP/class.html" "$TMP"/class-pages/*.html <<'EOF' && pass "reports: class.html and the pages hold no control or bidirectional character, the override shown as \\u202e" || fail "reports: a page holds a raw control or bidirectional character"
+import re, sys
+ok, seen = True, False
+for p in sys.argv[1:]:
+    t = open(p, encoding='utf-8', errors='replace').read()
+    if re.search('[\x00-\x08\x0b-\x1f\x7f\x85\x9b\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069]', t): ok = False; print("raw in", p)
+    seen |= 'abc\\u202egpj.exe' in t
+sys.exit(0 if ok and seen else 1)
+EOF
 mkdir -p "$TMP/two"; cp "$TMP/class/alice.pfm" "$TMP/two/a b.pfm"; cp "$TMP/bad.pfm" "$TMP/two/a_b.pfm"
 (cd "$TMP" && "$PATHLAB" grade two --ref ref.pfm --report two.md > /dev/null 2>&1)
 t1=$(grep -o '<title>[^<]*' "$TMP/two-pages/a_20b.html" 2>/dev/null); t2=$(grep -o '<title>[^<]*' "$TMP/two-pages/a_5fb.html" 2>/dev/null)
 if [ "$t1" = "<title>two/a b.pfm" ] && [ "$t2" = "<title>two/a_b.pfm" ]; then pass "reports: 'a b.pfm' and 'a_b.pfm' get their own pages (a_20b.html, a_5fb.html)"
 else fail "reports: pages of 'a b' and 'a_b': $(ls "$TMP/two-pages" | tr '\n' ' ')"; fi
+mkdir -p "$TMP/case"; cp "$TMP/class/alice.pfm" "$TMP/case/Ana.pfm"; cp "$TMP/bad.pfm" "$TMP/case/ana.pfm"
+(cd "$TMP" && "$PATHLAB" grade case --ref ref.pfm --report case.md > /dev/null 2>&1)
+if [ "$(ls "$TMP/case-pages" | tr '\n' ' ')" = "_41na.html ana.html " ]; then pass "reports: 'Ana.pfm' and 'ana.pfm' get pages that differ in more than case (_41na.html, ana.html)"
+else fail "reports: pages of 'Ana' and 'ana': $(ls "$TMP/case-pages" | tr '\n' ' ')"; fi
 mkdir -p "$TMP/st/ana" "$TMP/st/ben" "$TMP/heat"; cp "$TMP/class/alice.pfm" "$TMP/st/ana/render.pfm"; cp "$TMP/bad.pfm" "$TMP/st/ben/render.pfm"
 (cd "$TMP" && "$PATHLAB" grade st/*/render.pfm --ref ref.pfm --heatmap heat > /dev/null 2>&1)
 if [ "$(ls "$TMP/heat" | tr "\n" " ")" = "ana_2frender.png ben_2frender.png " ]; then pass "reports: --heatmap of st/*/render.pfm writes one PNG per image"

@@ -89,11 +89,45 @@ static int cmp_double(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+/* Moves the k-th smallest of q[0..n) (from 0) to q[k], the smaller ones before it, the larger after:
+ * quickselect, expected O(n) where sorting was 80% of a failing grade's time (its diagnosis grades
+ * some twenty hypotheses). An image made to defeat the middle-of-three pivot gets 2 log2(n) + 8
+ * rounds, then the rest is sorted: the worst case stays O(n log n). No NaN reaches here (grade refuses
+ * them). */
+static void select_kth(double *q, size_t n, size_t k)
+{
+    size_t lo = 0, hi = n - 1, rounds = 8, m;
+    for (m = n; m > 1; m >>= 1) rounds += 2;
+    while (hi > lo) {
+        size_t i = lo, j = hi;
+        double a = q[lo], b = q[lo + (hi - lo) / 2], c = q[hi];
+        double pivot = a < b ? (b < c ? b : a < c ? c : a) : (a < c ? a : b < c ? c : b);
+        if (rounds-- == 0) { qsort(q + lo, hi - lo + 1, sizeof *q, cmp_double); return; }
+        while (i <= j) {   /* Hoare: ends with q[lo..j] <= pivot <= q[i..hi], j < i */
+            while (q[i] < pivot) i++;
+            while (q[j] > pivot) j--;
+            if (i <= j) {
+                double t = q[i];
+                q[i++] = q[j];
+                q[j] = t;
+                if (j-- == lo) break;
+            }
+        }
+        if (k <= j && j >= lo && j < hi) hi = j;
+        else if (k >= i) lo = i;
+        else return;   /* q[j+1..i-1] all equal the pivot, k among them */
+    }
+}
+
 /* The median of q[0..n), n >= 1 (q is reordered). */
 static double median(double *q, size_t n)
 {
-    qsort(q, n, sizeof *q, cmp_double);
-    return n % 2 ? q[n / 2] : 0.5 * (q[n / 2 - 1] + q[n / 2]);
+    size_t k = n / 2, i;
+    double below;
+    select_kth(q, n, k);
+    if (n % 2) return q[k];
+    for (below = q[0], i = 1; i < k; i++) below = q[i] > below ? q[i] : below;
+    return 0.5 * (below + q[k]);
 }
 
 /* mean / standard error, with rounding added to the error; 0/0 is 0 (identical values) */

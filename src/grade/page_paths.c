@@ -1,6 +1,5 @@
 /* page_paths.c — the pages' folder, names and links (page_paths.h). */
 #include "grade/page_paths.h"
-#include <ctype.h>
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -57,7 +56,8 @@ void grade_output_name(char out[GRADE_NAME_CAP], const char *image, int skip)
     stem = pfm ? strlen(name) - 4 : strlen(name);
     for (k = 0; k < stem && n < GRADE_NAME_LONG; k++) {
         unsigned char c = (unsigned char)name[k];
-        if (isalnum(c) || c == '-' || (c == '.' && k > 0)) out[n++] = (char)c;
+        /* capitals escaped too: Ana.pfm and ana.pfm keep two pages on a case-insensitive disk (macOS) */
+        if ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || (c == '.' && k > 0)) out[n++] = (char)c;
         else n += put_escape(out + n, c);
     }
     if (k < stem) {   /* too long for a file name: cut, with the hash of the whole name */

@@ -18,7 +18,7 @@ int grade_pages_setup(grade_pages *p, const char *pages, const char *report);
 /* The name of an image's outputs (its page NAME.html, its heatmap NAME.png), one-to-one with the
  * image's name: its file name without ".pfm" (skip < 0), or, when other images of the run have the
  * same file name, its path as given without its first skip bytes (the folders all of them share:
- * students/ana/render.pfm and students/ben/render.pfm are ana/render and ben/render); letters,
+ * students/ana/render.pfm and students/ben/render.pfm are ana/render and ben/render); lowercase letters,
  * digits, '-' and '.' (not first) kept, every other byte written _XX (its hex: "a b.pfm" is a_20b,
  * "a_b.pfm" a_5fb, ana/render ana_2frender), "_" appended to a name without ".pfm"; a name that
  * would pass GRADE_NAME_LONG characters is cut there and ends with _h and 24 hex digits of its SHA-256. */

@@ -134,6 +134,7 @@ char *html_data_uri(const char *mime, const void *bytes, size_t n)
 static void json_string(FILE *f, const char *s)
 {
     if (!s) { fputs("null", f); return; }
+    s = shown(s);   /* no control or bidirectional character reaches the page: a name shows as itself */
     putc('"', f);
     for (; *s; s++) {
         unsigned char c = (unsigned char)*s;
@@ -278,6 +279,7 @@ char *html_escape(const char *text)
     size_t n = 1;
     const char *s;
     char *out, *o;
+    text = shown(text);   /* control and bidirectional characters as visible escapes (sys/shown.h) */
     for (s = text; *s; s++) n += strchr("&<>\"'", *s) ? 6 : 1;
     out = o = malloc(n);
     if (!out) return NULL;

@@ -39,7 +39,9 @@ typedef struct {
 
 /* Writes the page atomically (sys/atomic_file.h). 0 on success; else "path: reason" on stderr. */
 int html_page_write(const char *path, const html_page *page);
-/* A copy of text with & < > " ' escaped for HTML, to free; NULL when out of memory. */
+/* A copy of text with & < > " ' escaped for HTML, to free; NULL when out of memory. Control and
+ * bidirectional characters first become visible escapes, as on the terminal (sys/shown.h): a name
+ * can neither reorder nor hide what the page shows. The page's JSON strings (names, labels) too. */
 char *html_escape(const char *text);
 /* text escaped into f (for the pages' own HTML: tables, verdicts); 1 when out of memory. */
 int html_put_escaped(FILE *f, const char *text);

@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #define WHAT 256   /* room for the description of an expected value */
 
@@ -249,7 +250,9 @@ static int unknown_flag(const char *cmd, const cli_flag *const *tables, const ch
     snprintf(said, sizeof said, "%.*s", (int)(len > 200 ? 200 : len), arg);
     fprintf(stderr, "unknown flag '%s'", shown(said));
     if (best) fprintf(stderr, "; did you mean '%s'?", shown(best));
-    fprintf(stderr, " (pathlab %s --help lists its flags)\n", cmd ? cmd : "help");
+    if (access(arg, F_OK) == 0) fprintf(stderr, "; a file of that name: write ./%s, or put it after --", shown(arg));
+    else fprintf(stderr, " (pathlab %s --help lists its flags)", cmd ? cmd : "help");
+    putc('\n', stderr);
     return 1;
 }
 
@@ -292,11 +295,12 @@ int cli_parse_flag(const char *cmd, int argc, char **argv, int *i, const cli_fla
 int cli_parse(const char *cmd, int argc, char **argv, const cli_flag *const *tables, void *ctx,
               const char **words, int max_words, int *nwords)
 {
-    int i;
+    int i, words_only = 0;
     *nwords = 0;
     if (list_to) return list_tables(tables);
     for (i = 1; i < argc; i++) {
-        if (!cli_is_word(argv[i])) {
+        if (!words_only && !strcmp(argv[i], "--")) { words_only = 1; continue; }   /* then "-x.pfm" is a file */
+        if (!words_only && !cli_is_word(argv[i])) {
             if (cli_parse_flag(cmd, argc, argv, &i, tables, ctx)) return 1;
         } else if (*nwords < max_words) {
             words[(*nwords)++] = argv[i];

@@ -32,7 +32,8 @@ typedef struct {
 /* The arguments argv[1..argc-1] of command `cmd` ("render", "diff"...): flags of the tables (a flag
  * may appear in several tables: the first match wins), and up to max_words words (file names),
  * stored in words[] and counted in *nwords. Flags and words come in any order; a flag's value is
- * the next argument whatever it starts with (--eye -1,0,0), or follows '=' (--spp=64). Returns 0, or 1 after printing what is
+ * the next argument whatever it starts with (--eye -1,0,0), or follows '=' (--spp=64). After "--" every
+ * argument is a word (a student's file named -x.pfm). Returns 0, or 1 after printing what is
  * wrong (unknown flag, missing or bad value, one word too many). */
 int cli_parse(const char *cmd, int argc, char **argv, const cli_flag *const *tables, void *ctx,
               const char **words, int max_words, int *nwords);

@@ -80,7 +80,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     static grade_row rows[MAX_ROWS];
     char *buf = malloc(size + 1), *next, *text[1 + 5 * MAX_ROWS];
     const char *md = fuzz_absent(0, "r.md"), *csv = fuzz_absent(1, "r.csv");
-    grade_opts o = {0.01, 0, 0, 0, 0};
+    grade_opts o = {0.01, 0, 0, 0, 0, NULL};
     grade_refs refs;
     int nt = 0, n, k;
     char *out;

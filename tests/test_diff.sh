@@ -25,7 +25,11 @@ expect_err "diff: the extra image named" "^pathlab diff: 3 images and no --ref: 
 $PATHLAB diff --heatmap "$TMP/h2.ppm" --scale 0 "$TMP/a.pfm" "$TMP/b.pfm" > /dev/null
 if cmp -s "$TMP/h.ppm" "$TMP/h2.ppm"; then pass "diff: flags first, the same heatmap"; else fail "diff: flags first changed the heatmap"; fi
 expect_status "diff: heatmap of an unknown format, status 2" 2 $PATHLAB diff "$TMP/a.pfm" "$TMP/b.pfm" --heatmap "$TMP/h.jpg"
-expect_err "diff: heatmap format explained" "^pathlab diff: --heatmap .*h.jpg: unknown image format"
+expect_err "diff: heatmap format explained" "^pathlab diff: --heatmap .*h.jpg: a heatmap is a picture: use .png or .ppm"
+# a heatmap is a picture: a .pfm (without a sidecar, every other PFM has one) would pass for a render
+expect_status "diff: a .pfm heatmap refused, status 2" 2 $PATHLAB diff "$TMP/a.pfm" "$TMP/b.pfm" --heatmap "$TMP/h.pfm"
+expect_err "diff: a .pfm heatmap: use .png or .ppm" "^pathlab diff: --heatmap .*h.pfm: a heatmap is a picture: use .png or .ppm"
+expect_no_file "diff: no .pfm heatmap written" "$TMP/h.pfm"
 expect_no_file "diff: no heatmap of an unknown format" "$TMP/h.jpg"
 if [ ! -s "$TMP/out" ]; then pass "diff: bad arguments, no metrics printed"; else fail "diff: printed metrics before refusing the heatmap"; fi
 expect_status "diff: bad --scale, status 2" 2 $PATHLAB diff "$TMP/a.pfm" "$TMP/b.pfm" --scale big

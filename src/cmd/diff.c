@@ -90,13 +90,13 @@ int diff_main(int argc, char **argv)
         return 2;
     }
     if (!ref || n < 1) { fprintf(stderr, "pathlab diff: needs an image and a reference\n" DIFF_USAGE); free(words); return 2; }
-    if (heat && (img_format_of(heat) == IMG_UNKNOWN || n > 1)) {
+    if (heat && ((img_format_of(heat) != IMG_PNG && img_format_of(heat) != IMG_PPM) || n > 1)) {
         fprintf(stderr, n > 1 ? "pathlab diff: --heatmap %s: with one image only\n"
-                              : "pathlab diff: --heatmap %s: unknown image format (use .pfm, .ppm or .png)\n", heat);
+                              : "pathlab diff: --heatmap %s: a heatmap is a picture: use .png or .ppm\n", shown(heat));
         free(words);
         return 2;
     }
-    if (heat && n == 1 && output_path_check("diff", "--heatmap", heat, IMG_EXTENSIONS)) { free(words); return 2; }
+    if (heat && n == 1 && output_path_check("diff", "--heatmap", heat, IMG_PICTURE_EXTENSIONS)) { free(words); return 2; }
     for (k = 0; k < n; k++) {
         int one;
         if (n > 1) printf("%s%s:\n", k ? "\n" : "", shown(words[k]));

@@ -33,9 +33,9 @@ static int check_outputs(const grade_job *j)
     static const char *const reports[] = {".md", ".csv", ".html", NULL};
     const char *r = j->report;
     int folder = j->heatmap && (j->nimages > 1 || path_is_dir(j->heatmap));   /* FOLDER/NAME.png, even for one image */
-    if (j->heatmap && !(folder ? path_is_dir(j->heatmap) : img_format_of(j->heatmap) != IMG_UNKNOWN)) {
+    if (j->heatmap && !(folder ? path_is_dir(j->heatmap) : img_format_of(j->heatmap) == IMG_PNG || img_format_of(j->heatmap) == IMG_PPM)) {
         fprintf(stderr, j->nimages > 1 ? "pathlab grade: --heatmap %s: with several images, give a folder that exists\n"
-                                       : "pathlab grade: --heatmap %s: unknown image format (use .pfm, .ppm or .png)\n", shown(j->heatmap));
+                                       : "pathlab grade: --heatmap %s: a heatmap is a picture: use .png or .ppm\n", shown(j->heatmap));
         return 1;
     }
     if (r && !path_ends_with(r, ".md") && !path_ends_with(r, ".csv") && !path_ends_with(r, ".html")) {
@@ -43,7 +43,7 @@ static int check_outputs(const grade_job *j)
         return 1;
     }
     if (j->heatmap && (folder ? output_dir_check("grade", "--heatmap", j->heatmap)
-                                      : output_path_check("grade", "--heatmap", j->heatmap, IMG_EXTENSIONS))) return 1;
+                                      : output_path_check("grade", "--heatmap", j->heatmap, IMG_PICTURE_EXTENSIONS))) return 1;
     if (j->pages && output_dir_check("grade", "--pages", j->pages)) return 1;
     return r && output_path_check("grade", "--report", r, reports);
 }

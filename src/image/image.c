@@ -563,6 +563,7 @@ static int same_ignoring_case(const char *a, const char *b)
 
 const char *const IMG_EXTENSIONS[] = {".pfm", ".ppm", ".png", NULL};
 const char *const IMG_PFM_EXTENSION[] = {".pfm", NULL};
+const char *const IMG_PICTURE_EXTENSIONS[] = {".png", ".ppm", NULL};
 
 img_format img_format_of(const char *path)
 {

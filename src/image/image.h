@@ -15,10 +15,12 @@ void img_free(image *im);
  * extension or none. IMG_HDR (".hdr", Radiance RGBE) is read only (image/rgbe.h). img_extension: ".pfm" of "dir/x.pfm" (dot included), "" without one. */
 typedef enum { IMG_UNKNOWN, IMG_PFM, IMG_PPM, IMG_PNG, IMG_HDR } img_format;
 img_format img_format_of(const char *path);
-/* The extensions of those formats, NULL-terminated, for output_path_check: every image format, or
- * PFM alone (the files that carry values: variances, layers, sample counts). */
+/* The extensions of those formats, NULL-terminated, for output_path_check: every image format, PFM
+ * alone (the files that carry values: variances, layers, sample counts), or the pictures (PNG, PPM:
+ * heatmaps, which a .pfm without its sidecar would make pass for a render). */
 extern const char *const IMG_EXTENSIONS[];
 extern const char *const IMG_PFM_EXTENSION[];
+extern const char *const IMG_PICTURE_EXTENSIONS[];
 const char *img_extension(const char *path);
 /* Writes by extension (img_format_of); prints "path: reason" on stderr and returns nonzero on error. */
 int img_write(const image *im, const char *path, float exposure);

@@ -8,7 +8,8 @@
 #   a flat .hdr against a flat reference: pass, 2% off: fail (RGBE quantisation in the tolerance)
 #   no cosine at the light: fail                  unclamped cosine at the light: exit 2, explained
 #   through a truncating .hdr decoded without the half step: fail, named
-#   pixel centres against a jittered reference (160x120): fail, --pixel-center named
+#   pixel centres against a jittered reference (160x120): fail, --pixel-center named; the reverse
+#   (jittered against pixel centres): fail, "without --pixel-center" named
 # Statistics: alpha 0.01 per image, seeds fixed (the test is deterministic); the 3 honest images
 # pass together with probability >= 0.97 after a change to pathlab's random streams. Images of
 # 64x48 (student 128 spp, reference 2048 spp) and 160x120 (256 and 512 spp).
@@ -86,6 +87,10 @@ graded "through a truncating .hdr decoded without the half step: fail, named" 1 
 student orbiter160.txt 256 1 "$S/centres.pfm"
 graded "pixel centres against a jittered reference: fail, --pixel-center named" 1 "^likely mistake: pixel centres against a jittered reference.*--pixel-center" \
     "$S/centres.pfm" jittered
+# the reverse: pathlab's own jittered render against a reference shot through pixel centres
+$REF --orbiter "$S/orbiter160.txt" --pixel-center --spp 512 --seed 8 -o "$S/centred.pfm" --variance "$S/centred_var.pfm"
+graded "jittered against a pixel-centre reference: fail, 'without --pixel-center' named" 1 "^likely mistake: jittered in the pixel against a reference shot through pixel centres: render the reference without --pixel-center" \
+    "$S/jittered.pfm" centred
 # its page labels a coarse block with its own size (16x16, 32x32: the scales grade printed), not
 # that size times the finest block's
 mkdir -p "$S/pages"

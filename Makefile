@@ -104,6 +104,19 @@ $(GEN_OBJ): $(BUILD)/gen/web_assets.c
 	$(call say,CC,$<)
 	$(Q)$(CC) $(CFLAGS) -c -o $@ $<
 
+# The test programs share tests/scratch.c (a scratch folder, files, stderr capture); the tools of
+# tests/ (zcheck, pfmtool) are linked without it.
+TEST_COMMON = $(BUILD)/tests/scratch.o
+$(TEST_COMMON): $(BUILD)/tests/%.o: tests/%.c
+	@mkdir -p $(dir $@)
+	$(call say,CC,$<)
+	$(Q)$(CC) $(CFLAGS) $(DEPFLAGS) -c -o $@ $<
+
+$(TEST_BIN): $(BUILD)/tests/%: tests/%.c $(TEST_COMMON) $(LIB_OBJ)
+	@mkdir -p $(dir $@)
+	$(call say,LINK,$@)
+	$(Q)$(CC) $(CFLAGS) $(DEPFLAGS) -o $@ $< $(TEST_COMMON) $(LIB_OBJ) $(LDLIBS)
+
 $(BUILD)/tests/%: tests/%.c $(LIB_OBJ)
 	@mkdir -p $(dir $@)
 	$(call say,LINK,$@)
@@ -116,7 +129,7 @@ $(shell mkdir -p $(BUILD); echo '$(REVISION)' | cmp -s - $(REV_STAMP) 2>/dev/nul
 $(BUILD)/cmd/version.o: $(REV_STAMP)
 $(BUILD)/cmd/version.o: CFLAGS += -DPATHLAB_REVISION='"$(REVISION)"'
 
--include $(OBJ:.o=.d) $(TEST_BIN:=.d) $(BUILD)/bench-plot.d $(BUILD)/bench-texture.d
+-include $(OBJ:.o=.d) $(TEST_BIN:=.d) $(TEST_COMMON:.o=.d) $(BUILD)/bench-plot.d $(BUILD)/bench-texture.d
 
 # SPP=N for a quicker or cleaner image (default 64; its time on 2 cores: README.md, written by scripts/readme-figures.sh).
 SPP ?= 64

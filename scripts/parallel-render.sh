@@ -38,10 +38,6 @@
 # Exit status: 0 merged; 1 a piece or the merge failed; 2 bad usage.
 set -eu
 
-usage() {
-    sed -n '2,/^set -eu/p' "$0" | sed -e '/^set -eu/d' -e 's/^# \{0,1\}//' >&2
-    exit 2
-}
 die() { echo "parallel-render: $*" >&2; exit 2; }
 . "$(dirname "$0")/pieces.sh"
 
@@ -55,22 +51,15 @@ while [ $# -gt 0 ]; do
         -j|--jobs) [ $# -ge 2 ] || usage; jobs=$2; shift 2 ;;
         -S|--sshlogin) [ $# -ge 2 ] || usage; logins+=(-S "$2"); hosts+=("$2"); shift 2 ;;
         --sshloginfile) [ $# -ge 2 ] || usage; logins+=(--sshloginfile "$2"); hosts+=("the machines of $2"); shift 2 ;;
-        --pathlab) [ $# -ge 2 ] || usage; pathlab=$2; shift 2 ;;
         --retries) [ $# -ge 2 ] || usage; retries=$2; shift 2 ;;
-        --keep) keep=1; shift ;;
-        --dry-run) dry=1; shift ;;
-        --spp) [ $# -ge 2 ] || usage; spp=$2; shift 2 ;;
-        -h|--help) usage ;;
-        -*) flags+=("$1"); shift ;;
-        *) pieces_word "$1"; shift ;;
+        *) pieces_option "$@"; shift "$used" ;;
     esac
 done
 pieces_words_done
 case $retries in ''|*[!0-9]*) die "--retries must be a whole number, not '$retries'" ;; esac
 case $out in *.pfm) ;; *) die "the output must be a .pfm file (linear float, what merge writes), not '$out'" ;; esac
 command -v parallel >/dev/null 2>&1 || die "GNU parallel is not installed: apt-get install parallel (Debian/Ubuntu)"
-[ -x "$pathlab" ] || die "no pathlab program at '$pathlab' (run make, or give --pathlab PROG)"
-[ -f "$scene" ] || die "no scene '$scene'"
+pieces_inputs_check
 threads=(--threads 1)
 for f in "${flags[@]+"${flags[@]}"}"; do
     case $f in
@@ -104,7 +93,6 @@ mkdir "$dir"
 # machine the names as given (the scene's name goes into each piece's sidecar and the merged one).
 prog=$pathlab scn=$scene adir=$dir
 if [ ${#logins[@]} -gt 0 ]; then
-    abs() { case $1 in /*) printf '%s\n' "$1" ;; *) printf '%s\n' "$PWD/${1#./}" ;; esac; }
     prog=$(abs "$pathlab") scn=$(abs "$scene") adir=$(abs "$dir")
 fi
 

@@ -5,50 +5,21 @@
 #include "image/image.h"
 #include "image/decode.h"
 #include "check.h"
-#include <dirent.h>
+#include "scratch.h"
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <unistd.h>
-
-static char dir[64];
-
-static const char *in_dir(const char *name)
-{
-    static char buf[4][400];
-    static int next = 0;
-    char *b = buf[next++ & 3];
-    snprintf(b, sizeof buf[0], "%s/%s", dir, name);
-    return b;
-}
-
-static void spit(const char *path, const void *bytes, size_t n)
-{
-    FILE *f = fopen(path, "wb");
-    if (!f) return;
-    fwrite(bytes, 1, n, f);
-    fclose(f);
-}
 
 /* Decodes bytes written as `name`, stderr captured into msg. */
 static int decode(const char *name, const void *bytes, size_t n, image *im, img_decoded *info, char *msg, size_t size)
 {
-    int saved, rc = 1;
-    size_t got = 0;
-    FILE *f;
+    int rc;
     spit(in_dir(name), bytes, n);
-    fflush(stderr);
-    saved = dup(2);
-    if (freopen(in_dir("stderr.txt"), "w", stderr)) rc = img_decode_file(im, in_dir(name), info);
-    fflush(stderr);
-    dup2(saved, 2);
-    close(saved);
-    f = fopen(in_dir("stderr.txt"), "r");
-    if (f) got = fread(msg, 1, size - 1, f), fclose(f);
-    while (got > 0 && msg[got - 1] == '\n') got--;
-    msg[got] = '\0';
+    capture_begin();
+    rc = img_decode_file(im, in_dir(name), info);
+    snprintf(msg, size, "%s", chop_newlines(capture_end()));
     return rc;
 }
 
@@ -259,28 +230,14 @@ static void test_oiiotool(void)
     oiio_same("oiio.ppm", "-d uint8", 13, 5);
 }
 
-static void remove_dir(void)
-{
-    DIR *d = opendir(dir);
-    struct dirent *e;
-    while (d && (e = readdir(d)))
-        if (strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0) unlink(in_dir(e->d_name));
-    if (d) closedir(d);
-    rmdir(dir);
-}
-
 int main(void)
 {
-    snprintf(dir, sizeof dir, "/tmp/test_decode.XXXXXX");
-    if (!mkdtemp(dir)) {
-        check(0, "mkdtemp", "cannot create a folder in /tmp");
-        return 1;
-    }
+    scratch_begin("test_decode");
     test_ppm();
     test_hostile();
     test_tga();
     test_float();
     test_oiiotool();
-    remove_dir();
+    scratch_end();
     return check_summary();
 }

@@ -4,6 +4,7 @@
 #include "image/image.h"
 #include "image/radiance.h"
 #include "check.h"
+#include "scratch.h"
 #include <dirent.h>
 #include <math.h>
 #include <signal.h>
@@ -14,51 +15,16 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-static char dir[64];
-
-static const char *in_dir(const char *name)
-{
-    static char buf[4][400];   /* dir (64) + "/" + a file name (up to 256) */
-    static int next = 0;
-    char *b = buf[next++ & 3];
-    snprintf(b, sizeof buf[0], "%s/%s", dir, name);
-    return b;
-}
-
-static unsigned char *slurp(const char *path, size_t *n)
-{
-    FILE *f = fopen(path, "rb");
-    unsigned char *b;
-    long len;
-    *n = 0;
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    len = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    b = malloc(len > 0 ? (size_t)len : 1);
-    if (b) *n = fread(b, 1, (size_t)len, f);
-    fclose(f);
-    return b;
-}
-
-static void spit(const char *path, const void *bytes, size_t n)
-{
-    FILE *f = fopen(path, "wb");
-    if (!f) return;
-    fwrite(bytes, 1, n, f);
-    fclose(f);
-}
-
 static int exists(const char *path)
 {
     struct stat st;
     return stat(path, &st) == 0;
 }
 
-/* Names in dir containing ".tmp." (leftover temporaries). */
+/* Names in scratch_dir containing ".tmp." (leftover temporaries). */
 static int count_temporaries(void)
 {
-    DIR *d = opendir(dir);
+    DIR *d = opendir(scratch_dir);
     struct dirent *e;
     int n = 0;
     if (!d) return -1;
@@ -66,52 +32,6 @@ static int count_temporaries(void)
         if (strstr(e->d_name, ".tmp.")) n++;
     closedir(d);
     return n;
-}
-
-/* The test folder is flat: remove its files, then it. */
-static void remove_dir(void)
-{
-    DIR *d = opendir(dir);
-    struct dirent *e;
-    while (d && (e = readdir(d)))
-        if (strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0) unlink(in_dir(e->d_name));
-    if (d) closedir(d);
-    if (rmdir(dir) != 0) fprintf(stderr, "could not remove %s\n", dir);
-}
-
-/* stderr capture, so that tests can check the error messages. */
-static int saved_stderr = -1;
-static void capture_begin(void)
-{
-    fflush(stderr);
-    saved_stderr = dup(2);
-    if (!freopen(in_dir("stderr.txt"), "w", stderr)) return;
-}
-static const char *capture_end(void)
-{
-    static char text[4096];
-    size_t n;
-    FILE *f;
-    fflush(stderr);
-    dup2(saved_stderr, 2);
-    close(saved_stderr);
-    text[0] = '\0';
-    f = fopen(in_dir("stderr.txt"), "r");
-    if (f) {
-        n = fread(text, 1, sizeof text - 1, f);
-        text[n] = '\0';
-        fclose(f);
-    }
-    return text;
-}
-
-static uint32_t rng_state = 12345u;
-static uint32_t rng(void)
-{
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 17;
-    rng_state ^= rng_state << 5;
-    return rng_state;
 }
 
 static void put_f32_big(unsigned char *b, float v)
@@ -276,7 +196,7 @@ static void test_bad_files(void)
     build_pfm(in_dir("big1.pfm"), "PF\n1000 1000\n-1.0\n", v, 12, 0);
     expect_read_error("pfm_lying_header_no_big_alloc", in_dir("big1.pfm"),
                       "1000 x 1000 x 3 x 4 = 12000000 bytes of pixels (width x height x channels x 4), found 48");
-    expect_read_error("pfm_directory", dir, "cannot open: a folder, not a file");
+    expect_read_error("pfm_directory", scratch_dir, "cannot open: a folder, not a file");
 
     /* Fuzz: random bytes, and a valid file with random bytes changed or cut short. Success is
      * allowed; a crash or a sanitizer report is not, and a failure must leave an empty image. */
@@ -651,11 +571,8 @@ static void test_radiance(void)
 
 int main(void)
 {
-    strcpy(dir, "/tmp/test_image.XXXXXX");
-    if (!mkdtemp(dir)) {
-        check(0, "mkdtemp", "cannot create a folder in /tmp");
-        return check_summary();
-    }
+    scratch_begin("test_image");
+    rng_seed(12345u);
     test_roundtrip();
     test_layout();
     test_foreign();
@@ -668,6 +585,6 @@ int main(void)
     test_atomic();
     test_oiiotool();
     test_extension();
-    remove_dir();
+    scratch_end();
     return check_summary();
 }

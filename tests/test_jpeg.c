@@ -7,22 +7,10 @@
 #include "image/image.h"
 #include "image/decode.h"
 #include "check.h"
-#include <dirent.h>
+#include "scratch.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
-
-static char dir[64];
-
-static const char *in_dir(const char *name)
-{
-    static char buf[4][400];
-    static int next = 0;
-    char *b = buf[next++ & 3];
-    snprintf(b, sizeof buf[0], "%s/%s", dir, name);
-    return b;
-}
 
 enum { W = 67, H = 45 };
 
@@ -65,12 +53,6 @@ static void make_source(void)
     img_free(&src);
 }
 
-static void f_write(const char *path, const unsigned char *b, size_t n)
-{
-    FILE *f = fopen(path, "wb");
-    if (f) fwrite(b, 1, n, f), fclose(f);
-}
-
 static void refused(const char *name, const unsigned char *b, size_t n, const char *want);
 
 /* Writes NAME with oiiotool's options, decodes it both ways; mean and max |difference| in codes. */
@@ -101,21 +83,12 @@ static void same_within(const char *name, const char *opts, double mean_tol, int
 static void refused(const char *name, const unsigned char *b, size_t n, const char *want)
 {
     image im = {2, 2, NULL};
-    char msg[1024] = "";
-    int saved, r = 0;
-    size_t got = 0;
-    FILE *f = fopen(in_dir(name), "wb");
-    fwrite(b, 1, n, f);
-    fclose(f);
-    fflush(stderr);
-    saved = dup(2);
-    if (freopen(in_dir("err.txt"), "w", stderr)) r = img_decode_file(&im, in_dir(name), NULL);
-    fflush(stderr);
-    dup2(saved, 2);
-    close(saved);
-    f = fopen(in_dir("err.txt"), "r");
-    if (f) got = fread(msg, 1, sizeof msg - 1, f), fclose(f);
-    msg[got && msg[got - 1] == '\n' ? got - 1 : got] = '\0';
+    const char *msg;
+    int r;
+    spit(in_dir(name), b, n);
+    capture_begin();
+    r = img_decode_file(&im, in_dir(name), NULL);
+    msg = chop_newlines(capture_end());
     check(r != 0 && im.px == NULL && strstr(msg, want), name, "%s", msg);
 }
 
@@ -163,7 +136,7 @@ static void test_restart(void)
     memcpy(file, head, sizeof head);
     memset(file + sizeof head, 8, 64);
     memcpy(file + sizeof head + 64, rest, sizeof rest);
-    f_write(in_dir("restart.jpg"), file, sizeof head + 64 + sizeof rest);
+    spit(in_dir("restart.jpg"), file, sizeof head + 64 + sizeof rest);
     r = img_decode_file(&im, in_dir("restart.jpg"), NULL);
     for (i = 0; r == 0 && i < 16 * 16 * 3; i++) bad += im.px[i] != 132.0f / 255.0f;
     check(r == 0 && bad == 0, "jpeg_restart_markers", "4 MCUs, DRI 1: %d values not 132", bad);
@@ -172,27 +145,13 @@ static void test_restart(void)
     refused("restart_cut.jpg", file, sizeof head + 64 + sizeof rest - 5, "restart marker is missing");
 }
 
-static void remove_dir(void)
-{
-    DIR *d = opendir(dir);
-    struct dirent *e;
-    while (d && (e = readdir(d)))
-        if (strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0) unlink(in_dir(e->d_name));
-    if (d) closedir(d);
-    rmdir(dir);
-}
-
 int main(void)
 {
-    snprintf(dir, sizeof dir, "/tmp/test_jpeg.XXXXXX");
-    if (!mkdtemp(dir)) {
-        check(0, "mkdtemp", "cannot create a folder in /tmp");
-        return 1;
-    }
+    scratch_begin("test_jpeg");
     test_restart();
     if (system("command -v oiiotool >/dev/null 2>&1") != 0) {
         printf("SKIP jpeg_oiiotool: no oiiotool\n");
-        remove_dir();
+        scratch_end();
         return check_summary();
     }
     make_source();
@@ -204,6 +163,6 @@ int main(void)
     same_within("progressive444.jpg", "--attrib jpeg:progressive 1 --attrib jpeg:subsampling 4:4:4", 0.6, 3);
     same_within("progressive420.jpg", "--attrib jpeg:progressive 1 --attrib jpeg:subsampling 4:2:0", 0.6, 4);
     test_hostile();
-    remove_dir();
+    scratch_end();
     return check_summary();
 }

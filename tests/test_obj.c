@@ -2,6 +2,7 @@
  * with its "file:line: message", and every OBJ under ../shared/data (skipped if that is absent).
  * Run from the repository root: inputs are tests/obj/... and ../shared/data/... */
 #include "check.h"
+#include "scratch.h"
 #include "sys/clock.h"
 #include "scene/obj.h"
 #include <math.h>
@@ -14,27 +15,15 @@
 #define DATA "../shared/data"
 #define MAXCORNERS 4096
 
-static char errbuf[1 << 16]; /* what the last load() printed on stderr */
+static const char *errbuf = ""; /* what the last load() printed on stderr */
 
 /* obj_load() with stderr captured into errbuf. */
 static int load(const char *path, mesh *m, int quiet)
 {
-    FILE *tmp = tmpfile();
-    int saved, r;
-    size_t n = 0;
-    fflush(stderr);
-    saved = dup(2);
-    if (tmp) dup2(fileno(tmp), 2);
+    int r;
+    capture_begin();
     r = obj_load(path, m, quiet);
-    fflush(stderr);
-    dup2(saved, 2);
-    close(saved);
-    if (tmp) {
-        rewind(tmp);
-        n = fread(errbuf, 1, sizeof errbuf - 1, tmp);
-        fclose(tmp);
-    }
-    errbuf[n] = '\0';
+    errbuf = capture_end();
     return r;
 }
 

@@ -3,13 +3,14 @@
  * (%f numbers, no f line in older files, "s size" alone), every error with its "file:line", and
  * view files written with view_print read back bit for bit. */
 #include "check.h"
+#include "scratch.h"
 #include "scene/orbiter.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
-static char errbuf[4096];   /* what the last read printed on stderr */
+static const char *errbuf = "";   /* what the last read printed on stderr */
 static char path[64];       /* the temporary file of write_file */
 
 /* Writes n bytes of text (NUL bytes included) into a new temporary file, its name in path. */
@@ -30,23 +31,10 @@ static void write_file(const char *text) { write_bytes(text, strlen(text)); }
 /* orbiter_read of file, stderr captured into errbuf (on one line). */
 static int read_path(const char *file, orbiter *o)
 {
-    FILE *tmp = tmpfile();
-    int saved, r;
-    size_t n = 0;
-    fflush(stderr);
-    saved = dup(2);
-    if (tmp) dup2(fileno(tmp), 2);
+    int r;
+    capture_begin();
     r = orbiter_read(o, file);
-    fflush(stderr);
-    dup2(saved, 2);
-    close(saved);
-    if (tmp) {
-        rewind(tmp);
-        n = fread(errbuf, 1, sizeof errbuf - 1, tmp);
-        fclose(tmp);
-    }
-    while (n > 0 && errbuf[n - 1] == '\n') n--;
-    errbuf[n] = '\0';
+    errbuf = chop_newlines(capture_end());
     return r;
 }
 

@@ -7,38 +7,18 @@
 #include "image/image.h"
 #include "image/decode.h"
 #include "check.h"
+#include "scratch.h"
 #include <dirent.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
-
-static char dir[64];
-
-static const char *in_dir(const char *name)
-{
-    static char buf[4][400];
-    static int next = 0;
-    char *b = buf[next++ & 3];
-    snprintf(b, sizeof buf[0], "%s/%s", dir, name);
-    return b;
-}
 
 /* Decodes path with stderr captured into msg. */
 static int decode(const char *path, image *im, img_decoded *info, char *msg, size_t size)
 {
-    int saved, rc = 1;
-    size_t got = 0;
-    FILE *f;
-    fflush(stderr);
-    saved = dup(2);
-    if (freopen(in_dir("stderr.txt"), "w", stderr)) rc = img_decode_file(im, path, info);
-    fflush(stderr);
-    dup2(saved, 2);
-    close(saved);
-    f = fopen(in_dir("stderr.txt"), "r");
-    if (f) got = fread(msg, 1, size - 1, f), fclose(f);
-    while (got > 0 && msg[got - 1] == '\n') got--;
-    msg[got] = '\0';
+    int rc;
+    capture_begin();
+    rc = img_decode_file(im, path, info);
+    snprintf(msg, size, "%s", chop_newlines(capture_end()));
     return rc;
 }
 
@@ -62,7 +42,7 @@ static int compare_txt(const char *txt, const image *im)
 
 static void test_cases(void)
 {
-    DIR *d = opendir(dir);
+    DIR *d = opendir(scratch_dir);
     struct dirent *e;
     char msg[600], name[300], failed[1024] = "";
     int n = 0, bad = 0, types = 0;
@@ -199,34 +179,20 @@ static void test_oiiotool(void)
     check(ok, "png_written_by_oiiotool", "8 and 16 bits, RGB, RGBA, grey: %s", ok ? "equal" : why);
 }
 
-static void remove_dir(void)
-{
-    DIR *d = opendir(dir);
-    struct dirent *e;
-    while (d && (e = readdir(d)))
-        if (strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0) unlink(in_dir(e->d_name));
-    if (d) closedir(d);
-    rmdir(dir);
-}
-
 int main(void)
 {
     char cmd[600];
-    snprintf(dir, sizeof dir, "/tmp/test_png.XXXXXX");
-    if (!mkdtemp(dir)) {
-        check(0, "mkdtemp", "cannot create a folder in /tmp");
-        return 1;
-    }
-    snprintf(cmd, sizeof cmd, "python3 tests/png_cases.py '%s'", dir);
+    scratch_begin("test_png");
+    snprintf(cmd, sizeof cmd, "python3 tests/png_cases.py '%s'", scratch_dir);
     if (system("command -v python3 >/dev/null 2>&1") != 0) printf("SKIP png_cases: no python3\n");
     else if (!check(system(cmd) == 0, "png_cases_written", "python3 tests/png_cases.py")) {
-        remove_dir();
+        scratch_end();
         return check_summary();
     } else {
         test_cases();
         test_hostile();
         test_oiiotool();
     }
-    remove_dir();
+    scratch_end();
     return check_summary();
 }

@@ -5,34 +5,14 @@
 #include "image/image.h"
 #include "image/rgbe.h"
 #include "check.h"
-#include <dirent.h>
+#include "scratch.h"
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <time.h>
-#include <unistd.h>
 
-static char dir[64];
-
-static const char *in_dir(const char *name)
-{
-    static char buf[4][400];
-    static int next = 0;
-    char *b = buf[next++ & 3];
-    snprintf(b, sizeof buf[0], "%s/%s", dir, name);
-    return b;
-}
-
-static uint32_t rng_state = 2463534242u;
-static uint32_t rng(void)
-{
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 17;
-    rng_state ^= rng_state << 5;
-    return rng_state;
-}
 static double uniform(void) { return (rng() >> 8) / 16777216.0; }
 
 /* The truncating encoder of stb_image_write (which gKit uses): e from frexp of the largest channel,
@@ -254,27 +234,13 @@ static void test_exposure(void)
     free(im.q);
 }
 
-/* stderr capture, so that tests can check the error messages. */
+/* img_read_hdr of bytes written as hostile.hdr; returns what it printed on stderr. */
 static const char *read_hostile(const unsigned char *bytes, size_t n, int *rc, image *d)
 {
-    static char text[4096];
-    int saved;
-    FILE *f = fopen(in_dir("hostile.hdr"), "wb");
-    size_t got;
-    fwrite(bytes, 1, n, f);
-    fclose(f);
-    fflush(stderr);
-    saved = dup(2);
-    if (freopen(in_dir("stderr.txt"), "w", stderr)) *rc = img_read_hdr(d, in_dir("hostile.hdr"));
-    fflush(stderr);
-    dup2(saved, 2);
-    close(saved);
-    f = fopen(in_dir("stderr.txt"), "r");
-    got = f ? fread(text, 1, sizeof text - 1, f) : 0;
-    while (got > 0 && text[got - 1] == '\n') got--;
-    text[got] = '\0';
-    if (f) fclose(f);
-    return text;
+    spit(in_dir("hostile.hdr"), bytes, n);
+    capture_begin();
+    *rc = img_read_hdr(d, in_dir("hostile.hdr"));
+    return chop_newlines(capture_end());
 }
 
 /* A header then raw bytes (the pixel data: n of them, all 128 unless given). */
@@ -341,7 +307,7 @@ static void test_not_regular(void)
     int r1, r2;
     mkfifo(in_dir("fifo.hdr"), 0600);
     r1 = img_read_hdr(&d, in_dir("fifo.hdr"));
-    r2 = img_read_hdr(&d, dir);
+    r2 = img_read_hdr(&d, scratch_dir);
     check(r1 != 0 && r2 != 0 && time(NULL) - t0 < 5, "hdr_refuses_fifo_and_folder", "no hang");
 }
 
@@ -434,23 +400,10 @@ static void test_oiiotool(void)
     img_free(&ours);
 }
 
-static void remove_dir(void)
-{
-    DIR *d = opendir(dir);
-    struct dirent *e;
-    while (d && (e = readdir(d)))
-        if (strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0) unlink(in_dir(e->d_name));
-    if (d) closedir(d);
-    rmdir(dir);
-}
-
 int main(void)
 {
-    snprintf(dir, sizeof dir, "/tmp/test_rgbe.XXXXXX");
-    if (!mkdtemp(dir)) {
-        check(0, "mkdtemp", "cannot create a folder in /tmp");
-        return 1;
-    }
+    scratch_begin("test_rgbe");
+    rng_seed(2463534242u);
     test_half_step();
     test_rle_and_orientations();
     test_old_rle();
@@ -459,6 +412,6 @@ int main(void)
     test_not_regular();
     test_convert();
     test_oiiotool();
-    remove_dir();
+    scratch_end();
     return check_summary();
 }

@@ -1,4 +1,5 @@
-"""tools/cycles_gkit.py: ../shared/tools/cycles/cycles_ref.py extended for gKit's scenes (docs/gkit.md):
+"""tools/cycles_gkit.py: ../shared/tools/cycles/cycles_ref.py (its parts in tools/cycles_common.py)
+extended for gKit's scenes (docs/gkit.md):
 --smooth keeps the OBJ's vn (smooth shading from them), and map_Kd becomes an Image Texture node with
 Closest interpolation (nearest texel, as gKit), its bytes taken as Non-Color (raw /255, gKit's) or
 sRGB with --srgb, multiplied by Kd. --pfm OUT.pfm also writes the image as a PFM (read back from the
@@ -10,64 +11,19 @@ Materials: MTL Kd -> Lambert (Diffuse BSDF), Ke -> one-sided emission (radiance 
 a Kd or Ke the MTL does not give is 0, as pathlab reads it (an emitter without Kd reflects nothing).
 Glossy (Ks/Ns) is NOT reproduced: use it only on diffuse scenes. Box pixel filter, no clamping,
 no denoising, no adaptive sampling, black world. Coordinates kept as in the OBJ (no axis conversion)."""
-import sys, os, math, argparse
+import sys, os
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))   # cycles_common: Blender puts no script's folder there
 import bpy
-from mathutils import Vector
+import cycles_common as cc
 
-argv = sys.argv[sys.argv.index('--') + 1:]
-ap = argparse.ArgumentParser()
-ap.add_argument('obj'); ap.add_argument('--eye'); ap.add_argument('--target'); ap.add_argument('--up', default='0,1,0')
-ap.add_argument('--fov', type=float); ap.add_argument('--size', default='256x256'); ap.add_argument('--spp', type=int, default=256)
+ap = cc.arg_parser()
 ap.add_argument('--smooth', action='store_true'); ap.add_argument('--srgb', action='store_true'); ap.add_argument('--pfm')
-ap.add_argument('--bounces', type=int, default=1024); ap.add_argument('--out'); ap.add_argument('--threads', type=int, default=2); ap.add_argument('--seed', type=int, default=1)
-a = ap.parse_args(argv)
-vec = lambda s: Vector([float(x) for x in s.split(',')])
-W, H = [int(x) for x in a.size.split('x')]
+a = ap.parse_args(cc.blender_argv())
 
-bpy.ops.wm.read_factory_settings(use_empty=True)
-sc = bpy.context.scene
-bpy.ops.wm.obj_import(filepath=a.obj, forward_axis='Y', up_axis='Z')
-
-# materials from the MTL, parsed here so that nothing of the importer's Principled mapping leaks in
-mtl = {}
-cur = None
-objdir = os.path.dirname(os.path.abspath(a.obj))
-for line in open(a.obj, encoding='latin-1'):
-    if line.startswith('mtllib'):
-        for name in line.split()[1:]:
-            for l in open(os.path.join(objdir, name), encoding='latin-1'):
-                t = l.split('#')[0].split()
-                if not t: continue
-                if t[0] == 'newmtl': cur = ' '.join(t[1:]); mtl[cur] = {'Kd': (0, 0, 0), 'Ke': (0, 0, 0), 'map': None}   # a key not given is 0, as pathlab reads it
-                elif t[0] in ('Kd', 'Ke') and cur: mtl[cur][t[0]] = tuple(float(x) for x in (t[1:4] if len(t) > 2 else t[1:2] * 3))
-                elif t[0] == 'map_Kd' and cur: mtl[cur]['map'] = os.path.join(objdir, ' '.join(t[1:]))
-def make(name, kd, ke, tex=None):
-    m = bpy.data.materials.new('pl_' + name); m.use_nodes = True
-    nt = m.node_tree; nt.nodes.clear()
-    out = nt.nodes.new('ShaderNodeOutputMaterial')
-    dif = nt.nodes.new('ShaderNodeBsdfDiffuse'); dif.inputs['Color'].default_value = (*kd, 1); dif.inputs['Roughness'].default_value = 0
-    if tex:   # Kd x the texture at the hit's uv, nearest texel
-        im = nt.nodes.new('ShaderNodeTexImage'); im.image = bpy.data.images.load(tex)
-        im.image.colorspace_settings.name = 'sRGB' if a.srgb else 'Non-Color'
-        im.interpolation = 'Closest'; im.extension = 'REPEAT'
-        mul = nt.nodes.new('ShaderNodeMixRGB'); mul.blend_type = 'MULTIPLY'; mul.inputs['Fac'].default_value = 1
-        mul.inputs['Color1'].default_value = (*kd, 1)
-        nt.links.new(im.outputs['Color'], mul.inputs['Color2']); nt.links.new(mul.outputs['Color'], dif.inputs['Color'])
-    if max(ke) > 0:
-        em = nt.nodes.new('ShaderNodeEmission'); em.inputs['Color'].default_value = (*ke, 1); em.inputs['Strength'].default_value = 1
-        geo = nt.nodes.new('ShaderNodeNewGeometry')
-        mix = nt.nodes.new('ShaderNodeMixShader')  # front face: emission; back face: black
-        blk = nt.nodes.new('ShaderNodeEmission'); blk.inputs['Strength'].default_value = 0
-        nt.links.new(geo.outputs['Backfacing'], mix.inputs['Fac'])
-        nt.links.new(em.outputs['Emission'], mix.inputs[1]); nt.links.new(blk.outputs['Emission'], mix.inputs[2])
-        add = nt.nodes.new('ShaderNodeAddShader')
-        nt.links.new(dif.outputs['BSDF'], add.inputs[0]); nt.links.new(mix.outputs['Shader'], add.inputs[1])
-        nt.links.new(add.outputs['Shader'], out.inputs['Surface'])
-    else:
-        nt.links.new(dif.outputs['BSDF'], out.inputs['Surface'])
-    return m
+sc = cc.import_obj(a.obj)
+mtl = cc.read_mtl(a.obj, default_kd=(0, 0, 0))   # a Kd not given is 0, as pathlab reads it
 made = {}
-for ob in [o for o in sc.objects if o.type == 'MESH']:
+for ob in cc.meshes(sc):
     if a.smooth:   # the importer's custom normals are the vn: smooth shading from them
         # Blender keeps custom normals as offsets in a per-corner space that depends on the faces'
         # smooth flags: turning a flat face (an OBJ without `s 1`) smooth after the import rotates
@@ -79,45 +35,12 @@ for ob in [o for o in sc.objects if o.type == 'MESH']:
         # no shadow-terminator fix: Cycles would start shadow rays from a curved surface above the
         # facet, where gKit's (and pathlab's) start on the facet itself
         ob.cycles.shadow_terminator_geometry_offset = 0.0; ob.cycles.shadow_terminator_offset = 0.0
-    else:   # flat shading from the geometric normal: drop the importer's custom (vn) normals
-        if ob.data.has_custom_normals: ob.data.free_normals_split(); bpy.context.view_layer.objects.active = ob; bpy.ops.mesh.customdata_custom_splitnormals_clear()
-        ob.data.use_auto_smooth = False
-        for p in ob.data.polygons: p.use_smooth = False
-    for i, slot in enumerate(ob.material_slots):
-        nm = slot.material.name if slot.material else None
-        key = nm if nm in mtl else (nm.rsplit('.', 1)[0] if nm and nm.rsplit('.', 1)[0] in mtl else None)
-        kd, ke = (mtl[key]['Kd'], mtl[key]['Ke']) if key else ((0.8, 0.8, 0.8), (0, 0, 0))
-        if key not in made: made[key] = make(str(key), kd, ke, mtl[key]['map'] if key else None)
-        slot.material = made[key]
-
-cam = bpy.data.cameras.new('cam'); co = bpy.data.objects.new('cam', cam); sc.collection.objects.link(co); sc.camera = co
-eye, tgt, up = vec(a.eye), vec(a.target), vec(a.up)
-co.location = eye
-co.rotation_euler = (tgt - eye).to_track_quat('-Z', 'Y').to_euler()
-# respect the given up vector: build the rotation from an orthonormal frame
-w = (eye - tgt).normalized(); u = up.cross(w).normalized(); v = w.cross(u)
-from mathutils import Matrix
-co.matrix_world = Matrix(((u.x, v.x, w.x, eye.x), (u.y, v.y, w.y, eye.y), (u.z, v.z, w.z, eye.z), (0, 0, 0, 1)))
-cam.sensor_fit = 'VERTICAL'; cam.angle_y = math.radians(a.fov); cam.clip_start = 1e-4; cam.clip_end = 1e6
-
-world = bpy.data.worlds.new('w'); sc.world = world; world.use_nodes = True
-world.node_tree.nodes['Background'].inputs['Strength'].default_value = 0
-sc.render.engine = 'CYCLES'; c = sc.cycles
-c.device = 'CPU'; c.samples = a.spp; c.use_adaptive_sampling = False; c.use_denoising = False
-c.max_bounces = c.diffuse_bounces = c.glossy_bounces = c.transmission_bounces = a.bounces
-c.transparent_max_bounces = 8; c.sample_clamp_direct = 0; c.sample_clamp_indirect = 0
-c.caustics_reflective = c.caustics_refractive = True; c.blur_glossy = 0
-c.pixel_filter_type = 'BOX'; c.filter_width = 1.0
-c.seed = a.seed
-sc.render.threads_mode = 'FIXED'; sc.render.threads = a.threads
-sc.render.resolution_x, sc.render.resolution_y, sc.render.resolution_percentage = W, H, 100
-sc.view_settings.view_transform = 'Standard'; sc.view_settings.look = 'None'; sc.view_settings.exposure = 0; sc.view_settings.gamma = 1
-sc.render.image_settings.file_format = 'OPEN_EXR'; sc.render.image_settings.color_depth = '32'
-sc.render.image_settings.color_mode = 'RGB'; sc.render.image_settings.exr_codec = 'ZIP'
-sc.render.filepath = os.path.abspath(a.out)
-import time; t0 = time.time()
-bpy.ops.render.render(write_still=True)
-print('CYCLES_DONE %.2f s' % (time.time() - t0))
+    else:
+        cc.flat_shading(ob)
+    cc.set_materials(ob, mtl, made, tex_colorspace='sRGB' if a.srgb else 'Non-Color')
+cc.add_camera(sc, a)
+cc.black_world(sc)
+cc.render(sc, a)
 if a.pfm:   # the EXR read back by Blender (bottom row first, as PFM), written as a little-endian PFM
     import struct
     img = bpy.data.images.load(os.path.abspath(a.out)); px = list(img.pixels); w, h = img.size

@@ -26,10 +26,6 @@
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 
-usage() {
-    sed -n '2,/^set -eu/p' "$0" | sed -e '/^set -eu/d' -e 's/^# \{0,1\}//' >&2
-    exit 2
-}
 die() { echo "submit: $*" >&2; exit 2; }
 . "$here/../pieces.sh"
 
@@ -42,14 +38,8 @@ while [ $# -gt 0 ]; do
         --pieces) [ $# -ge 2 ] || usage; pieces=$2; shift 2 ;;
         --cpus) [ $# -ge 2 ] || usage; cpus=$2; shift 2 ;;
         --time-limit) [ $# -ge 2 ] || usage; time=$2; shift 2 ;;
-        --pathlab) [ $# -ge 2 ] || usage; pathlab=$2; shift 2 ;;
         --afterok) dep=afterok; shift ;;
-        --keep) keep=1; shift ;;
-        --dry-run) dry=1; shift ;;
-        --spp) [ $# -ge 2 ] || usage; spp=$2; shift 2 ;;
-        -h|--help) usage ;;
-        -*) flags+=("$1"); shift ;;
-        *) pieces_word "$1"; shift ;;
+        *) pieces_option "$@"; shift "$used" ;;
     esac
 done
 pieces_words_done
@@ -63,10 +53,8 @@ for f in "${flags[@]+"${flags[@]}"}"; do
     esac
 done
 [ $dry = 1 ] || command -v sbatch >/dev/null 2>&1 || die "sbatch not found: run this on a Slurm login node"
-[ -x "$pathlab" ] || die "no pathlab program at '$pathlab' (run make, or give --pathlab PROG)"
-[ -f "$scene" ] || die "no scene '$scene'"
+pieces_inputs_check
 
-abs() { case $1 in /*) printf '%s\n' "$1" ;; *) printf '%s\n' "$PWD/${1#./}" ;; esac; }
 # the tasks start in this folder (--chdir), so the scene keeps the name given (it goes into the sidecars)
 prog=$(abs "$pathlab") scn=$scene aout=$(abs "$out")
 dir=$aout.slurm

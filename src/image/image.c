@@ -421,6 +421,16 @@ static void decode_pfm(image *im, unsigned char *data, const pfm_header *hd)
         }
 }
 
+/* What img_read_pfm_info and img_read_pfm_header tell of a file's header. */
+static void pfm_info_of(const pfm_header *hd, img_pfm_info *info)
+{
+    info->w = (int)hd->w;
+    info->h = (int)hd->h;
+    info->channels = hd->channels;
+    info->big_endian = hd->big_endian;
+    info->scale = hd->scale;
+}
+
 int img_read_pfm_info(image *im, const char *path, img_pfm_info *info)
 {
     pfm_header hd;
@@ -451,13 +461,7 @@ int img_read_pfm_info(image *im, const char *path, img_pfm_info *info)
     data = (unsigned char *)im->px;   /* need <= its size: 4 bytes a value, 1 or 3 values a pixel */
     if (read_pixels(f, path, &hd, need, left, data) || check_byte_order(data, need / 4, &hd, path)) goto out;
     decode_pfm(im, data, &hd);
-    if (info) {
-        info->w = (int)hd.w;
-        info->h = (int)hd.h;
-        info->channels = hd.channels;
-        info->big_endian = hd.big_endian;
-        info->scale = hd.scale;
-    }
+    if (info) pfm_info_of(&hd, info);
     err = 0;
 out:
     if (err) img_free(im);   /* data is its buffer */
@@ -482,11 +486,7 @@ int img_read_pfm_header(const char *path, img_pfm_info *info)
     if (left >= 0 && (size_t)left < need) truncated_error(path, &hd, need, (size_t)left);
     else if (left >= 0 && (size_t)left > need) trailing_error(path, &hd, need, left - (long)need, 0);
     else {
-        info->w = (int)hd.w;
-        info->h = (int)hd.h;
-        info->channels = hd.channels;
-        info->big_endian = hd.big_endian;
-        info->scale = hd.scale;
+        pfm_info_of(&hd, info);
         err = 0;
     }
 out:

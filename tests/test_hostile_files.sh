@@ -127,4 +127,18 @@ if mount -t tmpfs -o size=64k tmpfs full 2> /dev/null; then
     expect_status "full disk: convert exits 2" 2 $P convert stu/a.pfm full/c.png
     umount full
 else skip "full disk: cannot mount a tmpfs (not root)"; fi
+# a file name or header line with terminal escapes in a decoder's message (a Radiance HDR graded, a
+# PNG texture named by an MTL): shown escaped (\x1b), never raw
+ESCN=$(printf 'e\e[8mx')
+printf '#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +Z \e[31m\n' > "$ESCN.hdr"
+printf 'not an image' > "$ESCN.png"
+printf 'mtllib esc.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl a\nf 1/1 2/2 3/3\n' > esc.obj
+printf 'newmtl a\nKd 1 1 1\nmap_Kd %s.png\n' "$ESCN" > esc.mtl
+for what in hdr png; do
+    if [ $what = hdr ]; then $P grade "$ESCN.hdr" --ref teacher/ref.pfm > "$TMP/out" 2> "$TMP/err"
+    else $P render esc.obj --size 8x8 --spp 1 -o esc.pfm > "$TMP/out" 2> "$TMP/err"; fi
+    if grep -q $'\e' "$TMP/out" "$TMP/err"; then fail "a bad $what named with ESC[8m: a raw ESC in: $(head -c 300 "$TMP/err" | cat -v)"
+    elif grep -q 'e\\x1b\[8mx' "$TMP/err"; then pass "a bad $what named with ESC[8m: its messages show \\x1b, no raw escape"
+    else fail "a bad $what named with ESC[8m: $(head -c 300 "$TMP/err" | cat -v)"; fi
+done
 exit 0

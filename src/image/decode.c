@@ -3,6 +3,7 @@
  * size before reading the pixels; the others get the whole file in memory, at most
  * IMG_DECODE_MAX_FILE bytes. */
 #include "image/decode.h"
+#include "sys/shown.h"
 #include "image/rgbe.h"
 #include "sys/input_file.h"
 #include <errno.h>
@@ -90,13 +91,15 @@ int img_decode_file(image *im, const char *path, img_decoded *info)
     size_t n = 0;
     file_format fmt;
     int err;
+    char name[4 * SHOWN_MAX + 4];   /* the name in messages: a student's file name, shown escaped */
     FILE *f = input_file_open(path, 1);
+    snprintf(name, sizeof name, "%s", shown(path));
     im->w = im->h = 0;
     im->px = NULL;
     if (!info) info = &mine;
     memset(info, 0, sizeof *info);
     if (!f) {
-        fprintf(stderr, "%s: cannot open: %s\n", path, input_file_why(errno));
+        fprintf(stderr, "%s: cannot open: %s\n", name, input_file_why(errno));
         return 1;
     }
     fmt = sniff(head, fread(head, 1, sizeof head, f));
@@ -104,10 +107,10 @@ int img_decode_file(image *im, const char *path, img_decoded *info)
         fclose(f);
         return decode_float(im, path, fmt, info);
     }
-    b = read_all(f, path, &n);
+    b = read_all(f, name, &n);
     fclose(f);
     if (!b) return 1;
-    err = decode_bytes(im, b, n, path, sniff(b, n), info);
+    err = decode_bytes(im, b, n, name, sniff(b, n), info);
     free(b);
     if (err) img_free(im);
     return err;

@@ -477,7 +477,7 @@ int img_read_pfm_header(const char *path, img_pfm_info *info)
     int err = 1;
     FILE *f = input_file_open(path, 1);
     if (!f) {
-        fprintf(stderr, "%s: cannot open: %s\n", path, input_file_why(errno));
+        fprintf(stderr, "%s: cannot open: %s\n", shown(path), input_file_why(errno));
         return 1;
     }
     if (read_pfm_header(f, path, &hd)) goto out;

@@ -16,6 +16,7 @@
  * encoding could be (old-style runs counted as at most 255 pixels for 4 bytes) or longer than
  * their least compact one: memory stays within the file plus the image. */
 #include "image/rgbe.h"
+#include "sys/shown.h"
 #include "sys/input_file.h"
 #include <errno.h>
 #include <math.h>
@@ -75,7 +76,7 @@ static int exposure_line(const char *line, rgbe_header *hd, const char *path)
     for (c = 0; c < 3; c++) {
         v[c] = all && c > 0 ? v[0] : positive(s, &end);
         if (v[c] == 0.0) {
-            fprintf(stderr, "%s: bad %s line '%.80s' (%s)\n", path, all ? "EXPOSURE" : "COLORCORR", line,
+            fprintf(stderr, "%s: bad %s line '%.80s' (%s)\n", path, all ? "EXPOSURE" : "COLORCORR", shown(line),
                     all ? "a positive number" : "three positive numbers");
             return 1;
         }
@@ -98,7 +99,7 @@ static int header_line(const char *line, rgbe_header *hd, int *format, const cha
             return header_error(path, "FORMAT=32-bit_rle_xyze: the pixels are CIE XYZ, not RGB; this "
                                 "reader takes RGB only (Radiance's ra_xyze -r converts the file)");
         fprintf(stderr, "%s: unknown pixel format '%.80s' (a Radiance file says FORMAT=32-bit_rle_rgbe)\n",
-                path, f);
+                path, shown(f));
         return 1;
     }
     if (strncmp(line, "EXPOSURE=", 9) == 0 || strncmp(line, "COLORCORR=", 10) == 0)
@@ -141,7 +142,7 @@ static int resolution(const char *line, rgbe_header *hd, const char *path)
         }
     }
     fprintf(stderr, "%s: bad resolution line '%.80s' (e.g. \"-Y 480 +X 640\": 480 rows from the top, "
-            "640 pixels from the left; each side 1 to 1048576, at most 268435456 pixels)\n", path, line);
+            "640 pixels from the left; each side 1 to 1048576, at most 268435456 pixels)\n", path, shown(line));
     return 1;
 }
 
@@ -376,17 +377,19 @@ int img_read_hdr(image *im, const char *path)
     size_t n = 0;
     int err;
     FILE *f;
+    char name[4 * SHOWN_MAX + 4];   /* the name in messages: a student's file name, shown escaped */
+    snprintf(name, sizeof name, "%s", shown(path));
     im->w = im->h = 0;
     im->px = NULL;
     f = input_file_open(path, 1);
     if (!f) {
-        fprintf(stderr, "%s: cannot open: %s\n", path, input_file_why(errno));
+        fprintf(stderr, "%s: cannot open: %s\n", name, input_file_why(errno));
         return 1;
     }
-    err = read_checked(f, path, &b, &n);
+    err = read_checked(f, name, &b, &n);
     fclose(f);
     if (err) return 1;
-    err = decode_hdr(im, b, n, path);
+    err = decode_hdr(im, b, n, name);
     free(b);
     return err;
 }

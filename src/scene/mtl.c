@@ -176,7 +176,7 @@ static int find_or_load_texture(const objtext *t, mesh *m, char *real, const mtl
     if (i == m->ntextures) {
         if (!(more = realloc(m->textures, ((size_t)m->ntextures + 1) * sizeof *more))) return objtext_fail(t, "out of memory");
         m->textures = more;
-        if (texture_load(&m->textures[i], real, o->decode)) return objtext_fail(t, "cannot read the texture %s", real);
+        if (texture_load(&m->textures[i], real, o->decode)) return objtext_fail(t, "cannot read the texture %s", real);   /* shown by objtext_fail */
         m->ntextures++;
     }
     *tex = i + 1;

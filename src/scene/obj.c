@@ -453,7 +453,7 @@ static int load_given_mtl(loader *L, const char *file)
     char *root = scene_file_folder(file);
     int err = root ? mtl_load(file, L->m, root, &L->opts) : errno;
     free(root);
-    if (err > 0) fprintf(stderr, "%s: cannot open (--mtl): %s\n", file, strerror(err));
+    if (err > 0) fprintf(stderr, "%s: cannot open (--mtl): %s\n", shown(file), strerror(err));
     L->mtl_given = 1;
     return err == 0;
 }

@@ -180,11 +180,15 @@ int objtext_numbers(const objtext *t, char **s, const char *kw, float *v, int mi
     return -1;
 }
 
+/* The message is shown() whole: the words it quotes come from the student's file (a name, a bad
+ * number) and may hold terminal escapes. */
 static void vsay(const char *path, int line, const char *fmt, va_list ap)
 {
+    char msg[2048];
+    vsnprintf(msg, sizeof msg, fmt, ap);
     if (line > 0) fprintf(stderr, "%s:%d: ", shown(path), line);
     else fprintf(stderr, "%s: ", shown(path));
-    vfprintf(stderr, fmt, ap);
+    fputs(shown(msg), stderr);
     fputc('\n', stderr);
 }
 

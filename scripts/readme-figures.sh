@@ -42,7 +42,8 @@ l0=$(load); t0=$(now)
 (cd "$clone/pathlab" && make test > "$clone/test.log" 2>&1)
 t1=$(now); l1=$(load)
 last=$(tail -n 1 "$clone/test.log")
-case $last in *" passed, "*" failed") ;; *) echo "make test did not end with 'N passed, N failed': $last" >&2; exit 1 ;; esac
+case $last in *" passed, "*" failed") ;; *) echo "make test did not end with 'N passed, N failed': $last" >&2
+    grep -E 'FAIL|Error|error:' "$clone/test.log" | head -20 >&2; exit 1 ;; esac
 passed=${last%% passed*}; failed=${last#*passed, }; failed=${failed%% failed}
 key="<!-- scripts/readme-figures.sh make test${EST_ALL:+ EST_ALL=$EST_ALL} -->"
 write "$key" "${EST_ALL:+EST_ALL=$EST_ALL }\`make test\` in a fresh clone, its build included, on $cores cores: **$(mmss "$(secs "$t0" "$t1")")**, $((passed + failed)) checks ($passed passed), at $rev on $(when), load average $l0 to $l1. $key"

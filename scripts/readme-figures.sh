@@ -15,6 +15,8 @@ cd "$(dirname "$0")/.."
 clone=$(mktemp -d)
 trap 'rm -rf "$clone"' EXIT
 git clone -q . "$clone/pathlab" || exit 2
+# the shared data beside the clone, as beside this checkout (tests read ../shared/data)
+[ -d ../shared ] && ln -s "$(cd ../shared && pwd)" "$clone/shared"
 rev=$(git rev-parse --short HEAD)
 cores=$(nproc 2> /dev/null || echo 2)
 now() { date +%s.%N; }

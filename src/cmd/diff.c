@@ -90,7 +90,7 @@ int diff_main(int argc, char **argv)
         return 2;
     }
     if (!ref || n < 1) { fprintf(stderr, "pathlab diff: needs an image and a reference\n" DIFF_USAGE); free(words); return 2; }
-    if (heat && ((img_format_of(heat) != IMG_PNG && img_format_of(heat) != IMG_PPM) || n > 1)) {
+    if (heat && (!img_is_picture(heat) || n > 1)) {
         fprintf(stderr, n > 1 ? "pathlab diff: --heatmap %s: with one image only\n"
                               : "pathlab diff: --heatmap %s: a heatmap is a picture: use .png or .ppm\n", shown(heat));
         free(words);

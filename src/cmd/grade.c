@@ -33,7 +33,7 @@ static int check_outputs(const grade_job *j)
     static const char *const reports[] = {".md", ".csv", ".html", NULL};
     const char *r = j->report;
     int folder = j->heatmap && (j->nimages > 1 || path_is_dir(j->heatmap));   /* FOLDER/NAME.png, even for one image */
-    if (j->heatmap && !(folder ? path_is_dir(j->heatmap) : img_format_of(j->heatmap) == IMG_PNG || img_format_of(j->heatmap) == IMG_PPM)) {
+    if (j->heatmap && !(folder ? path_is_dir(j->heatmap) : img_is_picture(j->heatmap))) {
         fprintf(stderr, j->nimages > 1 ? "pathlab grade: --heatmap %s: with several images, give a folder that exists\n"
                                        : "pathlab grade: --heatmap %s: a heatmap is a picture: use .png or .ppm\n", shown(j->heatmap));
         return 1;

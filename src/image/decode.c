@@ -91,7 +91,7 @@ int img_decode_file(image *im, const char *path, img_decoded *info)
     size_t n = 0;
     file_format fmt;
     int err;
-    char name[4 * SHOWN_MAX + 4];   /* the name in messages: a student's file name, shown escaped */
+    char name[SHOWN_CAP];   /* the name in messages: a student's file name, shown escaped */
     FILE *f = input_file_open(path, 1);
     snprintf(name, sizeof name, "%s", shown(path));
     im->w = im->h = 0;

@@ -575,6 +575,12 @@ img_format img_format_of(const char *path)
     return IMG_UNKNOWN;
 }
 
+int img_is_picture(const char *path)
+{
+    img_format f = img_format_of(path);
+    return f == IMG_PNG || f == IMG_PPM;
+}
+
 int img_write(const image *im, const char *path, float exposure)
 {
     switch (img_format_of(path)) {

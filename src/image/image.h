@@ -21,6 +21,8 @@ img_format img_format_of(const char *path);
 extern const char *const IMG_EXTENSIONS[];
 extern const char *const IMG_PFM_EXTENSION[];
 extern const char *const IMG_PICTURE_EXTENSIONS[];
+/* 1 for a .png or .ppm name: a picture (what a heatmap may be), not a render */
+int img_is_picture(const char *path);
 const char *img_extension(const char *path);
 /* Writes by extension (img_format_of); prints "path: reason" on stderr and returns nonzero on error. */
 int img_write(const image *im, const char *path, float exposure);

@@ -377,7 +377,7 @@ int img_read_hdr(image *im, const char *path)
     size_t n = 0;
     int err;
     FILE *f;
-    char name[4 * SHOWN_MAX + 4];   /* the name in messages: a student's file name, shown escaped */
+    char name[SHOWN_CAP];   /* the name in messages: a student's file name, shown escaped */
     snprintf(name, sizeof name, "%s", shown(path));
     im->w = im->h = 0;
     im->px = NULL;

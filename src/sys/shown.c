@@ -66,7 +66,7 @@ static size_t shown_into(char *out, size_t cap, const char *name)
 
 const char *shown(const char *name)
 {
-    static char ring[SHOWN_RING][4 * SHOWN_MAX + 4];
+    static char ring[SHOWN_RING][SHOWN_CAP];
     static unsigned next;
     const unsigned char *s;
     char e[16], *out;

@@ -11,6 +11,7 @@
 
 #define SHOWN_RING 12
 #define SHOWN_MAX 4352
+#define SHOWN_CAP (4 * SHOWN_MAX + 4)   /* the room a shown() copy may take, its NUL included */
 
 const char *shown(const char *name);
 #endif

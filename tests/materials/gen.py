@@ -11,6 +11,11 @@
   half of them pointing into the surface (stress: finite, non-negative).
 - tilt-plus.obj / tilt-minus.obj: a quad whose vn are tilted 30 degrees, under a small lamp 45 degrees off
   its normal on either side; tilt.expect holds L1 at the origin (a quadrature).
+- texroom.obj (tests/test_grade_gkit.sh): a room of gKit's kinds: floor and back wall textured with
+  the 8-bit tex8.ppm (asymmetric), glossy side walls (Ks), a smooth sphere (vn), a lamp; and the
+  variants a student's mistakes give: texroom-flipv.obj (texcoord v read as 1 - v), texroom-notex.obj
+  (map_Kd ignored, Kd the texture's mean); skysphere.obj, a smooth sphere on a floor for the image
+  sky sky.pfm, and sky-flipped.pfm (rows reversed), sky-turned.pfm (turned half a turn about +Y).
 PFM textures are written by hand (little-endian, rows bottom to top)."""
 import math, os, random, struct, sys
 
@@ -156,3 +161,85 @@ for name, th in (("tilt-plus", 45.0), ("tilt-minus", -45.0)):
     expect.append("%s %.6f" % (name, L))
 write("tilt.mtl", "newmtl white\nKd 1\nnewmtl bright\nKe 1000\n")
 write("tilt.expect", "\n".join(expect) + "\n")
+
+
+# texroom: a 2 x 2 x 2 room open toward +z, its lamp facing down (one-sided: checked below)
+def ppm(name, w, h, rows_top_down):
+    with open(os.path.join(out, name), "wb") as f:
+        f.write(b"P6\n%d %d\n255\n" % (w, h))
+        for row in rows_top_down:
+            for px in row:
+                f.write(bytes(px))
+A, B, Y = (200, 60, 60), (60, 60, 200), (230, 230, 60)
+tex = [[(A if (i + j) % 2 else B) for i in range(8)] for j in range(8)]
+for j in range(2):
+    for i in range(2):
+        tex[j][i] = Y                       # the file's top-left corner: what a flip moves
+ppm("tex8.ppm", 8, 8, tex)
+mean = [sum(px[k] for row in tex for px in row) / 64 / 255 for k in range(3)]
+
+def texroom(flip_v, mtl):
+    v, vt, o = [], [], ["mtllib " + mtl]
+    def quad(mat, corners, uv=None):
+        base = len(v)
+        v.extend(corners)
+        if uv:
+            vb = len(vt)
+            vt.extend((a, 1 - b if flip_v else b) for a, b in uv)
+            o.append("usemtl %s\nf %s" % (mat, " ".join("%d/%d" % (base + k + 1, vb + k + 1) for k in range(4))))
+        else:
+            o.append("usemtl %s\nf %s" % (mat, " ".join("%d" % (base + k + 1) for k in range(4))))
+    uv = [(0, 0), (1, 0), (1, 1), (0, 1)]
+    quad("floor", [(-1, 0, 1), (1, 0, 1), (1, 0, -1), (-1, 0, -1)], uv)
+    quad("back", [(-1, 0, -1), (1, 0, -1), (1, 2, -1), (-1, 2, -1)], uv)
+    quad("left", [(-1, 0, 1), (-1, 0, -1), (-1, 2, -1), (-1, 2, 1)])
+    quad("right", [(1, 0, -1), (1, 0, 1), (1, 2, 1), (1, 2, -1)])
+    quad("white", [(-1, 2, -1), (1, 2, -1), (1, 2, 1), (-1, 2, 1)])
+    quad("lamp", [(-0.3, 1.99, -0.3), (0.3, 1.99, -0.3), (0.3, 1.99, 0.3), (-0.3, 1.99, 0.3)])
+    a, b, c = v[-4:-1]
+    e1 = [b[k] - a[k] for k in range(3)]; e2 = [c[k] - a[k] for k in range(3)]
+    assert e1[2] * e2[0] - e1[0] * e2[2] < 0, "the lamp must face down"
+    text = ["v %.9g %.9g %.9g" % p for p in v] + ["vt %.9g %.9g" % t for t in vt] + o
+    nv = len(v)
+    sph = sphere(True).splitlines()
+    for l in sph:      # the smooth sphere, radius 0.35 at (0.35, 0.35, -0.3), its lamp dropped
+        if l.startswith("v "):
+            x, y, z = (float(t) for t in l.split()[1:])
+            text.append("v %.9g %.9g %.9g" % (0.35 + 0.35 * x, 0.35 + 0.35 * y, -0.3 + 0.35 * z))
+        elif l.startswith("vn "):
+            text.append(l)
+        elif l.startswith("f ") and len(l.split()) == 4:
+            text.append("f " + " ".join("%d//%d" % (int(c.split("//")[0]) + nv, int(c.split("//")[1])) for c in l.split()[1:]))
+        elif l == "usemtl grey":
+            text.append("usemtl ball")
+        elif l == "usemtl lamp":
+            break
+    return "\n".join(text) + "\n"
+write("texroom.obj", texroom(False, "texroom.mtl"))
+write("texroom-flipv.obj", texroom(True, "texroom.mtl"))
+write("texroom-notex.obj", texroom(False, "texroom-notex.mtl"))
+walls = ("newmtl left\nKd 0.6 0.1 0.1\nKs 0.3\nNs 20\nnewmtl right\nKd 0.1 0.5 0.1\nKs 0.3\nNs 20\n"
+         "newmtl white\nKd 0.7\nnewmtl ball\nKd 0.7\nKs 0.25\nNs 40\nnewmtl lamp\nKe 12\n")
+write("texroom.mtl", walls + "newmtl floor\nKd 1\nmap_Kd tex8.ppm\nnewmtl back\nKd 0.8\nmap_Kd tex8.ppm\n")
+write("texroom-notex.mtl", walls + "newmtl floor\nKd %.6f %.6f %.6f\nnewmtl back\nKd %.6f %.6f %.6f\n"
+      % (tuple(mean) + tuple(0.8 * m for m in mean)))
+
+# skysphere: the smooth sphere on a floor (Kd 0.5), for an image sky bright above, with a warm
+# side (+x) and a cool side (-x): turning or flipping it changes the picture
+sky = sphere(True).splitlines()
+sky = [l for l in sky if l.split()[:2] != ["usemtl", "lamp"] and not (l.startswith("v ") and l.split()[2] == "4")]
+sky = [l for l in sky if not (l.startswith("f ") and "//" not in l)]
+sky = [l.replace("sphere.mtl", "skysphere.mtl") for l in sky]
+n = len([l for l in sky if l.startswith("v ")])
+sky += ["usemtl floor", "v -3 -1 3", "v 3 -1 3", "v 3 -1 -3", "v -3 -1 -3", "f %d %d %d %d" % (n + 1, n + 2, n + 3, n + 4)]
+write("skysphere.obj", "\n".join(sky) + "\n")
+write("skysphere.mtl", "newmtl grey\nKd 0.8\nnewmtl floor\nKd 0.5\n")
+W, H = 16, 8
+def sky_px(i, j):      # column i (u), row j counted from the bottom (v)
+    up = (j + 0.5) / H
+    warm = 0.5 + 0.5 * math.cos(2 * math.pi * (i + 0.5) / W)
+    return (0.2 + 1.5 * up * warm, 0.2 + 1.0 * up, 0.2 + 1.5 * up * (1 - warm))
+rows = [[sky_px(i, j) for i in range(W)] for j in range(H)]
+pfm("sky.pfm", W, H, rows)
+pfm("sky-flipped.pfm", W, H, rows[::-1])
+pfm("sky-turned.pfm", W, H, [r[W // 2:] + r[:W // 2] for r in rows])

@@ -259,8 +259,8 @@ $(BUILD)/bench-scale-mesh: bench/scale_mesh.c
 # Efficiency against Blender Cycles 3.4 (bench/cycles.sh): MSE x time at equal time on the
 # diffuse Cornell boxes (scenes/cornell and ../shared's CornellBox-Original), 200x200, 2 threads, 64
 # and 256 spp; writes the table into docs/performance.md. Optional: installs Debian's blender and
-# python3-openimageio if missing (not needed by anything else). Runs the NATIVE=1 build like `make
-# bench`; PATHLAB=PROG and PATHLAB_FLAGS="; --sampler independent" (';' between columns) choose the
+# python3-openimageio if missing (not needed by anything else). Runs the `make` build (./pathlab),
+# the one users get; PATHLAB=PROG and PATHLAB_FLAGS="; --sampler independent" (';' between columns) choose the
 # columns (an empty set: the default flags, whose sampler is sobol1).
 # Each column costs as long as the Cycles renders (equal time): one column, one round took about 4
 # minutes on the loaded machine (load 6-9 on 2 cores), plus 15 the first time (the four references,
@@ -273,9 +273,8 @@ bench-cycles-deps:
 	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
 	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq python3-openimageio >/dev/null; }
 
-bench-cycles: bench-cycles-deps
-	$(MAKE) NATIVE=1 build-native/pathlab
-	PATHLAB="$(or $(PATHLAB),build-native/pathlab)" PATHLAB_FLAGS="$(PATHLAB_FLAGS)" bench/cycles.sh --doc
+bench-cycles: bench-cycles-deps $(PROG)
+	PATHLAB="$(or $(PATHLAB),./$(PROG))" PATHLAB_FLAGS="$(PATHLAB_FLAGS)" bench/cycles.sh --doc
 
 # How far `pathlab grade` can be trusted (tests/grade_calibration.sh): false alarms on >= 200 honest
 # renders of every estimator at 1 to 1024 spp, and the smallest bias found per size, spp and region.

@@ -35,7 +35,8 @@
 # Environment: PATHLAB, PATHLAB_FLAGS, REF_PATHLAB (first column's program), REF_PATHLAB_FLAGS (""),
 #   SIZE (200x200), THREADS (2), LEVELS (64 256), REF_SPP (2048, two halves), ROUNDS (1; round r uses
 #   seed r for both renderers), SCENES (cornell mcguire; mcguire-NAME adds MCGUIRE/NAME.obj, e.g.
-#   mcguire-CornellBox-Empty-RG, with CornellBox-Original's camera), OUT (build-native/bench if it exists, else
+#   mcguire-CornellBox-Empty-RG, with CornellBox-Original's camera; NAME adds scenes/NAME.obj with
+#   scenes/NAME.view, e.g. cornell-glossy with CYCLES_REF=tools/cycles_glossy.py), OUT (build-native/bench if it exists, else
 #   build/bench), REF_DIR (${XDG_CACHE_HOME:-~/.cache}/pathlab-bench-cycles: cached references),
 #   CYCLES_REF (../shared/tools/cycles/cycles_ref.py), MCGUIRE (../shared/data/cornell-mcguire).
 set -eu
@@ -91,7 +92,9 @@ for sc in $SCENES; do
             CAM[$sc]="--eye 0,1,3.9 --target 0,1,0 --up 0,1,0 --fov 40" ;;
         mcguire-*) src=$MCGUIRE/${sc#mcguire-}.obj   # another of McGuire's boxes, the same camera
             CAM[$sc]="--eye 0,1,3.9 --target 0,1,0 --up 0,1,0 --fov 40" ;;
-        *) die "unknown scene $sc (cornell, mcguire, mcguire-NAME for MCGUIRE/NAME.obj)" ;;
+        *) src=scenes/$sc.obj   # another of pathlab's scenes, with its camera
+            [ -f scenes/$sc.view ] || die "unknown scene $sc (cornell, mcguire, mcguire-NAME for MCGUIRE/NAME.obj, or NAME for scenes/NAME.obj and .view)"
+            CAM[$sc]="--eye=$(view_get scenes/$sc.view eye) --target=$(view_get scenes/$sc.view target) --up=$(view_get scenes/$sc.view up) --fov=$(view_get scenes/$sc.view fov)" ;;
     esac
     [ -f "$src" ] || die "$src missing"
     for m in $(sed -n 's/^mtllib[[:space:]]*//p' "$src" | tr -d '\r'); do cp "$(dirname "$src")/$m" "$T/$sc/"; done
@@ -172,7 +175,7 @@ LOAD_END=$(loadavg) SEC_END=$(date +%s)
 
 # 3. the table
 MD=$OUT/cycles.md
-rev() { "$1" --version 2>/dev/null | awk '{ print $2 }' | grep . || echo '?'; }  # the revision built into it
+rev() { "$1" --version 2>/dev/null | awk 'NR == 1 { print $2 }' | grep . || echo '?'; }  # the revision built into it
 CPU=$(lscpu 2>/dev/null | sed -n 's/^Model name:[[:space:]]*//p' | head -n 1)
 {
     echo "## Efficiency against Blender Cycles"

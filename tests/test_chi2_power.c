@@ -116,7 +116,7 @@ static void tree_descent(const light_set *ls, vec3 p, double u0, float u1, float
 static double no_cone_importance(const light_node *nd, vec3 p)
 {
     vec3 v = v3_sub(p, nd->c);
-    return nd->power / fmax(v3_dot(v, v), nd->r2);
+    return nd->power / fmax(v3_dot(v, v), nd->r * nd->r);
 }
 
 static double q_no_cone(const light_tree *t, int k, vec3 p)

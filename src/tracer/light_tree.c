@@ -14,29 +14,34 @@
 
 /* ---------- importance ---------- */
 
-float light_node_importance(const light_node *nd, vec3 p)
+/* (inline here: the descent calls it twice per level, the hottest code of a light sample) */
+static inline float importance(const light_node *nd, vec3 p)
 {
     vec3 v = v3_sub(p, nd->c);
-    float d2 = v3_dot(v, v), cos_w, sin_w, cos_x, sin_x, cos_b, sin_b;
+    float d2 = v3_dot(v, v), inv_d, cos_w, sin_w, cos_x, sin_x, sin_b, cos_b;
     /* p in the bounding sphere: any emitter may face it, and 1/d^2 is clamped at the sphere */
-    if (d2 <= nd->r2) return nd->power / fmaxf(nd->r2, FLT_MIN);
-    cos_w = v3_dot(nd->axis, v) / sqrtf(d2);   /* theta_w: from the cone's axis to the direction c -> p */
-    sin_w = sqrtf(fmaxf(0.0f, 1.0f - cos_w * cos_w));
-    /* theta_w - theta_o, at least 0: the smallest angle between a normal of the cone and c -> p */
-    if (cos_w >= nd->cos_o) cos_x = 1.0f, sin_x = 0.0f;
-    else cos_x = cos_w * nd->cos_o + sin_w * nd->sin_o, sin_x = sin_w * nd->cos_o - cos_w * nd->sin_o;
+    if (d2 <= nd->r * nd->r) return nd->r > 0.0f ? nd->power / (nd->r * nd->r) : nd->power;
+    inv_d = 1.0f / sqrtf(d2);
+    cos_x = 1.0f, sin_x = 0.0f;
+    cos_w = v3_dot(nd->axis, v) * inv_d;   /* theta_w: from the cone's axis to the direction c -> p */
+    if (cos_w < nd->cos_o) {   /* theta_w - theta_o: the smallest angle between a normal of the cone and c -> p */
+        sin_w = sqrtf(1.0f - cos_w * cos_w > 0.0f ? 1.0f - cos_w * cos_w : 0.0f);
+        cos_x = cos_w * nd->cos_o + sin_w * nd->sin_o, sin_x = sin_w * nd->cos_o - cos_w * nd->sin_o;
+    }
     /* minus theta_b, the half-angle of the sphere seen from p: s -> p is within theta_b of c -> p */
-    sin_b = sqrtf(nd->r2 / d2), cos_b = sqrtf(fmaxf(0.0f, 1.0f - nd->r2 / d2));
+    sin_b = nd->r * inv_d, cos_b = sqrtf(1.0f - sin_b * sin_b);
     if (cos_x < cos_b) cos_x = cos_x * cos_b + sin_x * sin_b;
     else cos_x = 1.0f;
     if (cos_x < -CONE_MARGIN) return 0.0f;   /* theta' > pi/2: every emitter below shows p its back */
-    return nd->power * fmaxf(cos_x, CONE_MARGIN) / d2;
+    return nd->power * (cos_x > CONE_MARGIN ? cos_x : CONE_MARGIN) / d2;
 }
+
+float light_node_importance(const light_node *nd, vec3 p) { return importance(nd, p); }
 
 double light_tree_first_prob(const light_tree *t, int k, vec3 p)
 {
     const light_node *nd = &t->node[k];
-    double i1 = light_node_importance(nd + 1, p), i2 = light_node_importance(&t->node[nd->right], p);
+    double i1 = importance(nd + 1, p), i2 = importance(&t->node[nd->right], p);
     /* neither child can light p: any choice gives 0, but it must have a probability */
     return i1 + i2 > 0.0 ? i1 / (i1 + i2) : 0.5;
 }
@@ -96,7 +101,7 @@ static void bound_node(const builder *b, int lo, int hi, light_node *nd)
     }
     h = v3_scale(v3_sub(bmax, bmin), 0.5f);
     nd->c = v3_scale(v3_add(bmin, bmax), 0.5f);
-    nd->r2 = v3_dot(h, h) * (1.0f + 1e-6f);   /* the rounding of c and of r2 must not shrink it */
+    nd->r = v3_length(h) * (1.0f + 1e-6f);   /* the rounding of c and of r must not shrink it */
     nd->power = (float)power;
     len = sqrt(dv_dot(sum, sum));
     /* the cone's axis: the mean normal; its half-angle: the widest normal from it */

@@ -15,7 +15,7 @@ struct emitter;   /* tracer/light.h */
 
 typedef struct {
     vec3 c;               /* centre of the emitters' bounding box */
-    float r2;             /* squared radius of the sphere about c that holds the box */
+    float r;              /* radius of the sphere about c that holds the box */
     vec3 axis;            /* every emitter normal below is within theta_o of axis */
     float cos_o, sin_o;   /* of theta_o (pi: any direction) */
     float power;          /* sum of area x luminance(Le) below */

@@ -60,7 +60,7 @@ LOAD_END=$(cut -d' ' -f1-3 /proc/loadavg)
 {
     echo "# Many lights: MSE x time, scenes/many-lights, $SIZE, $SEC s per render, $THREADS threads"
     echo
-    echo "$(date -u '+%Y-%m-%d %H:%M UTC'), pathlab $("$PATHLAB" --version | head -1), $ROUNDS rounds, reference $REF_FLAGS;"
+    echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $("$PATHLAB" --version | head -1), $ROUNDS rounds, reference $REF_FLAGS;"
     echo "load average $LOAD_START at the start, $LOAD_END at the end."
     echo
     echo "| --light | round | spp | seconds | MSE | MSE x time | / power's |"

@@ -10,7 +10,7 @@
 # for each of its families (per pixel, Sidak over the 1296 pixel-channels, 99.75% must pass; the 36
 # blocks of 6x6 pixels, Sidak; the whole image), with --precision 0.02: the whole-image test must be
 # able to see a 2% error. Measured when it was written: tree 4096 spp against power 8192, image
-# |z| 1.33 and 1.65, tolerance 1.1% of the mean. A pdf that skips the last level of the tree (each
+# |z| 1.64 and 2.02, tolerance 1.1% of the mean. A pdf that skips the last level of the tree (each
 # emitter's probability off by its last choice) gave a 3.2% bias with mis-balance, image |z| 10.8; a
 # descent that does not rescale u0, a 15-20% bias, |z| 122 and 141: each FAILs.
 . "$(dirname "$0")/lib.sh"

@@ -19,6 +19,23 @@ static float choice_weight(const emitter *e, light_strategy strategy)
     }
 }
 
+/* The tree's view of the emitters: box, normal, power (the power strategy's weight) */
+static int build_tree(light_set *ls)
+{
+    light_bounds *b = malloc(sizeof(light_bounds) * (size_t)ls->n);
+    int i, rc;
+    if (!b) return 1;
+    for (i = 0; i < ls->n; i++) {
+        const emitter *e = &ls->e[i];
+        vec3 q1 = v3_add(e->a, e->e1), q2 = v3_add(e->a, e->e2);
+        b[i].lo = v3_min(e->a, v3_min(q1, q2)), b[i].hi = v3_max(e->a, v3_max(q1, q2));
+        b[i].n = e->n, b[i].power = choice_weight(e, LIGHT_POWER);
+    }
+    rc = light_tree_build(&ls->tree, b, ls->n);
+    free(b);
+    return rc;
+}
+
 static int build_cdf(light_set *ls, light_strategy strategy)
 {
     double sum = 0.0, acc = 0.0;
@@ -68,7 +85,7 @@ int light_build(light_set *ls, const mesh *m, const vec3 *Ng, const float *area)
     if (ls->n == 0) return 0;
     for (strategy = 0; strategy <= LIGHT_POWER; strategy++)
         if (build_cdf(ls, (light_strategy)strategy)) return 1;
-    return light_tree_build(&ls->tree, ls->e, ls->n);
+    return build_tree(ls);
 }
 
 void light_free(light_set *ls)

@@ -25,7 +25,7 @@ typedef enum { LIGHT_AREA, LIGHT_TRIANGLE, LIGHT_POWER, LIGHT_SOLID_ANGLE, LIGHT
 /* Their names on the command line (--light), in enum order, NULL-terminated. */
 extern const char *const LIGHT_STRATEGY_NAMES[];
 
-typedef struct emitter { vec3 a, e1, e2, n, Le; float area; int tri; } emitter;   /* corners a, a+e1, a+e2 */
+typedef struct { vec3 a, e1, e2, n, Le; float area; int tri; } emitter;   /* corners a, a+e1, a+e2 */
 
 typedef struct {
     emitter *e;

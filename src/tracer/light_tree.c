@@ -1,7 +1,6 @@
 /* light_tree.c — the light tree of light_tree.h: its build (bounds, normal cones, powers, median
  * splits) and the descent from p, whose probabilities the pdf recomputes along an emitter's path. */
 #include "tracer/light_tree.h"
-#include "tracer/light.h"
 #include "math/dvec.h"
 #include <assert.h>
 #include <float.h>
@@ -79,9 +78,9 @@ double light_tree_prob(const light_tree *t, int i, vec3 p)
 
 typedef struct {
     light_tree *t;
-    const emitter *e;
+    const light_bounds *e;
     int *order;       /* emitter indices, reordered by the splits */
-    vec3 *centroid;
+    vec3 *centroid;   /* of each emitter's box */
     int next;         /* the next free node */
 } builder;
 
@@ -93,11 +92,10 @@ static void bound_node(const builder *b, int lo, int hi, light_node *nd)
     double power = 0.0, cos_o = 1.0, len;
     int j;
     for (j = lo; j < hi; j++) {
-        const emitter *e = &b->e[b->order[j]];
-        vec3 q1 = v3_add(e->a, e->e1), q2 = v3_add(e->a, e->e2);
-        bmin = v3_min(bmin, v3_min(e->a, v3_min(q1, q2))), bmax = v3_max(bmax, v3_max(e->a, v3_max(q1, q2)));
+        const light_bounds *e = &b->e[b->order[j]];
+        bmin = v3_min(bmin, e->lo), bmax = v3_max(bmax, e->hi);
         sum = dv_lin(sum, 1.0, dv_of(e->n), 1.0);
-        power += e->area * fmax(luminance(e->Le), 0.0);
+        power += e->power;
     }
     h = v3_scale(v3_sub(bmax, bmin), 0.5f);
     nd->c = v3_scale(v3_add(bmin, bmax), 0.5f);
@@ -164,7 +162,7 @@ static void build_node(builder *b, int lo, int hi, uint64_t path, int depth)
     build_node(b, mid, hi, path | (uint64_t)1 << depth, depth + 1);
 }
 
-int light_tree_build(light_tree *t, const emitter *e, int n)
+int light_tree_build(light_tree *t, const light_bounds *e, int n)
 {
     builder b;
     int i, ok;
@@ -180,7 +178,7 @@ int light_tree_build(light_tree *t, const emitter *e, int n)
         b.t = t, b.e = e, b.next = 0;
         for (i = 0; i < n; i++) {
             b.order[i] = i;
-            b.centroid[i] = v3_add(e[i].a, v3_scale(v3_add(e[i].e1, e[i].e2), 1.0f / 3.0f));
+            b.centroid[i] = v3_scale(v3_add(e[i].lo, e[i].hi), 0.5f);
         }
         build_node(&b, 0, n, 0, 0);   /* median splits: depth <= ceil(log2 n) <= 31 < 64 path bits */
     }

@@ -11,7 +11,9 @@
 #include <stdint.h>
 #include "math/vec.h"
 
-struct emitter;   /* tracer/light.h */
+/* What the tree knows of an emitter: its bounding box, its front normal, its power (area x
+ * luminance of Le), given by light.c. */
+typedef struct { vec3 lo, hi, n; float power; } light_bounds;
 
 typedef struct {
     vec3 c;               /* centre of the emitters' bounding box */
@@ -30,9 +32,9 @@ typedef struct {
     unsigned char *depth; /* per emitter: the steps from the root to its leaf */
 } light_tree;
 
-/* Builds the tree over emitters e[0..n-1] (n > 0), splitting at the median: O(n log n), depth at
- * most ceil(log2 n). 0 on success. */
-int light_tree_build(light_tree *t, const struct emitter *e, int n);
+/* Builds the tree over the emitters b[0..n-1] (n > 0), splitting at the median: O(n log n), depth
+ * at most ceil(log2 n). 0 on success. */
+int light_tree_build(light_tree *t, const light_bounds *b, int n);
 void light_tree_free(light_tree *t);
 /* What the emitters below nd can send toward p, bounded above (0 only if none faces p). */
 float light_node_importance(const light_node *nd, vec3 p);

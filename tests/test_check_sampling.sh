@@ -30,7 +30,7 @@ missing=""
 for r in uniform_hemisphere cosine_hemisphere "cos_power m=1 " "cos_power m=10000" "brdf_sample diffuse" \
          "brdf_sample glossy Ns=10, wo 89 deg" "brdf_sample mixed Kd .5 Ks .3 Ns=10, wo 60 deg" sample_uniform_triangle \
          "light choice area" "light choice power" "light choice triangle" "light_sample_point uniform on its triangle" \
-         "solid-angle, Omega = 0.5 sr" "floor 3e-4" "ceiling 6" "by area"; do
+         "solid-angle, Omega = 0.5 sr" "floor 3e-4" "ceiling 6" "by area" "tree, 40 emitters, far" "tree points" "tree joint"; do
     grep -qF -- "$r" "$TMP/rows" || missing="$missing '$r'"
 done
 if [ -z "$missing" ]; then pass "a row for every sampling routine"; else fail "no row for:$missing"; fi

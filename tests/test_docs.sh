@@ -197,7 +197,7 @@ if [ -z "${DOCS_ROOT:-}" ]; then
             link) echo "[the log](../bench/no_such_log.md)" >> "$R/docs/sampler.md" ;;
             arrow) sed -i -E 's/^(\| `tracer\/` .*\| )`sys\/` /\1`sys\/` `render\/` /' "$R/docs/architecture.md" ;;
             where) sed -i 's/`survives_roulette()`/`survives_the_roulette()`/' "$R/docs/architecture.md" ;;
-            values) sed -i 's/\\|solid-angle`/`/' "$R/README.md" ;;
+            values) sed -i 's/\\|tree`/`/' "$R/README.md" ;;
             section) echo "See docs/sampler.md, \"Which sampler to pick\"." >> "$R/docs/guide.md" ;;
         esac
         if DOCS_ONLY=$only DOCS_ROOT="$R" bash "$0" 2>&1 | grep '^FAIL' | grep -q "$want"; then pass "a planted violation ($plant) is caught"

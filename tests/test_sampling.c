@@ -253,6 +253,30 @@ static void test_light_build(void)
     light_scene_free(&s);
 }
 
+/* The tree over many emitters (all in z = 0, facing +z): its depth, and from points above (every
+ * emitter faces them: each must have a probability > 0) and below (none does), the probabilities of
+ * light_pdf_area x area sum to 1 */
+static void test_tree_many(const light_set *ls)
+{
+    static const float from[4][3] = {{3, 2, 0.5f}, {10, 3, 0.01f}, {-50, 80, 40}, {5, 5, -1}};
+    int i, k, depth = 0;
+    for (i = 0; i < ls->n; i++) depth = ls->tree.depth[i] > depth ? ls->tree.depth[i] : depth;
+    check(depth == (int)ceil(log2((double)ls->n)), "tree over 300000 emitters: depth ceil(log2 n)", "depth %d", depth);
+    for (k = 0; k < 4; k++) {
+        vec3 p = v3(from[k][0], from[k][1], from[k][2]);
+        double sum = 0.0;
+        long zero = 0;
+        char name[160];
+        for (i = 0; i < ls->n; i++) {
+            double pr = (double)light_pdf_area(ls, LIGHT_TREE, i, p, p) * ls->e[i].area;
+            sum += pr, zero += !(pr > 0.0);
+        }
+        snprintf(name, sizeof name, "tree, 300000 emitters from (%g, %g, %g): probabilities sum to 1, %s", p.x, p.y, p.z,
+                 p.z > 0 ? "none 0" : "below them");
+        check(fabs(sum - 1.0) < 1e-4 && (p.z < 0 || zero == 0), name, "sum %.7f, %ld emitters of probability 0", sum, zero);
+    }
+}
+
 static void test_many_emitters(void)
 {
     enum { n = 300000 };
@@ -301,6 +325,7 @@ static void test_many_emitters(void)
                   "worst gap %.2g of the allowed 2^-32/p + 1e-5 (= %.2g there); sum of pdf x area %.7f", worst,
                   worst_allowed, sum_p);
         }
+        test_tree_many(&ls);
         light_free(&ls);
     }
     free(P), free(Ng), free(area), free(tri), free(tri_mat);

@@ -76,6 +76,37 @@ static void add_brdfs(sampling_case *cases, int *n, int max)
         }
 }
 
+/* light_sample_point_joint in the form of the checks: u1 unused, the point's first coordinate is
+ * what the choice left of u0 (for tree: u0 rescaled at every node of the descent) */
+static void joint_sample(const light_set *ls, light_strategy st, vec3 p, double u0, float u1, float u2, light_sample *out)
+{
+    (void)u1;
+    light_sample_point_joint(ls, st, p, u0, u2, out);
+}
+
+/* tree: the choice among the 40 emitters of LIGHT_SCENE_MANY (some face p, some do not) from inside
+ * the cluster, from its corner and from far away; the point, from plain and joint sampling */
+static void add_tree(sampling_case *cases, int *n, int max)
+{
+    static const struct { const char *name; float p[3]; } from[] = {
+        {"tree, 40 emitters, near (0.3, -0.2, 0.1)", {0.3f, -0.2f, 0.1f}},
+        {"tree, 40 emitters, corner (2.5, 2.5, 2.5)", {2.5f, 2.5f, 2.5f}},
+        {"tree, 40 emitters, far (30, 20, -40)", {30.0f, 20.0f, -40.0f}}};
+    sampling_case *c;
+    int i;
+    for (i = 0; i < 3; i++)
+        if ((c = add(cases, n, max, CASE_LIGHT_CHOICE, from[i].name)))
+            c->light.st = LIGHT_TREE, c->light.scene = LIGHT_SCENE_MANY, c->light.p = v3(from[i].p[0], from[i].p[1], from[i].p[2]);
+    if ((c = add(cases, n, max, CASE_LIGHT_CHOICE, "tree, 5 emitters seen from (1, 1, 2)")))
+        c->light.st = LIGHT_TREE, c->light.p = v3(1, 1, 2);
+    if ((c = add(cases, n, max, CASE_LIGHT_POINT, "tree points, 40 emitters, (0.5, 0.5, 0.5)")))
+        c->light.st = LIGHT_TREE, c->light.scene = LIGHT_SCENE_MANY, c->light.grid = 4, c->light.p = v3(0.5f, 0.5f, 0.5f);
+    if ((c = add(cases, n, max, CASE_LIGHT_POINT, "tree joint, 40 emitters, (0.3, -0.2, 0.1)"))) {
+        c->light.st = LIGHT_TREE, c->light.scene = LIGHT_SCENE_MANY, c->light.grid = 4, c->light.p = v3(0.3f, -0.2f, 0.1f);
+        c->light.sample = joint_sample;
+    }
+}
+
 static void add_lights(sampling_case *cases, int *n, int max)
 {
     /* points p from which the triangle of LIGHT_SCENE_ONE subtends the solid angle named */
@@ -101,6 +132,7 @@ static void add_lights(sampling_case *cases, int *n, int max)
             c->light.st = LIGHT_SOLID_ANGLE, c->light.grid = 16, c->light.scene = LIGHT_SCENE_ONE;
             c->light.p = v3(one[i].p[0], one[i].p[1], one[i].p[2]);
         }
+    add_tree(cases, n, max);
 }
 
 int check_sampling_cases(sampling_case *cases, int max)

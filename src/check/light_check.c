@@ -35,6 +35,23 @@ static double choice_weight(const light_scene *s, light_strategy st, int i)
 
 static dvec corner(const light_scene *s, int i, int k) { return dv_of(s->P[s->tri[3 * s->ls.e[i].tri + k]]); }
 
+/* The tree's choice of every emitter from p, by walking the whole tree (not light.c's walk down one
+ * emitter's path): each node passes its probability to its children in proportion to their
+ * importances, half each when both are 0. */
+static void tree_choices(const light_tree *t, int k, vec3 p, double prob, double *choice)
+{
+    const light_node *nd = &t->node[k];
+    double i1, i2, q;
+    if (nd->right < 0) {
+        choice[nd->emitter] = prob;
+        return;
+    }
+    i1 = light_node_importance(nd + 1, p), i2 = light_node_importance(&t->node[nd->right], p);
+    q = i1 + i2 > 0.0 ? i1 / (i1 + i2) : 0.5;
+    tree_choices(t, k + 1, p, prob * q, choice);
+    tree_choices(t, nd->right, p, prob * (1.0 - q), choice);
+}
+
 /* What the checks know of emitter i seen from p, computed once. */
 typedef struct {
     const light_scene *s;
@@ -47,12 +64,14 @@ typedef struct {
 
 static void emitters_seen(const light_scene *s, const light_routine *l, emitter_ctx *e)
 {
-    double sum = 0.0;
+    double sum = 0.0, tree[LIGHT_SCENE_MAX];
     int i, k;
     for (i = 0; i < s->ls.n; i++) sum += choice_weight(s, l->st, i);
+    if (l->st == LIGHT_TREE) tree_choices(&s->ls.tree, 0, l->p, 1.0, tree);
     for (i = 0; i < s->ls.n; i++) {
         memset(&e[i], 0, sizeof e[i]);
-        e[i].s = s, e[i].l = l, e[i].i = i, e[i].choice = choice_weight(s, l->st, i) / sum;
+        e[i].s = s, e[i].l = l, e[i].i = i;
+        e[i].choice = l->st == LIGHT_TREE ? tree[i] : choice_weight(s, l->st, i) / sum;
         if (l->st != LIGHT_SOLID_ANGLE) continue;
         {
             dvec c[3];
@@ -172,7 +191,9 @@ static int begin(light_scene *s, const light_routine *l, emitter_ctx *e, samplin
     for (i = 0; i < s->ls.n; i++) {   /* the pdf at each centroid, in case an emitter is never drawn */
         dvec g = dv_lin(dv_lin(corner(s, i, 0), 1.0, corner(s, i, 1), 1.0), 1.0 / 3.0, corner(s, i, 2), 1.0 / 3.0);
         double fn = l->pdf(&s->ls, l->st, i, l->p, fv_of(g)), want = pdf_formula(&e[i], dv_of(fv_of(g)));
-        r->formula_gap = fmax(r->formula_gap, fabs(fn - want) / want);
+        double facing = dv_dot(dv_of(s->Ng[s->ls.e[i].tri]), dv_lin(dv_of(l->p), 1.0, g, -1.0));
+        r->formula_gap = fmax(r->formula_gap, fn == want ? 0.0 : fabs(fn - want) / want);
+        if (facing > 0.0 && !(fn > 0.0)) r->outside++;   /* it lights p: a pdf of 0 there is a bias */
     }
     return 0;
 }

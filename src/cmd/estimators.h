@@ -2,7 +2,7 @@
  * - an estimator is a list of render flags and names, joined with '+' or spaces: "light+solid-angle",
  *   "mis-power --rr off". Each name of a strategy table stands for its flag: light brdf mis-balance
  *   mis-power = --direct X; uniform cosine dir-brdf = --dir X (dir-brdf, as brdf is --direct brdf);
- *   area triangle power solid-angle = --light X;
+ *   area triangle power solid-angle tree = --light X;
  * - "LABEL=FLAGS" names an estimator; otherwise its text is its label;
  * - estimators are separated by commas, except a comma followed by a number, which stays inside a
  *   value (--eye 0,1,5). */

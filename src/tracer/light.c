@@ -1,12 +1,13 @@
 /* light.c — emitters and the choice of a point s on them: first an emitter (a discrete
- * probability), then a point on it (uniform per unit area, or per steradian for solid-angle). */
+ * probability: a cdf, or for tree a descent of light_tree.c), then a point on it (uniform per unit
+ * area, or per steradian for solid-angle). */
 #include "tracer/light.h"
 #include "tracer/sampling.h"
 #include <assert.h>
 #include <stdlib.h>
 #include "math/dvec.h"
 
-const char *const LIGHT_STRATEGY_NAMES[] = {"area", "triangle", "power", "solid-angle", 0};
+const char *const LIGHT_STRATEGY_NAMES[] = {"area", "triangle", "power", "solid-angle", "tree", 0};
 
 /* Weight of emitter i in the discrete choice of each strategy (before normalisation). */
 static float choice_weight(const emitter *e, light_strategy strategy)
@@ -16,6 +17,23 @@ static float choice_weight(const emitter *e, light_strategy strategy)
     case LIGHT_TRIANGLE: return 1.0f;
     default: return e->area * fmaxf(luminance(e->Le), 0.0f);
     }
+}
+
+/* The tree's view of the emitters: box, normal, power (the power strategy's weight) */
+static int build_tree(light_set *ls)
+{
+    light_bounds *b = malloc(sizeof(light_bounds) * (size_t)ls->n);
+    int i, rc;
+    if (!b) return 1;
+    for (i = 0; i < ls->n; i++) {
+        const emitter *e = &ls->e[i];
+        vec3 q1 = v3_add(e->a, e->e1), q2 = v3_add(e->a, e->e2);
+        b[i].lo = v3_min(e->a, v3_min(q1, q2)), b[i].hi = v3_max(e->a, v3_max(q1, q2));
+        b[i].n = e->n, b[i].power = choice_weight(e, LIGHT_POWER);
+    }
+    rc = light_tree_build(&ls->tree, b, ls->n);
+    free(b);
+    return rc;
 }
 
 static int build_cdf(light_set *ls, light_strategy strategy)
@@ -45,6 +63,7 @@ int light_build(light_set *ls, const mesh *m, const vec3 *Ng, const float *area)
     ls->e = malloc(sizeof(emitter) * (size_t)(m->ntris > 0 ? m->ntris : 1));
     ls->emitter_of_tri = malloc(sizeof(int) * (size_t)(m->ntris > 0 ? m->ntris : 1));
     for (strategy = 0; strategy < LIGHT_NSTRATEGIES; strategy++) ls->cdf[strategy] = NULL;
+    ls->tree.node = NULL, ls->tree.path = NULL, ls->tree.depth = NULL, ls->tree.nnodes = 0;
     if (!ls->e || !ls->emitter_of_tri) return 1;
     for (i = 0; i < m->ntris; i++) {
         vec3 Ke = m->mats[m->tri_mat[i]].Ke;
@@ -66,7 +85,7 @@ int light_build(light_set *ls, const mesh *m, const vec3 *Ng, const float *area)
     if (ls->n == 0) return 0;
     for (strategy = 0; strategy <= LIGHT_POWER; strategy++)
         if (build_cdf(ls, (light_strategy)strategy)) return 1;
-    return 0;
+    return build_tree(ls);
 }
 
 void light_free(light_set *ls)
@@ -75,6 +94,7 @@ void light_free(light_set *ls)
     free(ls->e);
     free(ls->emitter_of_tri);
     for (strategy = 0; strategy < LIGHT_NSTRATEGIES; strategy++) free(ls->cdf[strategy]);
+    light_tree_free(&ls->tree);
 }
 
 /* Smallest i with u < cdf[i]: binary search. */
@@ -88,11 +108,12 @@ static int pick(const double *cdf, int n, double u)
     return lo;
 }
 
-/* The probability of choosing emitter i (before the point on it). */
-static float choice_prob(const light_set *ls, light_strategy strategy, int i)
+/* The probability of choosing emitter i from p (before the point on it). */
+static float choice_prob(const light_set *ls, light_strategy strategy, int i, vec3 p)
 {
     const double *cdf = ls->cdf[choice_of(strategy)];
     assert(0 <= i && i < ls->n);
+    if (strategy == LIGHT_TREE) return (float)light_tree_prob(&ls->tree, i, p);
     return (float)(cdf[i] - (i > 0 ? cdf[i - 1] : 0.0));
 }
 
@@ -154,15 +175,16 @@ float light_pdf_area(const light_set *ls, light_strategy strategy, int i, vec3 p
         if (solid_angle_usable(&t)) {
             vec3 d = v3_sub(s, p);
             float dist2 = v3_dot(d, d), cos_s = fabsf(v3_dot(e->n, d)) / sqrtf(dist2);
-            float pdf_sa = choice_prob(ls, strategy, i) / (float)t.omega;   /* uniform over Omega */
+            float pdf_sa = choice_prob(ls, strategy, i, p) / (float)t.omega;   /* uniform over Omega */
             return pdf_solid_angle_to_area(pdf_sa, dist2, cos_s);
         }
     }
-    return choice_prob(ls, strategy, i) / e->area;
+    return choice_prob(ls, strategy, i, p) / e->area;
 }
 
-/* The point on emitter i (chosen already) from u1, u2. */
-static void sample_on_emitter(const light_set *ls, light_strategy strategy, int i, vec3 p, float u1, float u2, light_sample *out)
+/* The point on emitter i (chosen already) from u1, u2; tree_choice: for tree, the probability its
+ * descent gave i (light_pdf_area would descend again). */
+static void sample_on_emitter(const light_set *ls, light_strategy strategy, int i, float tree_choice, vec3 p, float u1, float u2, light_sample *out)
 {
     const emitter *e = &ls->e[i];
     float b1, b2;
@@ -182,13 +204,21 @@ static void sample_on_emitter(const light_set *ls, light_strategy strategy, int 
     }
     sample_uniform_triangle(u1, u2, &b1, &b2);
     out->pos = v3_add(e->a, v3_add(v3_scale(e->e1, b1), v3_scale(e->e2, b2)));
-    out->pdf_area = light_pdf_area(ls, strategy, i, p, out->pos);
+    out->pdf_area = strategy == LIGHT_TREE ? tree_choice / e->area : light_pdf_area(ls, strategy, i, p, out->pos);
 }
 
 void light_sample_point(const light_set *ls, light_strategy strategy, vec3 p, double u0, float u1, float u2, light_sample *out)
 {
+    double prob;
+    int i;
     assert(ls->n > 0);   /* callers sample lights only in a scene that has some */
-    sample_on_emitter(ls, strategy, pick(ls->cdf[choice_of(strategy)], ls->n, u0), p, u1, u2, out);
+    if (strategy == LIGHT_TREE) {
+        i = light_tree_pick(&ls->tree, p, &u0, &prob);
+        sample_on_emitter(ls, strategy, i, (float)prob, p, u1, u2, out);
+        return;
+    }
+    i = pick(ls->cdf[choice_of(strategy)], ls->n, u0);
+    sample_on_emitter(ls, strategy, i, 0.0f, p, u1, u2, out);
 }
 
 void light_sample_point_joint(const light_set *ls, light_strategy strategy, vec3 p, double u0, float u2, light_sample *out)
@@ -198,12 +228,17 @@ void light_sample_point_joint(const light_set *ls, light_strategy strategy, vec3
     double lo, share, r;
     float u1;
     assert(ls->n > 0);
-    i = pick(cdf, ls->n, u0);
-    lo = i > 0 ? cdf[i - 1] : 0.0;
-    share = cdf[i] - lo;
-    r = share > 0.0 ? (u0 - lo) / share : 0.0;
+    if (strategy == LIGHT_TREE) {   /* the descent rescales u0 at each node: r is what is left */
+        r = u0;
+        i = light_tree_pick(&ls->tree, p, &r, &share);
+    } else {
+        i = pick(cdf, ls->n, u0);
+        lo = i > 0 ? cdf[i - 1] : 0.0;
+        share = cdf[i] - lo;
+        r = share > 0.0 ? (u0 - lo) / share : 0.0;
+    }
     u1 = (float)r;
     if (!(u1 < 1.0f)) u1 = 0x1.fffffep-1f;   /* r rounded up to 1, or past it by the cdf's rounding */
     if (!(u1 >= 0.0f)) u1 = 0.0f;
-    sample_on_emitter(ls, strategy, i, p, u1, u2, out);
+    sample_on_emitter(ls, strategy, i, (float)share, p, u1, u2, out);
 }

@@ -4,7 +4,9 @@
  * triangle chosen uniformly, then a uniform point on it; power = a triangle chosen in proportion to
  * area x luminance(Ke), then a uniform point on it; solid-angle = a triangle chosen as for power,
  * then a direction uniform over the spherical triangle it subtends from the shading point p
- * (Arvo 1995), so that its pdf is 1/Omega per steradian.
+ * (Arvo 1995), so that its pdf is 1/Omega per steradian; tree = a triangle chosen by descending a
+ * tree of the emitters, each node weighed by what it can send toward p (light_tree.h), then a
+ * uniform point on it: the emitters that do not matter at p are seldom or never chosen.
  * Measures: pdf1 is returned per unit area (pdf_area) whatever the strategy. Seen from p at
  * distance d, with theta_s the angle at s between its normal and the direction to p, the density
  * per steradian is pdf_sa = pdf_area d^2 / cos(theta_s) (pdf_area_to_solid_angle), and back,
@@ -12,13 +14,14 @@
 #ifndef PATHLAB_LIGHT_H
 #define PATHLAB_LIGHT_H
 #include "scene/mesh.h"
+#include "tracer/light_tree.h"
 
 /* solid-angle uses Arvo's map only for spherical triangles of Omega in (MIN, MAX) steradians, where
  * its trigonometry is accurate; outside, that triangle is sampled uniformly by area. */
 #define LIGHT_SOLID_ANGLE_MIN 3e-4
 #define LIGHT_SOLID_ANGLE_MAX 6.0
 
-typedef enum { LIGHT_AREA, LIGHT_TRIANGLE, LIGHT_POWER, LIGHT_SOLID_ANGLE, LIGHT_NSTRATEGIES } light_strategy;
+typedef enum { LIGHT_AREA, LIGHT_TRIANGLE, LIGHT_POWER, LIGHT_SOLID_ANGLE, LIGHT_TREE, LIGHT_NSTRATEGIES } light_strategy;
 /* Their names on the command line (--light), in enum order, NULL-terminated. */
 extern const char *const LIGHT_STRATEGY_NAMES[];
 
@@ -31,6 +34,7 @@ typedef struct {
     double *cdf[LIGHT_NSTRATEGIES];  /* cumulative probability of choosing emitters 0..i (double:
                                       * a float cdf would quantise the probabilities to 2^-24) */
     int *emitter_of_tri;             /* mesh triangle -> emitter index, or -1 */
+    light_tree tree;                 /* tree's (built when there are emitters) */
 } light_set;
 
 typedef struct {

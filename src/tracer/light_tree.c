@@ -103,7 +103,7 @@ static void bound_node(const builder *b, int lo, int hi, light_node *nd)
     nd->power = (float)power;
     len = sqrt(dv_dot(sum, sum));
     /* the cone's axis: the mean normal; its half-angle: the widest normal from it */
-    axis = len > 1e-6 * (hi - lo) ? dv_lin(sum, 1.0 / len, sum, 0.0) : dv(0, 0, 1);
+    axis = len > 1e-6 * (hi - lo) ? dv_normalize(sum) : dv(0, 0, 1);
     if (len <= 1e-6 * (hi - lo)) cos_o = -1.0;   /* normals that cancel out: any direction */
     for (j = lo; j < hi && cos_o > -1.0; j++) cos_o = fmin(cos_o, dv_dot(axis, dv_of(b->e[b->order[j]].n)));
     nd->axis = fv_of(axis);

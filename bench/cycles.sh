@@ -38,7 +38,10 @@
 #   mcguire-CornellBox-Empty-RG, with CornellBox-Original's camera; NAME adds scenes/NAME.obj with
 #   scenes/NAME.view, e.g. cornell-glossy with CYCLES_REF=tools/cycles_glossy.py), OUT (build-native/bench if it exists, else
 #   build/bench), REF_DIR (${XDG_CACHE_HOME:-~/.cache}/pathlab-bench-cycles: cached references),
-#   CYCLES_REF (../shared/tools/cycles/cycles_ref.py), MCGUIRE (../shared/data/cornell-mcguire).
+#   CYCLES_REF (../shared/tools/cycles/cycles_ref.py), MCGUIRE (../shared/data/cornell-mcguire),
+#   CYCLES_PATTERN (Cycles' sampling pattern for every Cycles render, set through tools/cycles_pattern.py;
+#   empty: Blender's default, progressive multi-jitter in 3.4, which renders scenes/many-lights 0.4 % to
+#   1.7 % too bright; SOBOL agrees with pathlab there: bench/log.md, "the 0.4 % explained").
 set -eu
 DOC=0
 [ "${1:-}" = --doc ] && { DOC=1; shift; }
@@ -52,6 +55,7 @@ ROUNDS=${ROUNDS:-1} SCENES=${SCENES:-cornell mcguire}
 OUT=${OUT:-$( [ -d build-native ] && echo build-native/bench || echo build/bench )}
 REF_DIR=${REF_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/pathlab-bench-cycles}
 CYCLES_REF=${CYCLES_REF:-../shared/tools/cycles/cycles_ref.py}
+CYCLES_PATTERN=${CYCLES_PATTERN:-}
 MCGUIRE=${MCGUIRE:-../shared/data/cornell-mcguire}
 PY=/usr/bin/python3   # Debian's python3 (python3-openimageio), not a pyenv one
 HELP="$PY bench/cycles_images.py"
@@ -104,8 +108,11 @@ done
 
 cycles() {  # cycles SCENE SPP SEED OUT.exr: prints the CYCLES_DONE seconds
     # shellcheck disable=SC2086
-    blender -b --factory-startup --python "$CYCLES_REF" -- "${OBJ[$1]}" ${CAM[$1]} --size "$SIZE" \
-        --spp "$2" --threads "$THREADS" --seed "$3" --out "$4" > "$T/cycles.log" 2>&1 || { cat "$T/cycles.log" >&2; die "blender failed"; }
+    CYCLES_PATTERN=$CYCLES_PATTERN blender -b --factory-startup --python tools/cycles_pattern.py --python "$CYCLES_REF" -- \
+        "${OBJ[$1]}" ${CAM[$1]} --size "$SIZE" --spp "$2" --threads "$THREADS" --seed "$3" --out "$4" > "$T/cycles.log" 2>&1 \
+        || { cat "$T/cycles.log" >&2; die "blender failed"; }
+    # the pattern asked for must be the one the render used (the handler ran, the name was valid)
+    grep -q "^CYCLES_PATTERN ${CYCLES_PATTERN:-[A-Z_]*}\$" "$T/cycles.log" || { cat "$T/cycles.log" >&2; die "Cycles did not render with sampling pattern '${CYCLES_PATTERN:-its default}'"; }
     sed -n 's/^CYCLES_DONE \([0-9.]*\) s/\1/p' "$T/cycles.log" | tail -n 1 | grep . || { cat "$T/cycles.log" >&2; die "no CYCLES_DONE"; }
 }
 pathlab() {  # pathlab BIN "FLAGS" SCENE SEED OUT.pfm ARGS...: prints "seconds spp" from its stats line
@@ -123,13 +130,14 @@ declare -A CREF PREF CVAR PVAR
 half=$((REF_SPP / 2))
 for sc in $SCENES; do
     key="$(cat "$T/$sc"/* | cksum | cut -d' ' -f1) ${CAM[$sc]} $SIZE $REF_SPP $THREADS"
-    CREF[$sc]=$REF_DIR/cycles_${sc}_$REF_SPP.exr
-    want="$key blender $BLENDER_VERSION $(cksum < "$CYCLES_REF" | cut -d' ' -f1)"
+    CREF[$sc]=$REF_DIR/cycles_${sc}_$REF_SPP${CYCLES_PATTERN:+_$CYCLES_PATTERN}.exr
+    want="$key blender $BLENDER_VERSION $(cksum < "$CYCLES_REF" | cut -d' ' -f1) pattern ${CYCLES_PATTERN:-default}"
     if [ -f "${CREF[$sc]}" ] && [ "$(cat "${CREF[$sc]%.exr}.stamp" 2>/dev/null)" = "$want" ]; then
         echo "Cycles reference ${CREF[$sc]}: reused"
     else
         echo "Cycles reference ${CREF[$sc]}: rendering 2 x $half spp ..."
-        for s in 101 102; do echo "  seed $s: $(cycles "$sc" $half $s "$T/ref_$s.exr") s"; done
+        # (a failure inside $(...) ends only that subshell: each result is assigned first, so that it ends the script)
+        for s in 101 102; do secs=$(cycles "$sc" $half $s "$T/ref_$s.exr"); echo "  seed $s: $secs s"; done
         $HELP avg "$T/ref_101.exr" "$T/ref_102.exr" "${CREF[$sc]}" > "${CREF[$sc]%.exr}.var"
         echo "$want" > "${CREF[$sc]%.exr}.stamp"
     fi
@@ -139,7 +147,7 @@ for sc in $SCENES; do
         echo "pathlab reference ${PREF[$sc]}: reused"
     else
         echo "pathlab reference ${PREF[$sc]}: rendering 2 x $half spp with $REF_PATHLAB $REF_PATHLAB_FLAGS ..."
-        for s in 101 102; do echo "  seed $s: $(pathlab "$REF_PATHLAB" "$REF_PATHLAB_FLAGS" "$sc" $s "$T/ref_$s.pfm" --spp $half)"; done
+        for s in 101 102; do got=$(pathlab "$REF_PATHLAB" "$REF_PATHLAB_FLAGS" "$sc" $s "$T/ref_$s.pfm" --spp $half); echo "  seed $s: $got"; done
         $HELP avg "$T/ref_101.pfm" "$T/ref_102.pfm" "${PREF[$sc]}" > "${PREF[$sc]%.exr}.var"
         echo "$want" > "${PREF[$sc]%.exr}.stamp"
     fi
@@ -160,7 +168,8 @@ for r in $(seq 1 "$ROUNDS"); do
             echo "round $r, $sc, $lv spp: Cycles $t s, MSE $mc (Cycles ref) $mp (pathlab ref)"
             cp "$T/c.exr" "$OUT/cycles_img/${sc}_${lv}_cycles.exr"
             for i in "${!COL_BIN[@]}"; do
-                read -r pt pn <<< "$(pathlab "${COL_BIN[$i]}" "${COL_FLAGS[$i]}" "$sc" "$r" "$T/p.pfm" --time "$t")"
+                got=$(pathlab "${COL_BIN[$i]}" "${COL_FLAGS[$i]}" "$sc" "$r" "$T/p.pfm" --time "$t")
+                read -r pt pn <<< "$got"
                 read -r _ mc <<< "$($HELP mse "$T/p.pfm" "${CREF[$sc]}" "${CVAR[$sc]}")"
                 read -r _ mp <<< "$($HELP mse "$T/p.pfm" "${PREF[$sc]}" "${PVAR[$sc]}")"
                 printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$r" "$sc" "$lv" "$i" "$pt" "$pn" "$mc" "$mp" >> "$TSV"
@@ -183,7 +192,7 @@ CPU=$(lscpu 2>/dev/null | sed -n 's/^Model name:[[:space:]]*//p' | head -n 1)
     echo "Written by \`bench/cycles.sh --doc\` (\`make bench-cycles\`), which replaces this section when rerun; how it"
     echo "measures: the script's head. What the figures show: the next section."
     echo
-    echo "$DATE_START UTC, \`bench/cycles.sh\` ($((SEC_END - SEC_START)) s in all), ${CPU:-unknown CPU}, $(nproc) cores, Blender $BLENDER_VERSION."
+    echo "$DATE_START UTC, \`bench/cycles.sh\` ($((SEC_END - SEC_START)) s in all), ${CPU:-unknown CPU}, $(nproc) cores, Blender $BLENDER_VERSION, sampling pattern ${CYCLES_PATTERN:-the default of Blender}."
     echo "Load average (1, 5, 15 min): $LOAD_START at the start, $LOAD_RENDERS before the renders, $LOAD_END at the end;"
     echo "1-minute load after each level:$LOADS. $SIZE, $THREADS threads, $ROUNDS round(s) (seed = round)."
     echo "Each Cycles render (T = its CYCLES_DONE time) is followed at once by every pathlab column with \`--time T\`."

@@ -135,6 +135,9 @@ def render(sc, a):
     c.caustics_reflective = c.caustics_refractive = True; c.blur_glossy = 0
     c.pixel_filter_type = 'BOX'; c.filter_width = 1.0
     c.seed = a.seed
+    if os.environ.get('CYCLES_PATTERN'):   # as tools/cycles_pattern.py does for cycles_ref.py
+        c.sampling_pattern = os.environ['CYCLES_PATTERN']
+    print('CYCLES_PATTERN', c.sampling_pattern, flush=True)
     sc.render.threads_mode = 'FIXED'; sc.render.threads = a.threads
     sc.render.resolution_x, sc.render.resolution_y, sc.render.resolution_percentage = W, H, 100
     sc.view_settings.view_transform = 'Standard'; sc.view_settings.look = 'None'; sc.view_settings.exposure = 0; sc.view_settings.gamma = 1

@@ -211,7 +211,9 @@ static int agrees(const bvh *b, const soup *s, const ray *r, const char **why)
     if (!ib) return hb.tri == -1 || (*why = "tri not -1 on a miss", 0);
     if (hb.t != hf.t) { *why = "different t"; return 0; }
     if (!(hb.t > 0 && hb.t < r->tmax)) { *why = "t out of (0, tmax)"; return 0; }
-    /* ties: any triangle at the same t will do, with its own barycentrics */
+    /* ties: of the triangles at the same t, the smallest index, as brute force keeps it (the rule
+     * that makes the hit independent of the order of the visits, which differs between copies) */
+    if (hb.tri != hf.tri) { *why = "not the smallest index of the triangles at that t"; return 0; }
     if (!bvh_triangle_hit(corner(s, hb.tri, 0), corner(s, hb.tri, 1), corner(s, hb.tri, 2), r, &again) ||
         again.t != hb.t || again.u != hb.u || again.v != hb.v) { *why = "hit triangle does not give that t, u, v"; return 0; }
     return 1;

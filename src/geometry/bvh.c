@@ -22,8 +22,9 @@
  *     instructions of one loop the compiler vectorizes, and a block its 8 triangles likewise: that
  *     is what makes single rays fast without intrinsics, and the wide nodes make the tree shallow,
  *     which matters most for incoherent rays in big meshes.
- *     With AVX-512 the same tests are written with intrinsics, whose masks and compress
- *     instructions the compiler does not find (node_hits_v, block_hits_v in bvh_traverse.c).
+ *     With AVX-512 and AVX2 the same tests are written with intrinsics, whose masks, compress and
+ *     sorting network the compiler does not find (node_hits_v, block_hits_v, node_step_sorted in
+ *     bvh_traverse.c).
  *
  * The traversal lives in bvh_traverse.c, compiled once per instruction set on x86-64 (SSE2, AVX2 +
  * FMA, AVX-512): each tree gets the best copy the CPU runs (bvh_isa), and every copy finds the
@@ -31,7 +32,9 @@
  *
  * How it is traversed: one loop with an explicit stack. At a node, the children the ray enters are
  * sorted by entry distance: the nearest is visited next, the others pushed farthest first. Popped
- * nodes entered beyond the closest hit so far are skipped. Shadow rays skip the sorting.
+ * nodes entered beyond the closest hit so far are skipped. Shadow rays skip the sorting. The hit
+ * kept is the nearest, and of two at the same t the smaller triangle index, so it does not depend
+ * on the order in which children entered at equal distances are visited.
  *
  * Robustness: the triangle test is watertight (Woop, Benthin, Wald 2013) and the box test is
  * conservative (pbrt's 1 + 2 gamma(3) on exit distances, folded into the 1/d they use), so no ray slips between two triangles

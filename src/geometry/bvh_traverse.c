@@ -172,12 +172,25 @@ static inline unsigned block_hits_float(const tri_block *restrict blk, const ray
 #endif
 
 #ifdef BVH_INTRINSICS
-static inline lanes lane_row(const tri_block *blk, int corner, int axis) { return L_(load_ps)(blk->v[corner][axis]); }
-#endif
-
-#ifdef BVH_AVX512
 /* block_hits_float with intrinsics: the same operations in the same order (see node_hits_v), on
- * one vector of BVH_LEAF_MAX lanes (lanes, L_). */
+ * one vector of BVH_LEAF_MAX lanes (lanes, L_). A comparison gives a mask register with AVX-512;
+ * with AVX2 a vector, the masks combined as vectors and each taken out with one movemask (GCC's
+ * vectorization of the portable loop gathers them bit by bit). */
+#ifdef BVH_AVX512
+#define LANES_CMP(a, b, pred) L_(cmp_ps_mask)(a, b, pred)
+#define MASK_OR(a, b) ((a) | (b))
+#define MASK_AND(a, b) ((a) & (b))
+#define MASK_BITS(m) (m)
+#else
+#define LANES_CMP(a, b, pred) L_(cmp_ps)(a, b, pred)
+#define MASK_OR(a, b) L_(or_ps)(a, b)
+#define MASK_AND(a, b) L_(and_ps)(a, b)
+#define MASK_BITS(m) ((unsigned)L_(movemask_ps)(m))
+#endif
+/* a bit per lane where any of U, V, W compares to 0 by pred */
+#define ANY_UVW(pred) MASK_OR(MASK_OR(LANES_CMP(U, zero, pred), LANES_CMP(V, zero, pred)), LANES_CMP(W, zero, pred))
+
+static inline lanes lane_row(const tri_block *blk, int corner, int axis) { return L_(load_ps)(blk->v[corner][axis]); }
 
 static inline unsigned block_hits_v(const tri_block *restrict blk, const ray_pre *restrict p, float tmax,
                                     lane_hits *restrict h, unsigned *restrict edge)
@@ -196,11 +209,8 @@ static inline unsigned block_hits_v(const tri_block *restrict blk, const ray_pre
     lanes V = L_(sub_ps)(L_(mul_ps)(ax, cy), L_(mul_ps)(ay, cx));
     lanes W = L_(sub_ps)(L_(mul_ps)(bx, ay), L_(mul_ps)(by, ax));
     lanes det, T, rcp, t;
-    unsigned neg = L_(cmp_ps_mask)(U, zero, _CMP_LT_OQ) | L_(cmp_ps_mask)(V, zero, _CMP_LT_OQ) | L_(cmp_ps_mask)(W, zero, _CMP_LT_OQ);
-    unsigned pos = L_(cmp_ps_mask)(U, zero, _CMP_GT_OQ) | L_(cmp_ps_mask)(V, zero, _CMP_GT_OQ) | L_(cmp_ps_mask)(W, zero, _CMP_GT_OQ);
-    unsigned inside = ~(neg & pos) & ((1u << BVH_LEAF_MAX) - 1), mask;
-    *edge = inside & (L_(cmp_ps_mask)(U, zero, _CMP_EQ_OQ) | L_(cmp_ps_mask)(V, zero, _CMP_EQ_OQ) |
-                      L_(cmp_ps_mask)(W, zero, _CMP_EQ_OQ));
+    unsigned inside = ~MASK_BITS(MASK_AND(ANY_UVW(_CMP_LT_OQ), ANY_UVW(_CMP_GT_OQ))) & ((1u << BVH_LEAF_MAX) - 1), mask;
+    *edge = inside & MASK_BITS(ANY_UVW(_CMP_EQ_OQ));
     if (!inside) return 0;
     det = L_(add_ps)(L_(add_ps)(U, V), W);
     T = L_(add_ps)(L_(add_ps)(L_(mul_ps)(U, L_(mul_ps)(Sz, az)), L_(mul_ps)(V, L_(mul_ps)(Sz, bz))),
@@ -208,53 +218,11 @@ static inline unsigned block_hits_v(const tri_block *restrict blk, const ray_pre
     rcp = L_(div_ps)(L_(set1_ps)(1.0f), det);
     t = L_(mul_ps)(T, rcp);
     L_(storeu_ps)(h->t, t); L_(storeu_ps)(h->u, L_(mul_ps)(V, rcp)); L_(storeu_ps)(h->v, L_(mul_ps)(W, rcp));
-    mask = L_(cmp_ps_mask)(det, zero, _CMP_NEQ_UQ) & L_(cmp_ps_mask)(t, zero, _CMP_GT_OQ) &
-           L_(cmp_ps_mask)(t, L_(set1_ps)(tmax), _CMP_LT_OQ);
+    mask = MASK_BITS(MASK_AND(MASK_AND(LANES_CMP(det, zero, _CMP_NEQ_UQ), LANES_CMP(t, zero, _CMP_GT_OQ)),
+                              LANES_CMP(t, L_(set1_ps)(tmax), _CMP_LT_OQ)));
     return mask & inside;
 }
 #define block_hits_float block_hits_v
-#endif
-
-#ifdef BVH_AVX2
-/* block_hits_float with AVX2 intrinsics: the same operations in the same order, as block_hits_v;
- * the lanes' comparisons are combined as vectors and each mask taken out with one movemask (GCC's
- * vectorization of the portable loop gathers each mask bit by bit). */
-#define LANES_MASK(x) ((unsigned)L_(movemask_ps)(x))
-#define LANES_OR3(a, b, c) L_(or_ps)(L_(or_ps)(a, b), c)
-static inline unsigned block_hits_avx2(const tri_block *restrict blk, const ray_pre *restrict p, float tmax,
-                                       lane_hits *restrict h, unsigned *restrict edge)
-{
-    const lanes ox = p->bo[0], oy = p->bo[1], oz = p->bo[2];
-    const lanes Sx = p->bS[0], Sy = p->bS[1], Sz = p->bS[2], zero = L_(setzero_ps)();
-    lanes az = L_(sub_ps)(lane_row(blk, 0, p->kz), oz), bz = L_(sub_ps)(lane_row(blk, 1, p->kz), oz);
-    lanes cz = L_(sub_ps)(lane_row(blk, 2, p->kz), oz);
-    lanes ax = L_(sub_ps)(L_(sub_ps)(lane_row(blk, 0, p->kx), ox), L_(mul_ps)(Sx, az));
-    lanes ay = L_(sub_ps)(L_(sub_ps)(lane_row(blk, 0, p->ky), oy), L_(mul_ps)(Sy, az));
-    lanes bx = L_(sub_ps)(L_(sub_ps)(lane_row(blk, 1, p->kx), ox), L_(mul_ps)(Sx, bz));
-    lanes by = L_(sub_ps)(L_(sub_ps)(lane_row(blk, 1, p->ky), oy), L_(mul_ps)(Sy, bz));
-    lanes cx = L_(sub_ps)(L_(sub_ps)(lane_row(blk, 2, p->kx), ox), L_(mul_ps)(Sx, cz));
-    lanes cy = L_(sub_ps)(L_(sub_ps)(lane_row(blk, 2, p->ky), oy), L_(mul_ps)(Sy, cz));
-    lanes U = L_(sub_ps)(L_(mul_ps)(cx, by), L_(mul_ps)(cy, bx));
-    lanes V = L_(sub_ps)(L_(mul_ps)(ax, cy), L_(mul_ps)(ay, cx));
-    lanes W = L_(sub_ps)(L_(mul_ps)(bx, ay), L_(mul_ps)(by, ax));
-    lanes neg = LANES_OR3(L_(cmp_ps)(U, zero, _CMP_LT_OQ), L_(cmp_ps)(V, zero, _CMP_LT_OQ), L_(cmp_ps)(W, zero, _CMP_LT_OQ));
-    lanes pos = LANES_OR3(L_(cmp_ps)(U, zero, _CMP_GT_OQ), L_(cmp_ps)(V, zero, _CMP_GT_OQ), L_(cmp_ps)(W, zero, _CMP_GT_OQ));
-    lanes on_edge = LANES_OR3(L_(cmp_ps)(U, zero, _CMP_EQ_OQ), L_(cmp_ps)(V, zero, _CMP_EQ_OQ), L_(cmp_ps)(W, zero, _CMP_EQ_OQ));
-    unsigned inside = ~LANES_MASK(L_(and_ps)(neg, pos)) & ((1u << BVH_LEAF_MAX) - 1), mask;
-    lanes det, T, rcp, t;
-    *edge = inside & LANES_MASK(on_edge);
-    if (!inside) return 0;
-    det = L_(add_ps)(L_(add_ps)(U, V), W);
-    T = L_(add_ps)(L_(add_ps)(L_(mul_ps)(U, L_(mul_ps)(Sz, az)), L_(mul_ps)(V, L_(mul_ps)(Sz, bz))),
-                   L_(mul_ps)(W, L_(mul_ps)(Sz, cz)));
-    rcp = L_(div_ps)(L_(set1_ps)(1.0f), det);
-    t = L_(mul_ps)(T, rcp);
-    L_(storeu_ps)(h->t, t); L_(storeu_ps)(h->u, L_(mul_ps)(V, rcp)); L_(storeu_ps)(h->v, L_(mul_ps)(W, rcp));
-    mask = LANES_MASK(L_(and_ps)(L_(and_ps)(L_(cmp_ps)(det, zero, _CMP_NEQ_UQ), L_(cmp_ps)(t, zero, _CMP_GT_OQ)),
-                                 L_(cmp_ps)(t, L_(set1_ps)(tmax), _CMP_LT_OQ)));
-    return mask & inside;
-}
-#define block_hits_float block_hits_avx2
 #endif
 
 /* Step 3 for one lane, in scalar code: the same float shear, then U, V, W from exact products. */

@@ -95,7 +95,7 @@ static inline void ray_prepare(const ray *r, ray_pre *restrict p)
 
 static inline const float *row(const wnode *n, ptrdiff_t offset) { return (const float *)((const char *)n + offset); }
 
-#ifndef BVH_AVX512   /* the portable tests; with AVX-512, node_hits_v and block_hits_v */
+#ifndef BVH_INTRINSICS   /* the portable node test; AVX2 has node_hits_avx2, AVX-512 node_hits_v */
 /* Slab test of the children: dist[i] = entry distance, returns a bit per child entered before
  * tmax. A NaN from 0 * inf (origin on a slab plane, direction parallel to it) fails the comparisons
  * "t > tnear" and "t < tfar" and so leaves the interval as it was: the ray counts as inside. */
@@ -268,12 +268,6 @@ static inline int lowest_bit(unsigned m)
     return index[((m & (0u - m)) * 0x077CB531u) >> 27];
 }
 
-/* Of the children in mask (not empty), returns the nearest and pushes the others farthest first, so
- * that they come off the stack nearest first. Usually one or two children are hit.
- * Measured: a test per lane (predictable branches, and the next node stays in a register) runs
- * faster than looping over the set bits, although it executes more instructions. */
-typedef struct { int ref; float t; } entry;
-
 /* The nodes a closest-hit ray has still to visit, the nearest on top: their indices and entry
  * distances in two arrays, so that the AVX2 copy stores 8 of each with one instruction. */
 typedef struct { int ref[BVH_STACK]; float t[BVH_STACK]; int n; } node_stack;
@@ -299,7 +293,13 @@ static inline __m256 slab(const wnode *n, ptrdiff_t offset, __m256 o, __m256 inv
 }
 #endif
 
-#ifndef BVH_AVX512
+#ifndef BVH_INTRINSICS   /* the portable copy; AVX2 has node_step_sorted, AVX-512 push_near_first_v */
+/* Of the children in mask (not empty), returns the nearest and pushes the others farthest first, so
+ * that they come off the stack nearest first. Usually one or two children are hit.
+ * Measured: a test per lane (predictable branches, and the next node stays in a register) runs
+ * faster than looping over the set bits, although it executes more instructions. */
+typedef struct { int ref; float t; } entry;
+
 static inline int push_near_first(const wnode *n, unsigned mask, const float dist[BVH_WIDTH], node_stack *s)
 {
     entry e[BVH_WIDTH], x;

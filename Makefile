@@ -20,8 +20,8 @@ DEFS = -D_POSIX_C_SOURCE=200809L
 # The builds, each in its own folder: the default (portable: runs on any x86-64 or other machine
 # the compiler targets, asserts on), SAN=1 (sanitizers), SAN=clang (the same with clang, plus
 # float-cast-overflow), FUZZ=1 (clang, sanitizers and libFuzzer's coverage: `make fuzz` sets it) and
-# NATIVE=1 (-march=native, asserts off: only for `make bench`, whose binary must not be copied to
-# another machine).
+# NATIVE=1 (-march=native, asserts off: for experiments, e.g. `make bench-portable`; its binary must
+# not be copied to another machine).
 SANITIZE = -O1 -g -fno-omit-frame-pointer -fno-sanitize-recover=all -fsanitize=address,undefined
 ifeq ($(SAN),1)
   BUILD = build-san
@@ -223,19 +223,19 @@ stress: $(PROG) $(TOOLS)
 refs: $(PROG)
 	ref/make_refs.sh
 
-# The benchmarks (about 7.5 minutes on 2 cores; see docs/performance.md), on the NATIVE=1 build
-# (build-native/pathlab: -march=native, no asserts): ray speed against Embree 3 on the Stanford
-# meshes (needs ../shared and Debian's libembree-dev), the time to reach the same L1 error per
-# --direct mode (bench/direct_modes.sh), and RMSE against render time for every estimator on every
-# scene (bench/sweep.sh: bench/results.csv, docs/bench.svg). `make bench-portable` times the default
-# build against the native one on the same rays.
+# The benchmarks (about 7.5 minutes on 2 cores; see docs/performance.md), on the `make` build, the
+# one users get: ray speed against Embree 3 on the Stanford meshes (needs ../shared and Debian's
+# libembree-dev; with 1 thread both programs run on one CPU, `taskset -c 0`, so that each round
+# compares them on the same core: a virtual machine's CPUs can differ in speed for minutes), the
+# time to reach the same L1 error per --direct mode (bench/direct_modes.sh), and RMSE against
+# render time for every estimator on every scene (bench/sweep.sh: bench/results.csv,
+# docs/bench.svg). `make bench-portable` times the `make` build against NATIVE=1 on the same rays.
 BENCH_MESHES ?= ../shared/data/meshes/bunny.obj ../shared/data/meshes/dragon.obj
-bench:
-	$(MAKE) NATIVE=1 bench-native
-
-bench-native: $(PROG) $(BUILD)/tests/pfmtool $(BUILD)/bench-plot $(BUILD)/bench-texture
+PIN_ONE_CPU = $(shell command -v taskset >/dev/null 2>&1 && echo taskset -c 0)
+bench: $(PROG) $(BUILD)/tests/pfmtool $(BUILD)/bench-plot $(BUILD)/bench-texture
 	@for m in $(BENCH_MESHES); do for t in 1 2; do \
-	  echo "== $$m, $$t thread(s)"; (cd $(BUILD) && $(abspath ../shared/tools/embree-rays/compare.sh) $(abspath $$m) $$t 3); done; done
+	  echo "== $$m, $$t thread(s)"; pin=; [ $$t = 1 ] && pin="$(PIN_ONE_CPU)"; \
+	  (cd $(dir $(PROG)) && $$pin $(abspath ../shared/tools/embree-rays/compare.sh) $(abspath $$m) $$t 3); done; done
 	BUILD=$(BUILD) PATHLAB=./$(PROG) bench/direct_modes.sh
 	BUILD=$(BUILD) PATHLAB=./$(PROG) bench/sweep.sh
 	BUILD=$(BUILD) PATHLAB=./$(PROG) bench/texture.sh
@@ -326,4 +326,4 @@ mutants:
 clean:
 	rm -rf build build-san build-clang-san build-fuzz build-native pathlab
 
-.PHONY: all run install uninstall test test-build test-estimators test-deps fuzz stress refs bench bench-native bench-portable bench-scale bench-cycles bench-cycles-deps grade-calibration clean mutants test-parallel test-slurm
+.PHONY: all run install uninstall test test-build test-estimators test-deps fuzz stress refs bench bench-portable bench-scale bench-cycles bench-cycles-deps grade-calibration clean mutants test-parallel test-slurm

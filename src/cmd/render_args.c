@@ -112,7 +112,7 @@ static int parse_size(void *ctx, const char *flag, const char *v)
 static int parse_light(void *ctx, const char *flag, const char *v)
 {
     render_args *a = ctx;
-    int k;
+    int k = 0;
     if (parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, LIGHT_STRATEGY_NAMES)) return 1;
     a->ro.io.light = (light_strategy)k;
     return 0;
@@ -121,7 +121,7 @@ static int parse_light(void *ctx, const char *flag, const char *v)
 static int parse_dir(void *ctx, const char *flag, const char *v)
 {
     render_args *a = ctx;
-    int k;
+    int k = 0;
     if (parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, DIR_STRATEGY_NAMES)) return 1;
     a->ro.io.dir = (dir_strategy)k;
     return 0;
@@ -130,7 +130,7 @@ static int parse_dir(void *ctx, const char *flag, const char *v)
 static int parse_direct(void *ctx, const char *flag, const char *v)
 {
     render_args *a = ctx;
-    int k;
+    int k = 0;
     if (parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, DIRECT_STRATEGY_NAMES)) return 1;
     a->ro.io.direct = (direct_strategy)k;
     return 0;
@@ -140,7 +140,7 @@ static int parse_direct(void *ctx, const char *flag, const char *v)
 static int parse_material(void *ctx, const char *flag, const char *v)
 {
     render_args *a = ctx;
-    int k;
+    int k = 0;
     if (parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, BRDF_MODEL_NAMES)) return 1;
     a->ro.io.material = a->so.model = (brdf_model)k;
     return 0;
@@ -149,7 +149,7 @@ static int parse_material(void *ctx, const char *flag, const char *v)
 static int parse_normals(void *ctx, const char *flag, const char *v)
 {
     render_args *a = ctx;
-    int k;
+    int k = 0;
     if (parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, NORMALS_MODE_NAMES)) return 1;
     a->ro.io.normals = (normals_mode)k;
     return 0;
@@ -158,7 +158,7 @@ static int parse_normals(void *ctx, const char *flag, const char *v)
 static int parse_texture_filter(void *ctx, const char *flag, const char *v)
 {
     render_args *a = ctx;
-    int k;
+    int k = 0;
     if (parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, TEXTURE_FILTER_NAMES)) return 1;
     a->ro.io.filter = (texture_filter)k;
     return 0;
@@ -167,7 +167,7 @@ static int parse_texture_filter(void *ctx, const char *flag, const char *v)
 static int parse_texture_decode(void *ctx, const char *flag, const char *v)
 {
     render_args *a = ctx;
-    int k;
+    int k = 0;
     if (parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, TEXTURE_DECODE_NAMES)) return 1;
     a->so.obj.decode = (texture_decode)k;
     return 0;
@@ -177,7 +177,7 @@ static int parse_texture_decode(void *ctx, const char *flag, const char *v)
 static int parse_sampler(void *ctx, const char *flag, const char *v)
 {
     render_args *a = ctx;
-    int k;
+    int k = 0;
     if (parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, SAMPLER_NAMES)) return 1;
     a->ro.sampler = (sampler_kind)k;
     a->sampler_given = 1;

@@ -49,7 +49,7 @@ endif
 # Link-time optimisation with GCC, in the default and NATIVE=1 builds, for the files a render runs at
 # every bounce (LTO_SRC): the integrator calls into brdf.c, light.c, surface.c, sampler.c ..., and
 # only the linker sees both sides of those calls; across them it inlines and drops work (a render of
-# the Cornell boxes in 0.93-0.97x the time, the same image: bench/log.md). The rest is linked as
+# the Cornell boxes in 0.91-0.97x the time, the same image: bench/log.md). The rest is linked as
 # usual, which keeps the build short. Those objects carry their ordinary code too (fat), so the test
 # programs link them without it (-fno-lto: no whole-program pass per test). LTO=0 turns it off (then
 # make clean: objects are not rebuilt when flags change).

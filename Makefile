@@ -77,8 +77,9 @@ GEN_OBJ = $(BUILD)/gen/web_assets.o
 # time, is compiled three times, for SSE2 (any x86-64), AVX2 + FMA and AVX-512, and each tree uses
 # the best copy the CPU runs (geometry/bvh.h, bvh_isa; --isa forces one). The copies compute the
 # same floats (ISO C: no contraction into FMA), so every copy gives the same image.
+X86_64 := $(filter x86_64%,$(shell $(CC) -dumpmachine))
 ifneq ($(NATIVE),1)
-ifneq ($(filter x86_64%,$(shell $(CC) -dumpmachine)),)
+ifneq ($(X86_64),)
 DEFS += -DBVH_DISPATCH
 ISA_OBJ = $(BUILD)/geometry/bvh_traverse_avx2.o $(BUILD)/geometry/bvh_traverse_avx512.o
 endif
@@ -195,7 +196,7 @@ endef
 test-deps:
 	$(call install_if_missing,idiff,openimageio-tools,the OpenImageIO checks)
 	$(call install_if_missing,parallel,parallel,tests/test_parallel_recipe.sh)
-ifneq ($(filter x86_64%,$(shell $(CC) -dumpmachine)),)
+ifneq ($(X86_64),)
 	$(call install_if_missing,qemu-x86_64,qemu-user,tests/test_isa.sh: the binary on emulated processors without AVX-512 or AVX)
 endif
 

@@ -48,23 +48,27 @@ case "$PATHLAB:$(uname -m):$base" in
 *:x86_64:sse2)
     if ! command -v qemu-x86_64 > /dev/null 2>&1; then skip "isa: qemu-x86_64 is missing (Debian's qemu-user; make test-deps installs it)"
     else
+        # the course's BRDF with both lobes, MIS on small lights, the light tree, a sky: each rendered
+        # here with the sse2 copy, then on each emulated processor
+        runs_q=("cornell-glossy" "mis-plates" "many-lights --light tree" "cornell --sky 0.2,0.3,0.5")
+        for i in "${!runs_q[@]}"; do
+            name=${runs_q[$i]%% *} flags=${runs_q[$i]#$name}
+            # shellcheck disable=SC2086
+            $PATHLAB render "scenes/$name.obj" $flags --size 24x24 --spp 2 --bounces 0:3 --isa sse2 --quiet -o "$TMP/q$i-host.pfm" \
+                || fail "isa: render scenes/$name.obj$flags --isa sse2 failed"
+        done
         for model in Haswell:avx2 qemu64:sse2; do
             cpu=${model%%:*} want=${model#*:}
             got=$(qemu-x86_64 -cpu "$cpu" $PATHLAB --version 2> /dev/null | sed -n 's/^ray traversal: \([a-z0-9]*\).*/\1/p')
             [ "$got" = "$want" ] && pass "isa: on an emulated $cpu the dispatch picks $want" \
                 || fail "isa: on an emulated $cpu the dispatch picks '$got', not $want"
             bad=0
-            # the course's BRDF with both lobes, MIS on small lights, the light tree, a sky
-            for run in "cornell-glossy" "mis-plates" "many-lights --light tree" "cornell --sky 0.2,0.3,0.5"; do
-                name=${run%% *} flags=${run#$name}
-                scene=scenes/$name.obj
+            for i in "${!runs_q[@]}"; do
+                name=${runs_q[$i]%% *} flags=${runs_q[$i]#$name}
                 # shellcheck disable=SC2086
-                $PATHLAB render "$scene" $flags --size 24x24 --spp 2 --bounces 0:3 --isa "$base" --quiet -o "$TMP/q-$name-host.pfm" \
-                    || { fail "isa: render $scene$flags --isa $base failed"; bad=1; continue; }
-                # shellcheck disable=SC2086
-                qemu-x86_64 -cpu "$cpu" $PATHLAB render "$scene" $flags --size 24x24 --spp 2 --bounces 0:3 --quiet -o "$TMP/q-$name-$cpu.pfm" 2> "$TMP/q.err" \
-                    || { fail "isa: render $scene$flags on an emulated $cpu failed: $(tail -n 2 "$TMP/q.err")"; bad=1; continue; }
-                cmp -s "$TMP/q-$name-$cpu.pfm" "$TMP/q-$name-host.pfm" || { fail "isa: $scene$flags on an emulated $cpu differs from the host's sse2 copy"; bad=1; }
+                qemu-x86_64 -cpu "$cpu" $PATHLAB render "scenes/$name.obj" $flags --size 24x24 --spp 2 --bounces 0:3 --quiet -o "$TMP/q$i-$cpu.pfm" 2> "$TMP/q.err" \
+                    || { fail "isa: render scenes/$name.obj$flags on an emulated $cpu failed: $(tail -n 2 "$TMP/q.err")"; bad=1; continue; }
+                cmp -s "$TMP/q$i-$cpu.pfm" "$TMP/q$i-host.pfm" || { fail "isa: scenes/$name.obj$flags on an emulated $cpu differs from the host's sse2 copy"; bad=1; }
             done
             [ "$bad" = 0 ] && pass "isa: the whole binary runs on an emulated $cpu ($want), the same images as the host's sse2 copy"
         done

@@ -125,8 +125,9 @@ static dvec orthogonal_part(dvec v, dvec u) { return dv_normalize(dv_lin(v, 1.0,
 
 /* The spherical triangle an emitter subtends from p: unit directions A, B, C to its corners, its
  * solid angle Omega (Van Oosterom and Strackee 1983: tan(Omega/2) = |A.(B x C)| / (1 + A.B + B.C +
- * C.A)) and its angle alpha at A, between the great arcs AB and AC. */
-typedef struct { dvec A, B, C; double omega, alpha; } spherical_triangle;
+ * C.A)) and the cosine of its angle alpha at A, between the great arcs AB and AC (sampling needs
+ * only alpha's cosine and sine, so no acos). */
+typedef struct { dvec A, B, C, C_perp; double omega, cos_alpha; } spherical_triangle;   /* C_perp: C's part orthogonal to A */
 
 static spherical_triangle spherical_triangle_from(const emitter *e, vec3 p)
 {
@@ -137,14 +138,16 @@ static spherical_triangle spherical_triangle_from(const emitter *e, vec3 p)
     t.C = dv_normalize(dv(a.x + e->e2.x, a.y + e->e2.y, a.z + e->e2.z));
     t.omega = 2.0 * atan2(fabs(dv_dot(t.A, dv_cross(t.B, t.C))),
                           1.0 + dv_dot(t.A, t.B) + dv_dot(t.B, t.C) + dv_dot(t.C, t.A));
-    t.alpha = acos(fmin(1.0, fmax(-1.0, dv_dot(orthogonal_part(t.B, t.A), orthogonal_part(t.C, t.A)))));
+    t.C_perp = orthogonal_part(t.C, t.A);
+    t.cos_alpha = fmin(1.0, fmax(-1.0, dv_dot(orthogonal_part(t.B, t.A), t.C_perp)));
     return t;
 }
 
-/* Arvo sampling only where its trigonometry stays accurate (light.h); elsewhere, by area. */
+/* Arvo sampling only where its trigonometry stays accurate (light.h); elsewhere, by area.
+ * (alpha > 0 is cos_alpha < 1: acos is 0 at 1 only.) */
 static int solid_angle_usable(const spherical_triangle *t)
 {
-    return t->omega > LIGHT_SOLID_ANGLE_MIN && t->omega < LIGHT_SOLID_ANGLE_MAX && t->alpha > 0.0;
+    return t->omega > LIGHT_SOLID_ANGLE_MIN && t->omega < LIGHT_SOLID_ANGLE_MAX && t->cos_alpha < 1.0;
 }
 
 /* Arvo 1995: a direction uniform over the spherical triangle. u1 picks the sub-triangle A B C'
@@ -153,16 +156,27 @@ static int solid_angle_usable(const spherical_triangle *t)
  * in the course. */
 static vec3 sample_spherical_triangle(const spherical_triangle *t, float u1, float u2)
 {
-    double sub = u1 * t->omega, sin_d = sin(sub - t->alpha), cos_d = cos(sub - t->alpha);
-    double cos_alpha = cos(t->alpha), sin_alpha = sin(t->alpha);
+    /* sin and cos of d = sub - alpha by the difference formulas: one sincos, and no acos for alpha */
+    double cos_alpha = t->cos_alpha, sin_alpha = sqrt((1.0 - cos_alpha) * (1.0 + cos_alpha));
+    double sub = u1 * t->omega, sin_sub = sin(sub), cos_sub = cos(sub);
+    double sin_d = sin_sub * cos_alpha - cos_sub * sin_alpha, cos_d = cos_sub * cos_alpha + sin_sub * sin_alpha;
     double u = cos_d - cos_alpha, v = sin_d + sin_alpha * dv_dot(t->A, t->B), z;
     double cos_ac = ((v * cos_d - u * sin_d) * cos_alpha - v) / ((v * sin_d + u * cos_d) * sin_alpha);   /* of arc AC' */
     dvec C1, w;
     cos_ac = fmin(1.0, fmax(-1.0, cos_ac));
-    C1 = dv_lin(t->A, cos_ac, orthogonal_part(t->C, t->A), sqrt(1.0 - cos_ac * cos_ac));
+    C1 = dv_lin(t->A, cos_ac, t->C_perp, sqrt(1.0 - cos_ac * cos_ac));
     z = 1.0 - u2 * (1.0 - dv_dot(C1, t->B));                                         /* cos of arc B P */
     w = dv_lin(t->B, z, orthogonal_part(C1, t->B), sqrt(fmax(0.0, 1.0 - z * z)));
     return v3((float)w.x, (float)w.y, (float)w.z);
+}
+
+/* solid-angle's pdf1 per unit area at the point s of emitter i, which subtends t from p (usable). */
+static float solid_angle_pdf_area(const light_set *ls, int i, const spherical_triangle *t, vec3 p, vec3 s)
+{
+    vec3 d = v3_sub(s, p);
+    float dist2 = v3_dot(d, d), cos_s = fabsf(v3_dot(ls->e[i].n, d)) / sqrtf(dist2);
+    float pdf_sa = choice_prob(ls, LIGHT_SOLID_ANGLE, i, p) / (float)t->omega;   /* uniform over Omega */
+    return pdf_solid_angle_to_area(pdf_sa, dist2, cos_s);
 }
 
 float light_pdf_area(const light_set *ls, light_strategy strategy, int i, vec3 p, vec3 s)
@@ -172,12 +186,7 @@ float light_pdf_area(const light_set *ls, light_strategy strategy, int i, vec3 p
     if (strategy == LIGHT_AREA) return 1.0f / ls->total_area;
     if (strategy == LIGHT_SOLID_ANGLE) {
         spherical_triangle t = spherical_triangle_from(e, p);
-        if (solid_angle_usable(&t)) {
-            vec3 d = v3_sub(s, p);
-            float dist2 = v3_dot(d, d), cos_s = fabsf(v3_dot(e->n, d)) / sqrtf(dist2);
-            float pdf_sa = choice_prob(ls, strategy, i, p) / (float)t.omega;   /* uniform over Omega */
-            return pdf_solid_angle_to_area(pdf_sa, dist2, cos_s);
-        }
+        if (solid_angle_usable(&t)) return solid_angle_pdf_area(ls, i, &t, p, s);
     }
     return choice_prob(ls, strategy, i, p) / e->area;
 }
@@ -198,7 +207,7 @@ static void sample_on_emitter(const light_set *ls, light_strategy strategy, int 
             vec3 w = sample_spherical_triangle(&t, u1, u2);
             float dist = v3_dot(v3_sub(e->a, p), e->n) / v3_dot(w, e->n);
             out->pos = v3_madd(p, w, dist);
-            out->pdf_area = light_pdf_area(ls, strategy, i, p, out->pos);
+            out->pdf_area = solid_angle_pdf_area(ls, i, &t, p, out->pos);   /* the t just made: no second one */
             return;
         }
     }

@@ -256,7 +256,8 @@ PIN_ONE_CPU = $(shell command -v taskset >/dev/null 2>&1 && echo taskset -c 0)
 bench: $(PROG) $(BUILD)/tests/pfmtool $(BUILD)/bench-plot $(BUILD)/bench-texture
 	@for m in $(BENCH_MESHES); do for t in 1 2; do \
 	  echo "== $$m, $$t thread(s)"; pin=; [ $$t = 1 ] && pin="$(PIN_ONE_CPU)"; \
-	  (cd $(dir $(PROG)) && $$pin $(abspath ../shared/tools/embree-rays/compare.sh) $(abspath $$m) $$t 3); done; done
+	  case $$m in /*) mesh=$$m;; *) mesh=$(CURDIR)/$$m;; esac; \
+	  (cd $(dir $(PROG)) && $$pin $(abspath ../shared/tools/embree-rays/compare.sh) "$$mesh" $$t 3); done; done
 	BUILD=$(BUILD) PATHLAB=./$(PROG) bench/direct_modes.sh
 	BUILD=$(BUILD) PATHLAB=./$(PROG) bench/sweep.sh
 	BUILD=$(BUILD) PATHLAB=./$(PROG) bench/texture.sh

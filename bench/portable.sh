@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# bench/portable.sh PORTABLE NATIVE MESH... — what -march=native buys: the default build (portable,
-# asserts on) against the NATIVE=1 build (-march=native, -DNDEBUG) on the same work, run
-# alternately (3 rounds, median) so that the shared machine's load hits both alike:
+# bench/portable.sh PORTABLE NATIVE MESH... — what -march=native buys: the default build (its
+# traversal compiled for SSE2, AVX2 and AVX-512 and chosen at start; asserts on) against the NATIVE=1
+# build (-march=native, -DNDEBUG) on the same work, run alternately (3 rounds, median) so that the
+# shared machine's load hits both alike, both on one CPU (taskset -c 0, when there is taskset):
 #   bench-rays on each mesh (primary, diffuse and shadow rays, 1 thread): Mrays/s ratio;
 #   a render (Cornell box, 128x128, 64 spp, 1 thread): time ratio.
 # Prints native/portable speed ratios (above 1: native is faster). Used by `make bench-portable`.
@@ -10,10 +11,11 @@ set -eu
 port=$1 nat=$2; shift 2
 T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
 median() { sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
+pin=(); command -v taskset > /dev/null && pin=(taskset -c 0)
 for mesh in "$@"; do
     for r in 1 2 3; do
-        "$port" bench-rays "$mesh" -t 1 > "$T/p$r"
-        "$nat" bench-rays "$mesh" -t 1 > "$T/n$r"
+        "${pin[@]}" "$port" bench-rays "$mesh" -t 1 > "$T/p$r"
+        "${pin[@]}" "$nat" bench-rays "$mesh" -t 1 > "$T/n$r"
     done
     for kind in primary diffuse shadow; do
         p=$(for r in 1 2 3; do sed -n "s/^$kind: .* \([0-9.]*\) Mrays\/s.*/\1/p" "$T/p$r"; done | median)
@@ -26,7 +28,7 @@ for r in 1 2 3; do
     for b in port nat; do
         prog=$port; [ $b = nat ] && prog=$nat
         s=$(date +%s%N)
-        "$prog" render scenes/cornell.obj --size 128x128 --spp 64 --threads 1 --quiet -o "$T/$b.pfm"
+        "${pin[@]}" "$prog" render scenes/cornell.obj --size 128x128 --spp 64 --threads 1 --quiet -o "$T/$b.pfm"
         echo $(( ($(date +%s%N) - s) / 1000000 )) >> "$T/time_$b"
     done
 done

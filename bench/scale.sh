@@ -16,6 +16,9 @@
 # adds to it instead), then draws docs/NAME.svg for bench/NAME.csv and prints the tables and slopes
 # (bench/scale_plot.py). PATHLAB_FLAGS are passed to bench-rays (e.g. "--bvh-quality split");
 # SCALE_TAG names them in the CSV (default: pathlab).
+# With 1 thread both programs run on one CPU (taskset -c SCALE_CPU, default 0), as `make bench` does:
+# a virtual machine's CPUs can differ in speed for minutes, and a pair split across two of them
+# compares the CPUs, not the programs.
 # SCALE_CLOCK=cpu times both with the process's CPU clock instead of the wall clock (bench-rays
 # --cpu-time, and embree-rays built as build/embree-rays-cpu with bench/cpu_clock.h): on a machine
 # loaded by other processes, wall seconds count their time slices too.
@@ -72,10 +75,12 @@ for n in $SIZES; do
   ebpt=$(sed -n 's/^ *total *: sah.*#bytes\/prim = *\([0-9.]*\).*/\1/p' "$tmp/verbose" | tail -1)
   echo "embree BVH bytes/triangle at ${n}M: ${ebpt:-?}"
   for t in $THREADS; do
+    pin=; [ "$t" = 1 ] && command -v taskset > /dev/null && pin="taskset -c ${SCALE_CPU:-0}"
     for r in $(seq "$ROUNDS"); do
-      BPT=$ebpt run embree "$t" "$mesh" "$EMBREE" "$mesh" -t "$t"
       # shellcheck disable=SC2086
-      run "$TAG" "$t" "$mesh" "$PATHLAB" bench-rays "$mesh" -t "$t" $FLAGS
+      BPT=$ebpt run embree "$t" "$mesh" $pin "$EMBREE" "$mesh" -t "$t"
+      # shellcheck disable=SC2086
+      run "$TAG" "$t" "$mesh" $pin "$PATHLAB" bench-rays "$mesh" -t "$t" $FLAGS
     done
   done
 done

@@ -51,8 +51,7 @@ endif
 # only the linker sees both sides of those calls; across them it inlines and drops work (a render of
 # the Cornell boxes in 0.91-0.97x the time, the same image: bench/log.md). The rest is linked as
 # usual, which keeps the build short. Those objects carry their ordinary code too (fat), so the test
-# programs link them without it (-fno-lto: no whole-program pass per test). LTO=0 turns it off (then
-# make clean: objects are not rebuilt when flags change).
+# programs link them without it (-fno-lto: no whole-program pass per test). LTO=0 turns it off.
 ifeq ($(SAN)$(FUZZ),)
 ifneq ($(LTO),0)
 ifeq ($(shell $(CC) -v 2>&1 | grep -c '^gcc version'),1)
@@ -146,6 +145,12 @@ REV_STAMP := $(BUILD)/revision
 $(shell mkdir -p $(BUILD); echo '$(REVISION)' | cmp -s - $(REV_STAMP) 2>/dev/null || echo '$(REVISION)' > $(REV_STAMP))
 $(BUILD)/cmd/version.o: $(REV_STAMP)
 $(BUILD)/cmd/version.o: CFLAGS += -DPATHLAB_REVISION='"$(REVISION)"'
+# Likewise the compiler and its flags: every object is rebuilt when they change (LTO=0, CC=clang, V=1
+# does not count), instead of being linked with objects compiled otherwise.
+FLAGS_STAMP := $(BUILD)/flags
+FLAGS_NOW := $(CC) $(CFLAGS) $(LTO_OPT) $(NO_LTO)
+$(shell mkdir -p $(BUILD); echo '$(FLAGS_NOW)' | cmp -s - $(FLAGS_STAMP) 2>/dev/null || echo '$(FLAGS_NOW)' > $(FLAGS_STAMP))
+$(OBJ) $(TEST_COMMON): $(FLAGS_STAMP)
 
 -include $(OBJ:.o=.d) $(TEST_BIN:=.d) $(TEST_COMMON:.o=.d) $(BUILD)/bench-plot.d $(BUILD)/bench-texture.d
 

@@ -18,6 +18,13 @@ static int parse_as(const render_args *a, const char *flag, const char *v, cli_k
     return cli_parse_value(a->cmd, &f, v, NULL);
 }
 
+/* The index of v in the list names (a CLI_CHOICE flag, for an enum), or -1 after printing why. */
+static int choice_index(const render_args *a, const char *flag, const char *v, const char *const *names)
+{
+    int k = -1;
+    return parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, names) ? -1 : k;
+}
+
 /* --bounces A:B, whole numbers with 0 <= A <= B <= BOUNCES_CAP, or B = inf (BOUNCES_NO_END) */
 static int parse_bounces(void *ctx, const char *flag, const char *v)
 {
@@ -112,8 +119,8 @@ static int parse_size(void *ctx, const char *flag, const char *v)
 static int parse_light(void *ctx, const char *flag, const char *v)
 {
     render_args *a = ctx;
-    int k = 0;
-    if (parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, LIGHT_STRATEGY_NAMES)) return 1;
+    int k = choice_index(a, flag, v, LIGHT_STRATEGY_NAMES);
+    if (k < 0) return 1;
     a->ro.io.light = (light_strategy)k;
     return 0;
 }
@@ -121,8 +128,8 @@ static int parse_light(void *ctx, const char *flag, const char *v)
 static int parse_dir(void *ctx, const char *flag, const char *v)
 {
     render_args *a = ctx;
-    int k = 0;
-    if (parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, DIR_STRATEGY_NAMES)) return 1;
+    int k = choice_index(a, flag, v, DIR_STRATEGY_NAMES);
+    if (k < 0) return 1;
     a->ro.io.dir = (dir_strategy)k;
     return 0;
 }
@@ -130,8 +137,8 @@ static int parse_dir(void *ctx, const char *flag, const char *v)
 static int parse_direct(void *ctx, const char *flag, const char *v)
 {
     render_args *a = ctx;
-    int k = 0;
-    if (parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, DIRECT_STRATEGY_NAMES)) return 1;
+    int k = choice_index(a, flag, v, DIRECT_STRATEGY_NAMES);
+    if (k < 0) return 1;
     a->ro.io.direct = (direct_strategy)k;
     return 0;
 }
@@ -140,8 +147,8 @@ static int parse_direct(void *ctx, const char *flag, const char *v)
 static int parse_material(void *ctx, const char *flag, const char *v)
 {
     render_args *a = ctx;
-    int k = 0;
-    if (parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, BRDF_MODEL_NAMES)) return 1;
+    int k = choice_index(a, flag, v, BRDF_MODEL_NAMES);
+    if (k < 0) return 1;
     a->ro.io.material = a->so.model = (brdf_model)k;
     return 0;
 }
@@ -149,8 +156,8 @@ static int parse_material(void *ctx, const char *flag, const char *v)
 static int parse_normals(void *ctx, const char *flag, const char *v)
 {
     render_args *a = ctx;
-    int k = 0;
-    if (parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, NORMALS_MODE_NAMES)) return 1;
+    int k = choice_index(a, flag, v, NORMALS_MODE_NAMES);
+    if (k < 0) return 1;
     a->ro.io.normals = (normals_mode)k;
     return 0;
 }
@@ -158,8 +165,8 @@ static int parse_normals(void *ctx, const char *flag, const char *v)
 static int parse_texture_filter(void *ctx, const char *flag, const char *v)
 {
     render_args *a = ctx;
-    int k = 0;
-    if (parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, TEXTURE_FILTER_NAMES)) return 1;
+    int k = choice_index(a, flag, v, TEXTURE_FILTER_NAMES);
+    if (k < 0) return 1;
     a->ro.io.filter = (texture_filter)k;
     return 0;
 }
@@ -167,8 +174,8 @@ static int parse_texture_filter(void *ctx, const char *flag, const char *v)
 static int parse_texture_decode(void *ctx, const char *flag, const char *v)
 {
     render_args *a = ctx;
-    int k = 0;
-    if (parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, TEXTURE_DECODE_NAMES)) return 1;
+    int k = choice_index(a, flag, v, TEXTURE_DECODE_NAMES);
+    if (k < 0) return 1;
     a->so.obj.decode = (texture_decode)k;
     return 0;
 }
@@ -177,8 +184,8 @@ static int parse_texture_decode(void *ctx, const char *flag, const char *v)
 static int parse_sampler(void *ctx, const char *flag, const char *v)
 {
     render_args *a = ctx;
-    int k = 0;
-    if (parse_as(a, flag, v, CLI_CHOICE, &k, 0, 0, SAMPLER_NAMES)) return 1;
+    int k = choice_index(a, flag, v, SAMPLER_NAMES);
+    if (k < 0) return 1;
     a->ro.sampler = (sampler_kind)k;
     a->sampler_given = 1;
     return 0;

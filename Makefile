@@ -139,17 +139,18 @@ $(BUILD)/tests/%: tests/%.c $(LIB_OBJ)
 	$(call say,LINK,$@)
 	$(Q)$(CC) $(CFLAGS) $(NO_LTO) $(DEPFLAGS) -o $@ $< $(LIB_OBJ) $(LDLIBS)
 
+# $(call stamp,FILE,TEXT): FILE holds TEXT, rewritten (a newer mtime) only when TEXT changed.
+stamp = $(shell mkdir -p $(BUILD); echo '$(2)' | cmp -s - $(1) 2>/dev/null || echo '$(2)' > $(1))
 # The git revision goes into version.o only; the stamp file changes (and rebuilds it) when the revision does.
 REVISION := $(shell git describe --always --dirty 2>/dev/null || echo unknown)
 REV_STAMP := $(BUILD)/revision
-$(shell mkdir -p $(BUILD); echo '$(REVISION)' | cmp -s - $(REV_STAMP) 2>/dev/null || echo '$(REVISION)' > $(REV_STAMP))
+$(call stamp,$(REV_STAMP),$(REVISION))
 $(BUILD)/cmd/version.o: $(REV_STAMP)
 $(BUILD)/cmd/version.o: CFLAGS += -DPATHLAB_REVISION='"$(REVISION)"'
 # Likewise the compiler and its flags: every object is rebuilt when they change (LTO=0, CC=clang, V=1
 # does not count), instead of being linked with objects compiled otherwise.
 FLAGS_STAMP := $(BUILD)/flags
-FLAGS_NOW := $(CC) $(CFLAGS) $(LTO_OPT) $(NO_LTO)
-$(shell mkdir -p $(BUILD); echo '$(FLAGS_NOW)' | cmp -s - $(FLAGS_STAMP) 2>/dev/null || echo '$(FLAGS_NOW)' > $(FLAGS_STAMP))
+$(call stamp,$(FLAGS_STAMP),$(CC) $(CFLAGS) $(LTO_OPT) $(NO_LTO))
 $(OBJ) $(TEST_COMMON): $(FLAGS_STAMP)
 
 -include $(OBJ:.o=.d) $(TEST_BIN:=.d) $(TEST_COMMON:.o=.d) $(BUILD)/bench-plot.d $(BUILD)/bench-texture.d

@@ -6,7 +6,9 @@
  *      the SAMPLER_GROUPS groups of a pixel (indices g, g + K, g + 2K...) is such a net on its own;
  *   3. the same sample is the same numbers (addressable), and different pixels and dimensions
  *      give different points;
- *   4. averages over pixels of a few coordinates are 1/2 within 5 standard errors (a gross bias). */
+ *   4. averages over pixels of a few coordinates are 1/2 within 5 standard errors (a gross bias),
+ *      those of the deeper vertices' hashed numbers too, and these are uncorrelated with one
+ *      another and with the last Sobol dimension. */
 #include "check.h"
 #include "sampler/sampler.h"
 #include <math.h>
@@ -95,7 +97,7 @@ static void check_sobol_nets(void)
         uint32_t pixel, dim;
         int g;
         for (pixel = 0; pixel < 20; pixel++)
-            for (dim = 0; dim < 12; dim++)
+            for (dim = 0; dim < SAMPLER_SOBOL_DIMS; dim++)
                 for (g = 0; g < SAMPLER_GROUPS; g++) {
                     for (i = 0; i < 1 << m; i++) {
                         sampler s;
@@ -108,7 +110,7 @@ static void check_sobol_nets(void)
                     strata = strata && one_per_stratum(pixel, dim, m, g);
                 }
     }
-    check(scrambled, "sobol: each group's 2D set, 20 pixels x 12 dimensions x 4 groups, is a (0, m, 2)-net for m = 0..10", NULL);
+    check(scrambled, "sobol: each group's 2D set, 20 pixels x the 9 Sobol dimensions x 4 groups, is a (0, m, 2)-net for m = 0..10", NULL);
     check(strata, "sobol: sampler_1d puts one of a group's first 2^m samples in each of 2^m strata", NULL);
 }
 
@@ -154,6 +156,28 @@ static double mean_z(uint32_t dim, int n)
     return var > 0 ? (mean - 0.5) / sqrt(var) : (mean == 0.5 ? 0 : 1e9);
 }
 
+/* The correlation of coordinate c1 of dimension d1 of sample i with coordinate c2 of dimension d2
+ * of sample i + di of the same pixel (2D sets) over n pixels x 16 samples, as a z-score: r sqrt(N)
+ * is about normal for independent numbers. */
+static double correlation_z(uint32_t d1, int c1, uint32_t d2, int c2, uint64_t di, int n)
+{
+    double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0, N = 16.0 * n, cov, r;
+    int p, i;
+    for (p = 0; p < n; p++)
+        for (i = 0; i < 16; i++) {
+            sampler s;
+            float a[2], b[2];
+            sampler_start(&s, SAMPLER_SOBOL, 13, (uint64_t)p, (uint64_t)i);
+            sampler_2d(&s, d1, &a[0], &a[1]);
+            sampler_start(&s, SAMPLER_SOBOL, 13, (uint64_t)p, (uint64_t)i + di);
+            sampler_2d(&s, d2, &b[0], &b[1]);
+            sx += a[c1], sy += b[c2], sxx += (double)a[c1] * a[c1], syy += (double)b[c2] * b[c2], sxy += (double)a[c1] * b[c2];
+        }
+    cov = sxy / N - sx / N * (sy / N);
+    r = cov / sqrt((sxx / N - sx / N * (sx / N)) * (syy / N - sy / N * (sy / N)));
+    return r * sqrt(N);
+}
+
 int main(void)
 {
     uint32_t dim;
@@ -162,10 +186,25 @@ int main(void)
     check_sobol_dim1();
     check_sobol_nets();
     check_sobol_addressable();
-    for (dim = 0; dim < 8; dim++) {
+    for (dim = 0; dim < 16; dim++) {
         double z = fabs(mean_z(dim, 20000));
         if (z > worst) worst = z;
     }
-    check(worst < 5, "sobol: the mean of dimensions 0..7 over 20000 pixels is 1/2", "largest |z| %.2f", worst);
+    check(worst < 5, "sobol: the mean of dimensions 0..15 (Sobol, then hashed) over 20000 pixels is 1/2", "largest |z| %.2f", worst);
+    {
+        /* the two halves of one hash, two hashed dimensions, the last Sobol one and a hashed one,
+         * one hashed dimension in the next sample and in the next point of the same group */
+        const uint32_t d = SAMPLER_SOBOL_DIMS;
+        double z[6];
+        z[0] = correlation_z(d + 1, 0, d + 1, 1, 0, 20000);
+        z[1] = correlation_z(d, 0, d + 1, 0, 0, 20000);
+        z[2] = correlation_z(d + 4, 1, d + 8, 1, 0, 20000);
+        z[3] = correlation_z(d - 2, 0, d + 2, 0, 0, 20000);
+        z[4] = correlation_z(d + 2, 0, d + 2, 0, 1, 20000);
+        z[5] = correlation_z(d + 2, 1, d + 2, 1, SAMPLER_GROUPS, 20000);
+        for (worst = 0, dim = 0; dim < 6; dim++)
+            if (fabs(z[dim]) > worst) worst = fabs(z[dim]);
+        check(worst < 5, "sobol: hashed numbers are uncorrelated (6 pairs, 320000 samples each, |z| < 5)", "largest |z| %.2f", worst);
+    }
     return check_summary();
 }

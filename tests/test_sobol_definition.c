@@ -3,7 +3,8 @@
  *   j = owen_scramble(i, shuffle_d),  u1 = owen_scramble(sobol_dim0(j), scramble_d),
  *   u2 = owen_scramble(sobol_dim1(j), scramble2_d),
  * with the seeds hashed from (seed, pixel, group, dimension) as sampler_start and sobol_point do,
- * and the two Sobol dimensions by their definition (loops over the index bits, not sampler.c's).
+ * and the two Sobol dimensions by their definition (loops over the index bits, not sampler.c's);
+ * past SAMPLER_SOBOL_DIMS, the 64 bits of a hash of (the sample's seed, dimension).
  * sobol_point computes the same numbers with fewer bit reversals (on reversed fractions): any
  * change to its shortcuts that changes a number, and thus every Sobol image, fails here. Exact
  * comparisons, no statistics: sobol and sobol1, 2000 (seed, pixel, index, dimension) each, 3 calls. */
@@ -35,6 +36,11 @@ static void by_definition(sampler_kind kind, uint64_t seed, uint64_t pixel, uint
     uint64_t pixel_seed = splitmix64_at(splitmix64_mix(splitmix64_mix(seed) ^ pixel), index % K);
     uint64_t h = splitmix64_at(pixel_seed, dim);
     uint32_t j = owen_scramble((uint32_t)(index / K), (uint32_t)h);
+    if (dim >= SAMPLER_SOBOL_DIMS) {   /* a deeper vertex: independent numbers */
+        h = splitmix64_at(splitmix64_mix(pixel_seed ^ (index / K)), dim);
+        *u1 = (uint32_t)h, *u2 = (uint32_t)(h >> 32);
+        return;
+    }
     *u1 = owen_scramble(dim0_by_definition(j), (uint32_t)(h >> 32));
     *u2 = owen_scramble(dim1_by_definition(j), (uint32_t)splitmix64_mix(h));
 }
@@ -51,7 +57,7 @@ static void check_kind(sampler_kind kind)
     for (n = 0; n < 2000; n++) {
         uint64_t seed = pcg32_next(&r), pixel = pcg32_next(&r) % 1000000u;
         uint64_t index = n < 1000 ? (uint64_t)n : pcg32_next(&r);   /* the first indices, then any */
-        uint32_t dim = pcg32_next(&r) % 200u, a, b;
+        uint32_t dim = pcg32_next(&r) % (n % 2 ? 200u : SAMPLER_SOBOL_DIMS), a, b;   /* half of them Sobol */
         sampler s;
         float f1, f2, g2;
         double d;
@@ -63,7 +69,7 @@ static void check_kind(sampler_kind kind)
         d = sampler_2d_32bit(&s, dim, &g2);
         bad += d != (double)a / 4294967296.0 || g2 != top24(b);
     }
-    snprintf(name, sizeof name, "%s: 2000 draws of each call equal the definition (owen_scramble of Sobol dimensions 0, 1 at the shuffled index)",
+    snprintf(name, sizeof name, "%s: 2000 draws of each call equal the definition (owen_scramble of Sobol dimensions 0, 1 at the shuffled index; a hash past the Sobol vertices)",
              SAMPLER_NAMES[kind]);
     check(bad == 0, name, "%d differ", bad);
 }

@@ -12,6 +12,9 @@
  *                groups', and is point index div SAMPLER_GROUPS of it. Within one group the samples
  *                are NOT independent: their sample variance does not estimate the variance of the
  *                mean; the spread between the group means does (render/pixel_sums.h).
+ *                Only the pixel jitter and the first SAMPLER_SOBOL_VERTICES path vertices are Sobol
+ *                sets; the numbers of the deeper vertices are independent, hashed from (seed, pixel,
+ *                group, index, dimension).
  *   sobol1       the same with a single group: one scrambled sequence per pixel, stratified over
  *                all of its samples (the lowest error), whose variance cannot be estimated. */
 #ifndef PATHLAB_SAMPLER_H
@@ -33,6 +36,7 @@ typedef struct {
     pcg32 rng;              /* independent: the sample's stream */
     uint64_t pixel_seed;    /* sobol: hashed from (seed, pixel, group); each dimension's seeds derive from it */
     uint32_t index_reversed;   /* sobol: the point's index in its group (sample index div SAMPLER_GROUPS), bits reversed */
+    uint64_t sample_seed;   /* sobol: hashed from pixel_seed and that index; the deeper vertices' numbers derive from it */
     uint32_t vertex_dim;    /* the first dimension of the current path vertex (sampler_vertex) */
 } sampler;
 
@@ -64,6 +68,9 @@ enum {
     SAMPLER_DIM_ROULETTE = 3,       /* 1D: Russian roulette */
     SAMPLER_DIMS_PER_VERTEX = 4
 };
+/* sobol, sobol1: the vertices whose numbers are stratified, and the dimensions that takes */
+#define SAMPLER_SOBOL_VERTICES 2
+#define SAMPLER_SOBOL_DIMS (1u + SAMPLER_SOBOL_VERTICES * SAMPLER_DIMS_PER_VERTEX)
 static inline void sampler_pixel(sampler *s, float *jx, float *jy) { sampler_2d(s, SAMPLER_DIM_PIXEL, jx, jy); }
 /* From here on, the numbers are those of path vertex k >= 1. */
 static inline void sampler_vertex(sampler *s, int k) { s->vertex_dim = 1u + (uint32_t)(k - 1) * SAMPLER_DIMS_PER_VERTEX; }

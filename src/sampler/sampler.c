@@ -97,18 +97,25 @@ void sampler_from_stream(sampler *s, const pcg32 *r)
  * with three bit reversals instead of eight (and the index reversed once, in sampler_start). */
 static void sobol_point(const sampler *s, uint32_t dim, uint32_t *u1, uint32_t *u2)
 {
-    uint64_t h;
-    uint32_t j;
-    if (dim >= SAMPLER_SOBOL_DIMS) {   /* a deeper vertex: independent numbers, one hash for both */
-        h = splitmix64_at(s->sample_seed, dim);
-        *u1 = (uint32_t)h;
-        if (u2) *u2 = (uint32_t)(h >> 32);
-        return;
-    }
-    h = splitmix64_at(s->pixel_seed, dim);
-    j = reverse_bits(laine_karras(s->index_reversed, (uint32_t)h));
+    uint64_t h = splitmix64_at(s->pixel_seed, dim);
+    uint32_t j = reverse_bits(laine_karras(s->index_reversed, (uint32_t)h));
     *u1 = reverse_bits(laine_karras(j, (uint32_t)(h >> 32)));
     if (u2) *u2 = reverse_bits(laine_karras(superset_transform(j), (uint32_t)splitmix64_mix(h)));
+}
+
+/* Independent numbers of dimension dim: one hash gives both coordinates. */
+static void hashed_point(const sampler *s, uint32_t dim, uint32_t *u1, uint32_t *u2)
+{
+    uint64_t h = splitmix64_at(s->sample_seed, dim);
+    *u1 = (uint32_t)h;
+    if (u2) *u2 = (uint32_t)(h >> 32);
+}
+
+/* The numbers of a Sobol sampler at dimension dim: stratified up to the last Sobol vertex, hashed past it. */
+static void point(const sampler *s, uint32_t dim, uint32_t *u1, uint32_t *u2)
+{
+    if (dim < SAMPLER_SOBOL_DIMS) sobol_point(s, dim, u1, u2);
+    else hashed_point(s, dim, u1, u2);
 }
 
 static float to_float(uint32_t x) { return (float)(x >> 8) * (1.0f / 16777216.0f); }
@@ -117,7 +124,7 @@ float sampler_1d(sampler *s, uint32_t dim)
 {
     uint32_t u;
     if (s->kind == SAMPLER_INDEPENDENT) return pcg32_float(&s->rng);
-    sobol_point(s, dim, &u, NULL);
+    point(s, dim, &u, NULL);
     return to_float(u);
 }
 
@@ -129,7 +136,7 @@ void sampler_2d(sampler *s, uint32_t dim, float *u1, float *u2)
         *u2 = pcg32_float(&s->rng);
         return;
     }
-    sobol_point(s, dim, &a, &b);
+    point(s, dim, &a, &b);
     *u1 = to_float(a);
     *u2 = to_float(b);
 }
@@ -143,7 +150,7 @@ double sampler_2d_32bit(sampler *s, uint32_t dim, float *u2)
         *u2 = pcg32_float(&s->rng);
         return u;
     }
-    sobol_point(s, dim, &a, &b);
+    point(s, dim, &a, &b);
     *u2 = to_float(b);
     return (double)a * (1.0 / 4294967296.0);
 }

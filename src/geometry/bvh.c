@@ -49,6 +49,9 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdint.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -82,21 +85,36 @@ static aabb aabb_empty(void)
     aabb b = {{FLT_MAX, FLT_MAX, FLT_MAX, FLT_MAX}, {-FLT_MAX, -FLT_MAX, -FLT_MAX, -FLT_MAX}};
     return b;
 }
+/* Lane by lane, b->lo = p->lo where p->lo < b->lo, and b->hi = p->hi where p->hi > b->hi, as SSE's
+ * minps and maxps do. GCC leaves the loop scalar in the partition, whose boxes are locals, and keeps
+ * them in memory (a store and a reload per primref): SSE2, which every x86-64 has, writes it out, and
+ * other processors get the loop, the same arithmetic. */
 static inline void aabb_grow(aabb *restrict b, const aabb *restrict p)
 {
+#if defined(__SSE2__)
+    _mm_storeu_ps(b->lo, _mm_min_ps(_mm_loadu_ps(p->lo), _mm_loadu_ps(b->lo)));
+    _mm_storeu_ps(b->hi, _mm_max_ps(_mm_loadu_ps(p->hi), _mm_loadu_ps(b->hi)));
+#else
     int i;
     for (i = 0; i < 4; i++) {
         b->lo[i] = p->lo[i] < b->lo[i] ? p->lo[i] : b->lo[i];
         b->hi[i] = p->hi[i] > b->hi[i] ? p->hi[i] : b->hi[i];
     }
+#endif
 }
 /* Centroids are kept doubled (lo + hi): one add instead of an add and a multiply. */
 static inline void aabb_grow_centroid(aabb *restrict b, const primref *restrict p)
 {
+#if defined(__SSE2__)
+    __m128 c = _mm_add_ps(_mm_loadu_ps(p->lo), _mm_loadu_ps(p->hi));
+    _mm_storeu_ps(b->lo, _mm_min_ps(c, _mm_loadu_ps(b->lo)));
+    _mm_storeu_ps(b->hi, _mm_max_ps(c, _mm_loadu_ps(b->hi)));
+#else
     aabb c;
     int i;
     for (i = 0; i < 4; i++) c.lo[i] = c.hi[i] = p->lo[i] + p->hi[i];
     aabb_grow(b, &c);
+#endif
 }
 /* Half the surface area; the SAH only compares ratios. */
 static float aabb_area(const aabb *b)
@@ -119,17 +137,40 @@ static int bins_for(int count) { return count < BVH_BINS ? (count < 4 ? 4 : coun
 
 typedef struct { aabb box[3][BVH_BINS]; int n[3][BVH_BINS]; } bins;
 
-static void bin_refs(const primref *r, int n, const aabb *cb, const float scale[3], int nbins, bins *B)
+static void bins_clear(bins *B, int nbins)
 {
-    int a, i, k;
+    int a, k;
     for (a = 0; a < 3; a++)
         for (k = 0; k < nbins; k++) { B->box[a][k] = aabb_empty(); B->n[a][k] = 0; }
-    for (i = 0; i < n; i++)
-        for (a = 0; a < 3; a++) {
-            k = bin_of(&r[i], a, cb, scale[a], nbins);
-            aabb_grow(&B->box[a][k], &r[i]);
-            B->n[a][k]++;
-        }
+}
+static inline void bin_one(const primref *p, const aabb *cb, const float scale[3], int nbins, bins *B)
+{
+    int a, k;
+    for (a = 0; a < 3; a++) {
+        k = bin_of(p, a, cb, scale[a], nbins);
+        aabb_grow(&B->box[a][k], p);
+        B->n[a][k]++;
+    }
+}
+/* Neighbouring primrefs often fall in the same bin, and growing a bin waits for the previous store
+ * to it: with two sets of bins, even and odd primrefs, two such chains run side by side. */
+static void bin_refs(const primref *r, int n, const aabb *cb, const float scale[3], int nbins, bins *B)
+{
+    bins odd;
+    int a, i, k;
+    bins_clear(B, nbins);
+    if (n < 64) {
+        for (i = 0; i < n; i++) bin_one(&r[i], cb, scale, nbins, B);
+        return;
+    }
+    bins_clear(&odd, nbins);
+    for (i = 0; i + 1 < n; i += 2) {
+        bin_one(&r[i], cb, scale, nbins, B);
+        bin_one(&r[i + 1], cb, scale, nbins, &odd);
+    }
+    if (i < n) bin_one(&r[i], cb, scale, nbins, B);
+    for (a = 0; a < 3; a++)
+        for (k = 0; k < nbins; k++) { aabb_grow(&B->box[a][k], &odd.box[a][k]); B->n[a][k] += odd.n[a][k]; }
 }
 
 /* Sweeps the bins of one axis from both ends and keeps the cheapest plane in *best. */
@@ -181,13 +222,14 @@ static void swap_refs(primref *a, primref *b) { primref t = *a; *a = *b; *b = t;
 static int partition(primref *r, int n, const split *s, const aabb *cb, float scale, aabb *lcb, aabb *rcb)
 {
     int i = 0, j = n - 1;
-    *lcb = aabb_empty(); *rcb = aabb_empty();
+    aabb l = aabb_empty(), rt = aabb_empty();   /* locals, not *lcb: kept in registers */
     for (;;) {
-        while (i <= j && bin_of(&r[i], s->axis, cb, scale, s->nbins) < s->bin) aabb_grow_centroid(lcb, &r[i++]);
-        while (i <= j && bin_of(&r[j], s->axis, cb, scale, s->nbins) >= s->bin) aabb_grow_centroid(rcb, &r[j--]);
+        while (i <= j && bin_of(&r[i], s->axis, cb, scale, s->nbins) < s->bin) aabb_grow_centroid(&l, &r[i++]);
+        while (i <= j && bin_of(&r[j], s->axis, cb, scale, s->nbins) >= s->bin) aabb_grow_centroid(&rt, &r[j--]);
         if (i >= j) break;
         swap_refs(&r[i], &r[j]);    /* both now on their side; the loops above grow their bounds */
     }
+    *lcb = l; *rcb = rt;
     return i;
 }
 

@@ -414,7 +414,7 @@ static int build_rec(builder *B, int ni, int first, int count, aabb cb, int dept
 /* The primrefs [first, first + count) of one block. collapse writes these 8 bytes, not the 320 of
  * the block: the first write to a page costs the kernel's zeroing of it, and the blocks' pages are
  * then first written by fill_blocks, on every thread (at 16M triangles, collapse took 0.6-1.4 s
- * of a 3.7 s build on 2 threads, nearly all of it zeroing pages; 0.09 s so). */
+ * of a 3.7 s build on 2 threads, nearly all of it zeroing pages; 0.08-0.37 s so). */
 typedef struct { int first, count; } leaf_span;
 typedef struct {
     const builder *builder;

@@ -159,7 +159,7 @@ static void bin_refs(const primref *r, int n, const aabb *cb, const float scale[
     bins odd;
     int a, i, k;
     bins_clear(B, nbins);
-    if (n < 64) {
+    if (n < 64) {   /* a small node: clearing and merging a second set would cost more than it saves */
         for (i = 0; i < n; i++) bin_one(&r[i], cb, scale, nbins, B);
         return;
     }
@@ -528,10 +528,6 @@ typedef struct {
     aabb box[PARALLEL_MAX_THREADS], cb[PARALLEL_MAX_THREADS];   /* per thread: triangles, centroids */
 } ref_maker;
 
-/* The chunk of a pass over all the triangles or blocks: 8 per thread, so that when the system
- * pauses one thread (a shared machine) the others take its chunks instead of waiting for it. */
-static int pass_grain(int n, int threads) { return parallel_even_grain(n, 8 * threads); }
-
 /* parallel_body: the primrefs of triangles [begin, end), their bounds grown into this thread's. */
 static void make_refs(void *ctx, int thread, int begin, int end)
 {
@@ -748,7 +744,7 @@ static int build_refs(builder *B, const vec3 *P, const int *tri, int ntris, int 
     if (!B->refs) return 0;
     M.P = P; M.tri = tri; M.refs = B->refs;
     for (t = 0; t < threads; t++) M.box[t] = M.cb[t] = aabb_empty();
-    parallel_for(ntris, pass_grain(ntris, threads), threads, make_refs, &M);
+    parallel_for(ntris, parallel_even_grain(ntris, threads), threads, make_refs, &M);
     for (t = 1; t < threads; t++) { aabb_grow(&M.box[0], &M.box[t]); aabb_grow(&M.cb[0], &M.cb[t]); }
     cb[0] = M.box[0]; cb[1] = M.cb[0];
     return ntris;
@@ -787,7 +783,7 @@ static int build_wide(bvh *b, const builder *B, const vec3 *P, const int *tri, i
     if (!b->nodes || !b->blocks || !C.span) { free(C.span); return 0; }
     b->root = collapse(&C, 0, 1);
     assert(b->nblocks <= leaves && wide_tree_valid(b));
-    parallel_for(b->nblocks, pass_grain(b->nblocks, threads), threads, fill_blocks, &C);
+    parallel_for(b->nblocks, parallel_even_grain(b->nblocks, threads), threads, fill_blocks, &C);
     free(C.span);
     return 1;
 }

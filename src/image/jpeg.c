@@ -203,6 +203,7 @@ static int read_sos(jpeg *j, const unsigned char *s, size_t len)
 {
     int i, k;
     if (!j->frame) return jfail(j, "a scan before the frame header");
+    if (len < 1) return jfail(j, "bad SOS segment");   /* its count of components is its first byte */
     j->ns = s[0];
     if (len < 4 + 2 * (size_t)j->ns || j->ns < 1 || j->ns > j->nc) return jfail(j, "bad SOS segment");
     for (i = 0; i < j->ns; i++) {

@@ -34,7 +34,7 @@ say "1. first image"
 "$P" render $CB --threads 2 --size 256x256 --spp 128 --seed 1 -o $G/cornell.png 2> "$W/first.err"
 grep -E " triangles | spp, .*Mrays/s" "$W/first.err" > $G/first-render.txt   # the scene line and the stats line (not the progress lines of a log)
 # rays per sample, from the counts of the stats line
-sed -n 's/.*(camera \([0-9]*\), continuation \([0-9]*\), shadow \([0-9]*\)).*/\1 \2 \3/p' "$W/first.err" |
+sed -n 's/.*(camera \([0-9]*\), continuation \([0-9]*\), shadow \([0-9]*\);.*/\1 \2 \3/p' "$W/first.err" |
     awk '{ printf "per camera ray: %.2f continuation rays, %.2f shadow rays\n", $2 / $1, $3 / $1 }' >> $G/first-render.txt
 
 # ---- 2. L0 ... L4 --------------------------------------------------------------------------------

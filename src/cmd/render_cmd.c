@@ -226,10 +226,13 @@ int render_main(int argc, char **argv)
     if (scene_load(&s, a.scene, &a.so, a.ro.threads, a.ro.quiet)) return 2;
     if (scene_add_sky(&s, &a.ro.sky)) { scene_free(&s); return 2; }
     if (!a.ro.quiet) {
-        char tex[48] = "";
+        char tex[48] = "", pairs[96] = "";
         if (s.m.ntextures > 0) snprintf(tex, sizeof tex, ", %d texture%s", s.m.ntextures, s.m.ntextures > 1 ? "s" : "");
-        fprintf(stderr, "%s: %d triangles (%d degenerate dropped), %d emitting, %d materials%s; loaded in %.0f ms, BVH in %.0f ms\n",
-                shown(a.scene), s.m.ntris, s.m.ndegenerate, s.lights.n, s.m.nmats - 1, tex, 1e3 * s.load_seconds, 1e3 * s.bvh_seconds);
+        if (s.m.ntris <= VISIBILITY_MAX_TRIS && s.lights.n > 0)
+            snprintf(pairs, sizeof pairs, "; %ld of %ld triangle-emitter pairs need no shadow ray (%.0f ms)", s.wholly_seen.npairs,
+                     (long)s.m.ntris * s.lights.n, 1e3 * s.pairs_seconds);
+        fprintf(stderr, "%s: %d triangles (%d degenerate dropped), %d emitting, %d materials%s; loaded in %.0f ms, BVH in %.0f ms%s\n",
+                shown(a.scene), s.m.ntris, s.m.ndegenerate, s.lights.n, s.m.nmats - 1, tex, 1e3 * s.load_seconds, 1e3 * s.bvh_seconds, pairs);
     }
     if (render_make_camera(&a, &s, &cam)) { scene_free(&s); return 2; }
     if (!scene_has_light(&s))

@@ -230,6 +230,7 @@ static void add_stats(trace_stats *sum, const trace_stats *st)
     sum->camera_rays += st->camera_rays;
     sum->continuation_rays += st->continuation_rays;
     sum->shadow_rays += st->shadow_rays;
+    sum->shadow_rays_spared += st->shadow_rays_spared;
     sum->paths_cut += st->paths_cut;
 }
 
@@ -329,10 +330,10 @@ void render_print_stats(const render_result *r, int spp, int64_t had, int npixel
     uint64_t rays = st->camera_rays + st->continuation_rays + st->shadow_rays;
     if (had > 0) fprintf(stderr, "%.2f s, %lld spp in all (%d added to the %lld it had)", r->seconds, (long long)(had + spp), spp, (long long)had);
     else fprintf(stderr, "%.2f s, %d spp", r->seconds, spp);
-    fprintf(stderr, ", %.2f Msamples/s, %.2f Mrays/s (camera %llu, continuation %llu, shadow %llu), "
-            "%llu NaN/Inf samples, %llu paths cut at %d bounces\n",
+    fprintf(stderr, ", %.2f Msamples/s, %.2f Mrays/s (camera %llu, continuation %llu, shadow %llu; "
+            "%llu shadow rays not traced: nothing could block them), %llu NaN/Inf samples, %llu paths cut at %d bounces\n",
             (double)spp * npixels / secs * 1e-6, (double)rays / secs * 1e-6,
             (unsigned long long)st->camera_rays, (unsigned long long)st->continuation_rays,
-            (unsigned long long)st->shadow_rays, (unsigned long long)r->nonfinite,
+            (unsigned long long)st->shadow_rays, (unsigned long long)st->shadow_rays_spared, (unsigned long long)r->nonfinite,
             (unsigned long long)st->paths_cut, BOUNCES_CAP);
 }

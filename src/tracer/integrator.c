@@ -31,6 +31,7 @@ const char *const DIRECT_STRATEGY_NAMES[] = {"light", "brdf", "mis-balance", "mi
  * where rays leave from. */
 typedef struct {
     vec3 pos, n, ng, wo_local;
+    int tri;                  /* its triangle */
     float scale;              /* triangle_scale of its triangle, for offset_ray_origin */
     frame frame;              /* n is its z axis */
     int shaded;               /* n is not ng */
@@ -45,6 +46,7 @@ static void make_vertex(vertex *v, const scene *sc, const integrator_opts *opt, 
 {
     vec3 wo = v3_scale(dir, -1.0f / v3_length(dir));
     v->pos = scene_hit_point(sc, h);
+    v->tri = h->tri;
     v->scale = scene_triangle_scale(sc, h->tri);
     v->ng = sc->Ng[h->tri];
     if (v3_dot(v->ng, wo) < 0.0f) v->ng = v3_scale(v->ng, -1.0f);   /* the BRDF is two-sided */
@@ -122,10 +124,16 @@ static vec3 sample_dir(const integrator_opts *opt, const vertex *p, const vertex
     return wi_local;
 }
 
-/* The shadow ray from just off p to just off s: no epsilon on t, the offsets keep both surfaces out. */
+/* The shadow ray from just off p to just off s: no epsilon on t, the offsets keep both surfaces out.
+ * None is needed when nothing can come between p's triangle and s's (a wall and the light of an
+ * empty box: visibility.h). */
 static int visible(const scene *sc, const vertex *p, const light_sample *s, trace_stats *st)
 {
     ray shadow;
+    if (sees_wholly(&sc->wholly_seen, p->tri, s->emitter)) {
+        st->shadow_rays_spared++;
+        return 1;
+    }
     shadow.o = offset_ray_origin(p->pos, p->ng, p->scale);
     shadow.d = v3_sub(offset_ray_origin(s->pos, s->n, scene_triangle_scale(sc, sc->lights.e[s->emitter].tri)), shadow.o);
     shadow.tmax = 1.0f;

@@ -39,6 +39,7 @@ typedef struct {
 
 typedef struct {
     uint64_t camera_rays, continuation_rays, shadow_rays;
+    uint64_t shadow_rays_spared;   /* not traced: nothing could block them (visibility.h) */
     uint64_t paths_cut;       /* paths that reached BOUNCES_CAP bounces, cut there (--bounces A:inf) */
 } trace_stats;
 

@@ -45,6 +45,17 @@ static void warn_energy(const mesh *m, brdf_model model, int quiet)
     fprintf(stderr, "; --material diffuse ignores Ks\n");
 }
 
+/* The pairs of sc->wholly_seen (visibility.h), for the emitters' triangles; 0 on success. */
+static int wholly_seen_pairs(scene *sc)
+{
+    int *emitter_tri = malloc(sizeof(int) * (size_t)(sc->lights.n > 0 ? sc->lights.n : 1)), i, fails;
+    if (!emitter_tri) return 1;
+    for (i = 0; i < sc->lights.n; i++) emitter_tri[i] = sc->lights.e[i].tri;
+    fails = pair_visibility_build(&sc->wholly_seen, sc->m.P, sc->m.tri, sc->m.ntris, emitter_tri, sc->lights.n);
+    free(emitter_tri);
+    return fails;
+}
+
 int scene_load(scene *sc, const char *path, const scene_opts *so, int threads, int quiet)
 {
     double t0;
@@ -71,6 +82,13 @@ int scene_load(scene *sc, const char *path, const scene_opts *so, int threads, i
         scene_free(sc);
         return 1;
     }
+    t0 = clock_seconds();
+    if (wholly_seen_pairs(sc)) {
+        fprintf(stderr, "%s: out of memory finding the triangles that see a light wholly\n", shown(path));
+        scene_free(sc);
+        return 1;
+    }
+    sc->pairs_seconds = clock_seconds() - t0;
     return 0;
 }
 
@@ -78,6 +96,7 @@ void scene_free(scene *sc)
 {
     bvh_free(sc->accel);
     light_free(&sc->lights);
+    pair_visibility_free(&sc->wholly_seen);
     sky_free(&sc->sky);
     free(sc->Ng);
     free(sc->area);

@@ -3,11 +3,13 @@
  * the emitters by power: an emitter's is pi x area x luminance(Ke) (one-sided, Lambertian), the
  * sky's is the flux it sends into the scene's bounding sphere of radius R, pi R^2 x the integral of
  * its luminance over the sphere (= pi x 4 pi R^2 x its mean luminance: each point of the sphere
- * receives pi x the mean from the inner hemisphere); then an emitter by --light. */
+ * receives pi x the mean from the inner hemisphere); then an emitter by --light. In a small scene,
+ * the pairs of a triangle and an emitter that nothing can come between (visibility.h). */
 #ifndef PATHLAB_SCENE_H
 #define PATHLAB_SCENE_H
 #include "geometry/bvh.h"
 #include "geometry/ray.h"
+#include "geometry/visibility.h"
 #include "tracer/light.h"
 #include "tracer/sky.h"
 #include "scene/mesh.h"
@@ -28,10 +30,11 @@ typedef struct {
     float *area;
     float *scale;    /* triangle_scale per triangle (for offset_ray_origin): computed once, at load */
     light_set lights;
+    pair_visibility wholly_seen;   /* (triangle, emitter) pairs no shadow ray between can be blocked */
     sky sky;         /* the light from infinitely far away; none (w = 0) without --sky */
     double sky_prob; /* the probability that light sampling chooses the sky (the rest: an emitter) */
     float emitter_prob;   /* 1 - sky_prob, rounded once */
-    double load_seconds, bvh_seconds;   /* parse time, BVH build time */
+    double load_seconds, bvh_seconds, pairs_seconds;   /* parse time, BVH build time, wholly_seen's */
 } scene;
 
 /* Loads the OBJ at path with the options so (NULL: the defaults) and builds everything with up to

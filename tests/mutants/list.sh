@@ -38,6 +38,7 @@ mutant acne                     test_bvh       PATHLAB_TEST_QUICK=1
 mutant bvh-first-hit            test_bvh       PATHLAB_TEST_QUICK=1
 mutant bvh-child-slot           test_bvh       PATHLAB_TEST_QUICK=1
 mutant bvh-tie-order            test_bvh       PATHLAB_TEST_QUICK=1
+mutant visibility-one-side      test_visibility -
 # ---- samples and merges (references for any view, docs/references.md) ----
 mutant sample-stream-no-index   test_passes    -
 mutant merge-unweighted         test_passes    -

@@ -1,0 +1,201 @@
+/* visibility.c — the pairs of visibility.h, by separating planes.
+ *
+ * A segment from a point p of A to a point s of E lies in the convex hull H of their six corners.
+ * A triangle T can cross it only where T meets H, and cannot when a plane separates them:
+ *  - T's own, with H on one closed side: the open segment stays off that plane, or runs in it, where
+ *    the watertight test finds no hit (det = 0);
+ *  - A's, with E on one closed side and T on the other: a shadow ray leaves A toward s, cos(theta_p)
+ *    > 0, so it runs strictly on E's side (two walls meeting in a ridge);
+ *  - E's, with A and T on either side: the ray comes to s from E's front, cos(theta_s) > 0.
+ * And a T in the plane of A or of E cannot either: the ray leaves the one and stops before the
+ * other. A pair is clear when every T is such: with each side of each plane a bit per triangle
+ * (class_of), a pair takes a few ANDs and ORs per 64 triangles.
+ *
+ * "On the plane" means within 2^-30 of the coordinates (TOL_RELATIVE), 1/64 of a float ulp: in
+ * doubles the distances of float corners to a plane are exact to ~2^-50, so a T that only touches H
+ * (two walls meeting at an edge, at a shared corner) leaves H on one side, and a T that goes in any
+ * further blocks the pair. The test is on the triangles themselves: a shadow ray's ends are moved
+ * off them by offset_ray_origin (16 ulps), and p is rounded. So within ~16 ulps of an edge where A
+ * meets a tilted wall, a traced ray could start just behind that wall and find it at t ~ 1e-7; the
+ * pair says lit, which is the answer without the move (on McGuire's boxes the images are the same
+ * bit for bit: tests/test_visibility_render.sh). */
+#include "geometry/visibility.h"
+#include "geometry/ray.h"
+#include "math/dvec.h"
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define TOL_RELATIVE 0x1p-30
+/* hull_apart is 65 axes, ~1 us: at most this many per scene (a quarter of a second) */
+#define HULL_TESTS_MAX 250000L
+
+/* b - a: dvec.h has the sum s a + r b, which for b - a would multiply by 1 and -1 */
+static dvec dv_sub(dvec b, dvec a) { return dv(b.x - a.x, b.y - a.y, b.z - a.z); }
+
+/* A triangle in doubles: its corners, its plane's normal N (not unit), |N| and its scale (largest
+ * |coordinate|). */
+typedef struct { dvec c[3], N; double lenN, scale; } dtri;
+
+static void dtri_make(dtri *t, const vec3 *P, const int *corner)
+{
+    vec3 a = P[corner[0]], b = P[corner[1]], c = P[corner[2]];
+    t->c[0] = dv_of(a); t->c[1] = dv_of(b); t->c[2] = dv_of(c);
+    t->N = dv_cross(dv_sub(t->c[1], t->c[0]), dv_sub(t->c[2], t->c[0]));
+    t->lenN = sqrt(dv_dot(t->N, t->N));
+    t->scale = triangle_scale(a, b, c);
+}
+
+enum { ABOVE = 1, BELOW = 2, IN_PLANE = 4 };
+
+/* Where X lies against T's plane: ABOVE if its corners are on N's side or on the plane, BELOW if
+ * on the other side or on it, IN_PLANE if on it (both). A T whose plane is not a number (no normal:
+ * never in practice, the parser drops zero areas) gets 0: it blocks. */
+static int class_of(const dtri *T, const dtri *X)
+{
+    double tol = TOL_RELATIVE * T->lenN * (T->scale + X->scale), lo = INFINITY, hi = -INFINITY;
+    int k, cls = 0;
+    if (!(T->lenN > 0.0) || !(tol < INFINITY)) return 0;
+    for (k = 0; k < 3; k++) {
+        double s = dv_dot(T->N, dv_sub(X->c[k], T->c[0]));
+        lo = s < lo ? s : lo;
+        hi = s > hi ? s : hi;
+    }
+    if (lo >= -tol) cls |= ABOVE;
+    if (hi <= tol) cls |= BELOW;
+    if (cls == (ABOVE | BELOW)) cls |= IN_PLANE;
+    return cls;
+}
+
+/* Separating-axis test of T against the hull H of A's and E's corners, for a pair that the planes of
+ * T, A and E could not clear (folded walls: two triangles of a quad that is not flat). A separating
+ * plane of two convex sets is parallel to a face of one of them or to an edge of each: the faces of
+ * H are among the planes through 3 of its 6 points, T's face was tried, and the edge pairs give 15 x
+ * 3 axes. Touching counts as separated, as above; a segment that could then meet T lies in the plane
+ * through that contact, a set of segments of measure zero. */
+static int apart_on_axis(dvec axis, const dvec *h, int nh, const dvec *t, double tol)
+{
+    double hlo = INFINITY, hhi = -INFINITY, tlo = INFINITY, thi = -INFINITY;
+    int k;
+    for (k = 0; k < nh; k++) {
+        double s = dv_dot(axis, h[k]);
+        hlo = s < hlo ? s : hlo, hhi = s > hhi ? s : hhi;
+    }
+    for (k = 0; k < 3; k++) {
+        double s = dv_dot(axis, t[k]);
+        tlo = s < tlo ? s : tlo, thi = s > thi ? s : thi;
+    }
+    return hhi <= tlo + tol || thi <= hlo + tol;
+}
+
+static int hull_apart(const dtri *A, const dtri *E, const dtri *T)
+{
+    dvec h[6], axis;
+    double scale = (A->scale > E->scale ? A->scale : E->scale) + T->scale, len;
+    int i, j, k;
+    for (k = 0; k < 3; k++) h[k] = A->c[k], h[3 + k] = E->c[k];
+    for (i = 0; i < 6; i++)
+        for (j = i + 1; j < 6; j++) {
+            for (k = j + 1; k < 6; k++) {   /* planes through three points of H */
+                axis = dv_cross(dv_sub(h[j], h[i]), dv_sub(h[k], h[i]));
+                len = sqrt(dv_dot(axis, axis));
+                if (len > 0.0 && apart_on_axis(axis, h, 6, T->c, 2.0 * TOL_RELATIVE * len * scale)) return 1;
+            }
+            for (k = 0; k < 3; k++) {       /* an edge of H and an edge of T */
+                axis = dv_cross(dv_sub(h[j], h[i]), dv_sub(T->c[(k + 1) % 3], T->c[k]));
+                len = sqrt(dv_dot(axis, axis));
+                if (len > 0.0 && apart_on_axis(axis, h, 6, T->c, 2.0 * TOL_RELATIVE * len * scale)) return 1;
+            }
+        }
+    return 0;
+}
+
+/* The sides of every plane, as bit tables of one row of `words` words per triangle: row X of
+ * above, below and in_plane has bit T set when X is so against T's plane (class_of); row T of
+ * above_of and below_of has bit X set when X is above or below T's plane (the same, transposed). */
+typedef struct {
+    size_t words;
+    uint64_t *above, *below, *in_plane, *above_of, *below_of;
+} sides;
+
+static const uint64_t *row(const uint64_t *table, const sides *s, int i) { return table + (size_t)i * s->words; }
+static int bit(const uint64_t *table, const sides *s, int i, int j) { return (int)(row(table, s, i)[j >> 6] >> (j & 63) & 1); }
+
+/* 1 if no triangle can block a segment from triangle a to triangle e: every T has a separating plane,
+ * its own (a and e on one side of it), a's (T and e on either side) or e's (T and a on either side),
+ * or else hull_apart finds one, while *budget lasts (then T blocks). */
+static int pair_clear(const sides *s, const dtri *d, int a, int e, int ntris, long *budget)
+{
+    /* e below a's plane (bit a of e's row): then every T above it is kept off, and so on */
+    uint64_t e_below_a = 0 - (uint64_t)bit(s->below, s, e, a), e_above_a = 0 - (uint64_t)bit(s->above, s, e, a);
+    uint64_t a_below_e = 0 - (uint64_t)bit(s->below, s, a, e), a_above_e = 0 - (uint64_t)bit(s->above, s, a, e);
+    size_t w;
+    for (w = 0; w < s->words; w++) {
+        uint64_t all = w + 1 < s->words || ntris % 64 == 0 ? ~(uint64_t)0 : ((uint64_t)1 << (ntris % 64)) - 1;
+        uint64_t own = row(s->in_plane, s, a)[w] | row(s->in_plane, s, e)[w] | (row(s->above, s, a)[w] & row(s->above, s, e)[w]) |
+                       (row(s->below, s, a)[w] & row(s->below, s, e)[w]);
+        uint64_t by_a = (e_below_a & row(s->above_of, s, a)[w]) | (e_above_a & row(s->below_of, s, a)[w]);
+        uint64_t by_e = (a_below_e & row(s->above_of, s, e)[w]) | (a_above_e & row(s->below_of, s, e)[w]);
+        uint64_t left = ~(own | by_a | by_e) & all;
+        int k;
+        for (k = 0; k < 64; k++) {
+            if (!(left >> k & 1)) continue;
+            if (*budget <= 0) return 0;
+            --*budget;
+            if (!hull_apart(&d[a], &d[e], &d[w * 64 + (size_t)k])) return 0;
+        }
+    }
+    return 1;
+}
+
+int pair_visibility_build(pair_visibility *pv, const vec3 *P, const int *tri, int ntris, const int *emitter_tri, int nemitters)
+{
+    sides s;
+    uint64_t *tables;
+    dtri *d;
+    size_t nbits = (size_t)ntris * (size_t)(nemitters > 0 ? nemitters : 0), table, i;
+    long budget = HULL_TESTS_MAX;
+    int t, x, e;
+    memset(pv, 0, sizeof *pv);
+    pv->ntris = ntris, pv->nemitters = nemitters;
+    if (ntris <= 0 || ntris > VISIBILITY_MAX_TRIS || nemitters <= 0) return 0;
+    s.words = ((size_t)ntris + 63) / 64;
+    table = s.words * (size_t)ntris;
+    d = malloc(sizeof *d * (size_t)ntris);
+    tables = calloc(5 * table, sizeof *tables);
+    pv->bits = calloc((nbits + 7) / 8, 1);
+    if (!d || !tables || !pv->bits) {
+        free(d); free(tables); pair_visibility_free(pv);
+        return 1;
+    }
+    s.above = tables, s.below = tables + table, s.in_plane = tables + 2 * table;
+    s.above_of = tables + 3 * table, s.below_of = tables + 4 * table;
+    for (t = 0; t < ntris; t++) dtri_make(&d[t], P, tri + 3 * t);
+    for (t = 0; t < ntris; t++)
+        for (x = 0; x < ntris; x++) {
+            int cls = class_of(&d[t], &d[x]);
+            uint64_t bit_t = (uint64_t)1 << (t & 63), bit_x = (uint64_t)1 << (x & 63);
+            size_t wx = (size_t)x * s.words + (size_t)(t >> 6), wt = (size_t)t * s.words + (size_t)(x >> 6);
+            if (cls & ABOVE) s.above[wx] |= bit_t, s.above_of[wt] |= bit_x;
+            if (cls & BELOW) s.below[wx] |= bit_t, s.below_of[wt] |= bit_x;
+            if (cls & IN_PLANE) s.in_plane[wx] |= bit_t;
+        }
+    for (t = 0; t < ntris; t++)
+        for (e = 0; e < nemitters; e++)
+            if (emitter_tri[e] != t && pair_clear(&s, d, t, emitter_tri[e], ntris, &budget)) {   /* an emitter does not light itself */
+                i = (size_t)t * (size_t)nemitters + (size_t)e;
+                pv->bits[i >> 3] |= (unsigned char)(1u << (i & 7));
+                pv->npairs++;
+            }
+    free(d);
+    free(tables);
+    return 0;
+}
+
+void pair_visibility_free(pair_visibility *pv)
+{
+    free(pv->bits);
+    pv->bits = NULL;
+    pv->npairs = 0;
+}

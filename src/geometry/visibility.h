@@ -1,0 +1,33 @@
+/* visibility.h — pairs of triangles that see each other wholly: V(p, s) = 1 for every point p of a
+ * triangle A and every point s of an emitter E, because the plane of each other triangle leaves A
+ * and E on one side of it (or holds A or E, which a ray leaving A or ending at E never crosses). A
+ * shadow ray between such a pair cannot be blocked, so it need not be traced: in an empty box every
+ * wall sees every light so. Found once per scene with plane tests, quadratic in the triangles: only
+ * for scenes of at most VISIBILITY_MAX_TRIS triangles (others get no pairs, and every shadow ray). */
+#ifndef PATHLAB_VISIBILITY_H
+#define PATHLAB_VISIBILITY_H
+#include "math/vec.h"
+#include <stddef.h>
+
+#define VISIBILITY_MAX_TRIS 1024
+
+typedef struct {
+    unsigned char *bits;   /* bit t * nemitters + e: triangle t and emitter e see each other wholly */
+    int ntris, nemitters;
+    long npairs;           /* how many such pairs */
+} pair_visibility;
+
+/* Finds the pairs between the ntris triangles (corners P[tri[3 t + k]]) and the nemitters emitters,
+ * emitter e being triangle emitter_tri[e]. 0 on success (also when the scene is too big: no pairs),
+ * 1 when out of memory. */
+int pair_visibility_build(pair_visibility *pv, const vec3 *P, const int *tri, int ntris, const int *emitter_tri, int nemitters);
+void pair_visibility_free(pair_visibility *pv);
+
+/* 1 if nothing can block a segment from triangle t to emitter e (p and s offset off their triangles
+ * by offset_ray_origin, as shadow rays are). */
+static inline int sees_wholly(const pair_visibility *pv, int t, int e)
+{
+    size_t i = (size_t)t * (size_t)pv->nemitters + (size_t)e;
+    return pv->bits && (pv->bits[i >> 3] >> (i & 7) & 1);
+}
+#endif

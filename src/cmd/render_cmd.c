@@ -228,7 +228,7 @@ int render_main(int argc, char **argv)
     if (!a.ro.quiet) {
         char tex[48] = "", pairs[96] = "";
         if (s.m.ntextures > 0) snprintf(tex, sizeof tex, ", %d texture%s", s.m.ntextures, s.m.ntextures > 1 ? "s" : "");
-        if (s.m.ntris <= VISIBILITY_MAX_TRIS && s.lights.n > 0)
+        if (s.wholly_seen.bits)   /* the table was made: a small scene with lights */
             snprintf(pairs, sizeof pairs, "; %ld of %ld triangle-emitter pairs need no shadow ray (%.0f ms)", s.wholly_seen.npairs,
                      (long)s.m.ntris * s.lights.n, 1e3 * s.pairs_seconds);
         fprintf(stderr, "%s: %d triangles (%d degenerate dropped), %d emitting, %d materials%s; loaded in %.0f ms, BVH in %.0f ms%s\n",

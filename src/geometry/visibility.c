@@ -31,9 +31,6 @@
 /* hull_apart is 65 axes, ~1 us: at most this many per scene (a quarter of a second) */
 #define HULL_TESTS_MAX 250000L
 
-/* b - a: dvec.h has the sum s a + r b, which for b - a would multiply by 1 and -1 */
-static dvec dv_sub(dvec b, dvec a) { return dv(b.x - a.x, b.y - a.y, b.z - a.z); }
-
 /* A triangle in doubles: its corners, its plane's normal N (not unit), |N| and its scale (largest
  * |coordinate|). */
 typedef struct { dvec c[3], N; double lenN, scale; } dtri;
@@ -42,29 +39,28 @@ static void dtri_make(dtri *t, const vec3 *P, const int *corner)
 {
     vec3 a = P[corner[0]], b = P[corner[1]], c = P[corner[2]];
     t->c[0] = dv_of(a); t->c[1] = dv_of(b); t->c[2] = dv_of(c);
-    t->N = dv_cross(dv_sub(t->c[1], t->c[0]), dv_sub(t->c[2], t->c[0]));
+    t->N = dv_cross(dv_lin(t->c[1], 1.0, t->c[0], -1.0), dv_lin(t->c[2], 1.0, t->c[0], -1.0));
     t->lenN = sqrt(dv_dot(t->N, t->N));
     t->scale = triangle_scale(a, b, c);
 }
 
-enum { ABOVE = 1, BELOW = 2, IN_PLANE = 4 };
+enum { ABOVE = 1, BELOW = 2 };
 
 /* Where X lies against T's plane: ABOVE if its corners are on N's side or on the plane, BELOW if
- * on the other side or on it, IN_PLANE if on it (both). A T whose plane is not a number (no normal:
- * never in practice, the parser drops zero areas) gets 0: it blocks. */
+ * on the other side or on it; both if on it. A T whose plane is not a number (no normal: never in
+ * practice, the parser drops zero areas) gets 0: it blocks. */
 static int class_of(const dtri *T, const dtri *X)
 {
     double tol = TOL_RELATIVE * T->lenN * (T->scale + X->scale), lo = INFINITY, hi = -INFINITY;
     int k, cls = 0;
     if (!(T->lenN > 0.0) || !(tol < INFINITY)) return 0;
     for (k = 0; k < 3; k++) {
-        double s = dv_dot(T->N, dv_sub(X->c[k], T->c[0]));
+        double s = dv_dot(T->N, dv_lin(X->c[k], 1.0, T->c[0], -1.0));
         lo = s < lo ? s : lo;
         hi = s > hi ? s : hi;
     }
     if (lo >= -tol) cls |= ABOVE;
     if (hi <= tol) cls |= BELOW;
-    if (cls == (ABOVE | BELOW)) cls |= IN_PLANE;
     return cls;
 }
 
@@ -98,12 +94,12 @@ static int hull_apart(const dtri *A, const dtri *E, const dtri *T)
     for (i = 0; i < 6; i++)
         for (j = i + 1; j < 6; j++) {
             for (k = j + 1; k < 6; k++) {   /* planes through three points of H */
-                axis = dv_cross(dv_sub(h[j], h[i]), dv_sub(h[k], h[i]));
+                axis = dv_cross(dv_lin(h[j], 1.0, h[i], -1.0), dv_lin(h[k], 1.0, h[i], -1.0));
                 len = sqrt(dv_dot(axis, axis));
                 if (len > 0.0 && apart_on_axis(axis, h, 6, T->c, 2.0 * TOL_RELATIVE * len * scale)) return 1;
             }
             for (k = 0; k < 3; k++) {       /* an edge of H and an edge of T */
-                axis = dv_cross(dv_sub(h[j], h[i]), dv_sub(T->c[(k + 1) % 3], T->c[k]));
+                axis = dv_cross(dv_lin(h[j], 1.0, h[i], -1.0), dv_lin(T->c[(k + 1) % 3], 1.0, T->c[k], -1.0));
                 len = sqrt(dv_dot(axis, axis));
                 if (len > 0.0 && apart_on_axis(axis, h, 6, T->c, 2.0 * TOL_RELATIVE * len * scale)) return 1;
             }
@@ -112,11 +108,11 @@ static int hull_apart(const dtri *A, const dtri *E, const dtri *T)
 }
 
 /* The sides of every plane, as bit tables of one row of `words` words per triangle: row X of
- * above, below and in_plane has bit T set when X is so against T's plane (class_of); row T of
- * above_of and below_of has bit X set when X is above or below T's plane (the same, transposed). */
+ * above and below has bit T set when X is so against T's plane (class_of; both: X lies in it); row
+ * T of above_of and below_of has bit X set when X is above or below T's plane (the same, transposed). */
 typedef struct {
     size_t words;
-    uint64_t *above, *below, *in_plane, *above_of, *below_of;
+    uint64_t *above, *below, *above_of, *below_of;
 } sides;
 
 static const uint64_t *row(const uint64_t *table, const sides *s, int i) { return table + (size_t)i * s->words; }
@@ -133,8 +129,10 @@ static int pair_clear(const sides *s, const dtri *d, int a, int e, int ntris, lo
     size_t w;
     for (w = 0; w < s->words; w++) {
         uint64_t all = w + 1 < s->words || ntris % 64 == 0 ? ~(uint64_t)0 : ((uint64_t)1 << (ntris % 64)) - 1;
-        uint64_t own = row(s->in_plane, s, a)[w] | row(s->in_plane, s, e)[w] | (row(s->above, s, a)[w] & row(s->above, s, e)[w]) |
-                       (row(s->below, s, a)[w] & row(s->below, s, e)[w]);
+        uint64_t above_a = row(s->above, s, a)[w], below_a = row(s->below, s, a)[w];
+        uint64_t above_e = row(s->above, s, e)[w], below_e = row(s->below, s, e)[w];
+        /* T's plane holds a or e, or has both on one side */
+        uint64_t own = (above_a & below_a) | (above_e & below_e) | (above_a & above_e) | (below_a & below_e);
         uint64_t by_a = (e_below_a & row(s->above_of, s, a)[w]) | (e_above_a & row(s->below_of, s, a)[w]);
         uint64_t by_e = (a_below_e & row(s->above_of, s, e)[w]) | (a_above_e & row(s->below_of, s, e)[w]);
         uint64_t left = ~(own | by_a | by_e) & all;
@@ -158,19 +156,18 @@ int pair_visibility_build(pair_visibility *pv, const vec3 *P, const int *tri, in
     long budget = HULL_TESTS_MAX;
     int t, x, e;
     memset(pv, 0, sizeof *pv);
-    pv->ntris = ntris, pv->nemitters = nemitters;
+    pv->nemitters = nemitters;
     if (ntris <= 0 || ntris > VISIBILITY_MAX_TRIS || nemitters <= 0) return 0;
     s.words = ((size_t)ntris + 63) / 64;
     table = s.words * (size_t)ntris;
     d = malloc(sizeof *d * (size_t)ntris);
-    tables = calloc(5 * table, sizeof *tables);
+    tables = calloc(4 * table, sizeof *tables);
     pv->bits = calloc((nbits + 7) / 8, 1);
     if (!d || !tables || !pv->bits) {
         free(d); free(tables); pair_visibility_free(pv);
         return 1;
     }
-    s.above = tables, s.below = tables + table, s.in_plane = tables + 2 * table;
-    s.above_of = tables + 3 * table, s.below_of = tables + 4 * table;
+    s.above = tables, s.below = tables + table, s.above_of = tables + 2 * table, s.below_of = tables + 3 * table;
     for (t = 0; t < ntris; t++) dtri_make(&d[t], P, tri + 3 * t);
     for (t = 0; t < ntris; t++)
         for (x = 0; x < ntris; x++) {
@@ -179,7 +176,6 @@ int pair_visibility_build(pair_visibility *pv, const vec3 *P, const int *tri, in
             size_t wx = (size_t)x * s.words + (size_t)(t >> 6), wt = (size_t)t * s.words + (size_t)(x >> 6);
             if (cls & ABOVE) s.above[wx] |= bit_t, s.above_of[wt] |= bit_x;
             if (cls & BELOW) s.below[wx] |= bit_t, s.below_of[wt] |= bit_x;
-            if (cls & IN_PLANE) s.in_plane[wx] |= bit_t;
         }
     for (t = 0; t < ntris; t++)
         for (e = 0; e < nemitters; e++)

@@ -1,9 +1,9 @@
 /* visibility.h — pairs of triangles that see each other wholly: V(p, s) = 1 for every point p of a
- * triangle A and every point s of an emitter E, because the plane of each other triangle leaves A
- * and E on one side of it (or holds A or E, which a ray leaving A or ending at E never crosses). A
- * shadow ray between such a pair cannot be blocked, so it need not be traced: in an empty box every
- * wall sees every light so. Found once per scene with plane tests, quadratic in the triangles: only
- * for scenes of at most VISIBILITY_MAX_TRIS triangles (others get no pairs, and every shadow ray). */
+ * triangle A and every point s of an emitter E, because a plane separates each other triangle from
+ * them (its own, A's, E's, or one of a separating-axis test: visibility.c). A shadow ray between
+ * such a pair cannot be blocked, so it need not be traced: in an empty box every wall sees every
+ * light so. Found once per scene, quadratic in the triangles: only for scenes of at most
+ * VISIBILITY_MAX_TRIS triangles (others get no table, and every shadow ray). */
 #ifndef PATHLAB_VISIBILITY_H
 #define PATHLAB_VISIBILITY_H
 #include "math/vec.h"
@@ -12,8 +12,9 @@
 #define VISIBILITY_MAX_TRIS 1024
 
 typedef struct {
-    unsigned char *bits;   /* bit t * nemitters + e: triangle t and emitter e see each other wholly */
-    int ntris, nemitters;
+    unsigned char *bits;   /* bit t * nemitters + e: triangle t and emitter e see each other wholly;
+                              NULL: no table (too many triangles, or no emitter) */
+    int nemitters;
     long npairs;           /* how many such pairs */
 } pair_visibility;
 
@@ -28,6 +29,6 @@ void pair_visibility_free(pair_visibility *pv);
 static inline int sees_wholly(const pair_visibility *pv, int t, int e)
 {
     size_t i = (size_t)t * (size_t)pv->nemitters + (size_t)e;
-    return pv->bits && (pv->bits[i >> 3] >> (i & 7) & 1);
+    return pv->bits && (pv->bits[i >> 3] >> (i & 7) & 1);   /* no table: every ray is traced */
 }
 #endif

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # tests/run.sh — runs every test program (build/tests/test_*) and script (tests/test_*.sh), counts
-# their "PASS"/"FAIL" lines and ends with the line "N passed, N failed". A program that exits nonzero
+# their "PASS"/"FAIL" lines and ends with the failed checks again (a CI page may show only the tail)
+# and the line "N passed, N failed". A program that exits nonzero
 # without printing a FAIL line (a crash, a sanitizer report) counts as one failure.
 # Environment: BUILD (build folder, default build), PATHLAB (the program, default ./pathlab),
 # TEST_JOBS (how many test files run at once, default 2: much of a test file is serial — the shell,
@@ -103,6 +104,8 @@ report() {   # NAME: prints the file's FAIL lines and its count line, adds to th
         f=1
     fi
     grep -E '^(FAIL|SKIP) ' "$log/$name.out" | sed "s/^/  [$name] /"
+    [ "$f" -gt 0 ] && { grep -E '^FAIL ' "$log/$name.out" || echo "FAIL exited with status $rc"; } |
+        head -n 5 | cut -c 1-300 | sed "s/^/  [$name] /" >> "$log/failures"
     printf '%-28s %3d passed, %d failed%s  (%d.%02ds)\n' "$name" "$p" "$f" "$([ "$k" -gt 0 ] && echo ", $k skipped")" \
         $((ms / 1000)) $((ms % 1000 / 10))
     passed=$((passed + p)); failed=$((failed + f)); skipped=$((skipped + k))
@@ -139,5 +142,7 @@ if [ -z "$only" ] && [ -z "${TEST_EXCLUDE:-}" ] && [ "${TEST_SOURCE_ONLY:-run}" 
         failed=$((failed + 1))
     fi
 fi
+# The failures again, last: a CI page that shows only the log's tail still names them.
+if [ -s "$log/failures" ]; then echo "the failed checks (at most 5 a file):"; cat "$log/failures"; fi
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

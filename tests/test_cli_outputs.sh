@@ -47,9 +47,11 @@ refuse "compare -o a file" "exists and is not a folder" $PATHLAB compare $S --es
 ls "$TMP"/no > /dev/null 2>&1 && fail "a refused run created $TMP/no" || pass "no refused run created a folder or file"
 
 # a --split/--variance set that fails at the end is not written at all: the folder named like
-# a layer's variance appears while the render runs (after the checks), so the rename would fail
+# a layer's variance appears while the render runs (after the checks), so the rename would fail.
+# --time 1.5, not a number of spp: the render outlasts the 0.3 s before the mkdir on any machine
+# (2000 spp took 1.1 s on a loaded one, and a faster build or machine would have beaten it).
 mkdir -p "$TMP/set"
-$PATHLAB render $S --size 32x32 --spp 2000 --bounces 0:3 --split --quiet -o "$TMP/set/b.pfm" --variance "$TMP/set/b_var.pfm" &
+$PATHLAB render $S --size 32x32 --time 1.5 --bounces 0:3 --split --quiet -o "$TMP/set/b.pfm" --variance "$TMP/set/b_var.pfm" &
 pid=$!
 sleep 0.3; mkdir "$TMP/set/b_var_L2.pfm"
 wait $pid; rc=$?

@@ -6,7 +6,8 @@
  *  2. Closed meshes (an icosphere, a cube of many triangles), also moved 1e4 away: rays from inside
  *     and from outside aimed exactly at shared vertices and at points of shared edges never miss.
  *  3. tmax: a hit at t is reported with tmax = next float above t, not with tmax = t.
- *  4. Builds with 1, 2, 3 and 8 threads give the same hits.
+ *  4. Builds with 1, 2, 3 and 8 threads give the same hits; past 2^20 triangles (the root binned on
+ *     two threads), the tree of 2 threads is that of 1.
  *  5. offset_ray_origin: rays leaving points of triangles 1e5 from the origin never hit their own;
  *     its move is 16 ldexpf(1, ilogbf(fmaxf(scale, FLT_MIN)) - 23) (the libm formula it replaced)
  *     for every kind of scale, and triangle_scale is the largest |coordinate|.
@@ -276,6 +277,46 @@ static void test_soup(int kind, int n, int nrays)
     snprintf(name, sizeof name, "soup_%s_%d%s", kind_name[kind], n, quality_tag());
     check(b && bad == 0, name, "%d of %d rays disagree with brute force (%s); %d hits", bad, nrays, first_why, hits);
     bvh_free(b);
+    soup_free(&s);
+}
+
+/* ---- The root, binned on two threads ------------------------------------------------------------
+ * A node of at least BVH_HALVES_MIN (2^20) triangles is binned in two halves on two threads when a
+ * thread is free, whose bins are merged: the tree must be the one of one pass (a build on one
+ * thread), node for node, and find the same hits, which agree with brute force. */
+static void test_halves(void)
+{
+    soup s = {0};
+    int n = (1 << 20) + 4096, bad = 0, brute = 0, stats[2][3], ok = 1, i, k;
+    bvh *b[2];
+    const char *why = "";
+    for (i = 0; i < n; i++) {   /* tiny triangles: few overlap, so rays and brute force stay quick */
+        vec3 c = i < n / 2 ? rnd_vec(0.5f, 1) : rnd_vec(-1, 1);   /* halves unlike: both must count */
+        add_tri(&s, v3_add(c, rnd_vec(-2e-3f, 2e-3f)), v3_add(c, rnd_vec(-2e-3f, 2e-3f)), v3_add(c, rnd_vec(-2e-3f, 2e-3f)));
+    }
+    for (k = 0; k < 2; k++) {
+        b[k] = bvh_build(s.P, s.tri, s.ntris, k + 1);
+        if (b[k]) bvh_stats(b[k], &stats[k][0], &stats[k][1], &stats[k][2]);
+        ok = ok && b[k];
+    }
+    for (i = 0; i < 2000 && ok; i++) {
+        ray r = random_ray(1.5f);
+        hit h[2];
+        int got[2];
+        if (i % 2) {   /* every other ray at a triangle */
+            int t = (int)(rnd() * (float)s.ntris);
+            vec3 m = v3_scale(v3_add(v3_add(corner(&s, t, 0), corner(&s, t, 1)), corner(&s, t, 2)), 1.0f / 3);
+            r.d = v3_normalize(v3_sub(m, r.o));
+        }
+        for (k = 0; k < 2; k++) got[k] = bvh_intersect(b[k], &r, &h[k]);
+        bad += got[1] != got[0] || (got[0] && (h[1].t != h[0].t || h[1].tri != h[0].tri));
+        if (i < 8) brute += !agrees(b[1], &s, &r, &why);   /* 8: a loop over a million triangles is slow */
+    }
+    ok = ok && !memcmp(stats[0], stats[1], sizeof stats[0]);
+    check(ok && bad == 0 && brute == 0, "root_binned_on_two_threads_same_tree",
+          "%d triangles: %d of 2000 rays differ between 1 and 2 threads, %d of 8 from brute force (%s); nodes %d / %d, leaves %d / %d, depth %d / %d",
+          n, bad, brute, why, stats[0][0], stats[1][0], stats[0][1], stats[1][1], stats[0][2], stats[1][2]);
+    for (k = 0; k < 2; k++) bvh_free(b[k]);
     soup_free(&s);
 }
 
@@ -560,6 +601,7 @@ int main(void)
     test_empty_and_single();
     test_tmax();
     test_threads();
+    test_halves();
     test_watertight();
     test_offset();
     test_offset_formula();

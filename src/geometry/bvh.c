@@ -14,8 +14,8 @@
  *     most BVH_BINARY_LEAF triangles. On the way back up, each node gets the least SAH cost of its
  *     subtree as 1, 2, ... 8 children of a wide node (subtree_cost). The two subtrees of a big
  *     node are built by two threads (a parallel_for of 2 iterations) while the build may start one
- *     more; the tree is the same for any number of threads. Nothing is sorted, nothing allocated
- *     per node.
+ *     more, and the root of a big mesh bins its halves on two threads (bin_node); the tree is the
+ *     same for any number of threads. Nothing is sorted, nothing allocated per node.
  *  2. The binary tree is collapsed into an 8-wide one by those costs: a subtree becomes a leaf (a
  *     block of up to 8 triangles) or a wide node over the cheapest cover of its subtree by at most
  *     8 children (collapse, cover), laid out depth first. A node tests its 8 boxes with the few
@@ -198,21 +198,61 @@ static void sweep_axis(const aabb *box, const int *count, int nbins, int axis, s
     }
 }
 
-/* Cheapest binned SAH split of refs [0, n); 0 when every centroid is the same point. */
-static int find_split(const primref *r, int n, const aabb *cb, split *s, float scale[3])
+/* ---- The biggest nodes (the root's): binned on two threads ---------------------------------------
+ * The root's binning, alone, kept one of two threads idle (0.09 s of a 16M build). A node of at least
+ * BVH_HALVES_MIN refs, when the build may start one more thread, bins each half of its refs on its
+ * own thread and merges the bins: boxes by min and max and counts by sums, exact in any order, so
+ * the bins, the split and the tree are those of one pass. The partition stays one pass: in halves
+ * it must then trade the halves' misplaced refs, as much work again. */
+static int claim_thread(builder *B, int delta);
+typedef struct {
+    const primref *r;
+    int n, half;            /* the halves: [0, half) and [half, n) */
+    const aabb *cb;
+    const float *scale;
+    int nbins;
+    bins bin[2];
+} halves;
+
+/* parallel_body: bins halves [begin, end). */
+static void bin_halves(void *ctx, int thread, int begin, int end)
 {
-    bins B;
+    halves *h = ctx;
+    int i;
+    (void)thread;
+    for (i = begin; i < end; i++)
+        bin_refs(h->r + (i ? h->half : 0), i ? h->n - h->half : h->half, h->cb, h->scale, h->nbins, &h->bin[i]);
+}
+
+/* The bins of refs [0, n): one pass, or two halves on two threads for a big node. */
+static void bin_node(builder *B, const primref *r, int n, const aabb *cb, const float scale[3], int nbins, bins *out)
+{
+    halves h;
+    int a, k;
+    if (n < BVH_HALVES_MIN || !claim_thread(B, -1)) { bin_refs(r, n, cb, scale, nbins, out); return; }
+    h.r = r; h.n = n; h.half = n / 2; h.cb = cb; h.scale = scale; h.nbins = nbins;
+    parallel_for(2, 1, 2, bin_halves, &h);
+    claim_thread(B, +1);
+    *out = h.bin[0];
+    for (a = 0; a < 3; a++)
+        for (k = 0; k < nbins; k++) { aabb_grow(&out->box[a][k], &h.bin[1].box[a][k]); out->n[a][k] += h.bin[1].n[a][k]; }
+}
+
+/* Cheapest binned SAH split of refs [0, n); 0 when every centroid is the same point. */
+static int find_split(builder *B, const primref *r, int n, const aabb *cb, split *s, float scale[3])
+{
+    bins bn;
     int nbins = bins_for(n), a;
     for (a = 0; a < 3; a++) {
         float extent = cb->hi[a] - cb->lo[a];
         scale[a] = extent > 0 ? (float)nbins / extent : 0.0f;
         if (!(scale[a] < FLT_MAX)) scale[a] = 0.0f;   /* a denormal extent: treat the axis as flat */
     }
-    bin_refs(r, n, cb, scale, nbins, &B);
+    bin_node(B, r, n, cb, scale, nbins, &bn);
     s->cost = INFINITY;
     s->nbins = nbins;
     for (a = 0; a < 3; a++)
-        if (scale[a] > 0) sweep_axis(B.box[a], B.n[a], nbins, a, s);
+        if (scale[a] > 0) sweep_axis(bn.box[a], bn.n[a], nbins, a, s);
     return s->cost < INFINITY;
 }
 
@@ -266,7 +306,7 @@ static int choose_split(builder *B, int first, int count, const aabb *cb, int de
     primref *r = B->refs + first;
     float scale[3];
     if (count <= BVH_BINARY_LEAF) return 0;
-    if (depth < BVH_SAH_DEPTH && find_split(r, count, cb, s, scale)) {
+    if (depth < BVH_SAH_DEPTH && find_split(B, r, count, cb, s, scale)) {
         partition(r, count, s, cb, scale[s->axis], lcb, rcb);
         return 1;
     }

@@ -230,7 +230,7 @@ int render_main(int argc, char **argv)
         if (s.m.ntextures > 0) snprintf(tex, sizeof tex, ", %d texture%s", s.m.ntextures, s.m.ntextures > 1 ? "s" : "");
         if (s.wholly_seen.bits)   /* the table was made: a small scene with lights */
             snprintf(pairs, sizeof pairs, "; %ld of %ld triangle-emitter pairs need no shadow ray (%.0f ms)", s.wholly_seen.npairs,
-                     (long)s.m.ntris * s.lights.n, 1e3 * s.pairs_seconds);
+                     (long)s.m.ntris * s.wholly_seen.nemitters, 1e3 * s.pairs_seconds);
         fprintf(stderr, "%s: %d triangles (%d degenerate dropped), %d emitting, %d materials%s; loaded in %.0f ms, BVH in %.0f ms%s\n",
                 shown(a.scene), s.m.ntris, s.m.ndegenerate, s.lights.n, s.m.nmats - 1, tex, 1e3 * s.load_seconds, 1e3 * s.bvh_seconds, pairs);
     }

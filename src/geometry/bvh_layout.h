@@ -30,7 +30,7 @@
 #define BVH_COST_BLOCK 1.0f    /* ... and of testing one block (as measured: alike) */
 #define BVH_SAH_DEPTH 48       /* deeper than this, split in halves: bounds the depth for the stack */
 #define BVH_PARALLEL_MIN 4096  /* a node this big may have its two subtrees built on two threads */
-#define BVH_HALVES_MIN (1 << 20) /* a node this big is binned in two halves, on two threads if one is free */
+#define BVH_HALVES_MIN (1 << 20) /* a node this big is binned in halves on two threads, if one is free */
 #define BVH_MAX_DEPTH 80       /* binary depth <= 48 + 30 (indices < 2^30), wide depth no more */
 #define BVH_STACK (BVH_WIDTH * BVH_MAX_DEPTH) /* traversal stack: < W entries per level */
 

@@ -3,6 +3,8 @@
  *  1. McGuire's CornellBox-Empty-White (its 12 triangles, as in the file): every wall and the light's
  *     other half see each light triangle wholly (22 of 24 pairs; an emitter does not light itself).
  *     A box of 12 triangles floating under the light: no floor triangle sees the light wholly.
+ *     A light just under a huge ground (half-width 1e2 to 1e6, 5e-8 to 1e-3 under it) is hidden from
+ *     a panel over the ground; just over it, it is not.
  *  2. 256 random rooms (a box whose corners are moved by up to 2 %, as McGuire's are, so that its
  *     quads are not flat, folded in or out; or not moved), with 0 to 3 triangles hung inside: for
  *     every pair said clear, 4000 (the first 16 rooms) or 250 segments from a random point of the
@@ -109,6 +111,44 @@ static long blocked_segments(const scene_t *s, const pair_visibility *pv, int pe
     return blocked;
 }
 
+/* A ground of half-width g at y = 0 (triangles 0, 1), a panel at y = 1 over it (2, 3) and a light
+ * (4, 5) at y = light_y, within a few units of the origin: a light just under a huge ground is hidden
+ * from the panel, one just over it is not. */
+static void ground_panel_light(scene_t *s, float g, float light_y)
+{
+    memset(s, 0, sizeof *s);
+    add_quad(s, v3(-g, 0, -g), v3(-g, 0, g), v3(g, 0, g), v3(g, 0, -g), 0);
+    add_quad(s, v3(-0.5f, 1, -0.5f), v3(0.5f, 1, -0.5f), v3(0.5f, 1, 0.5f), v3(-0.5f, 1, 0.5f), 0);
+    add_quad(s, v3(0.25f, light_y, 0.25f), v3(0.25f, light_y, -0.25f), v3(-0.25f, light_y, -0.25f), v3(-0.25f, light_y, 0.25f), 1);
+}
+
+/* How many of the panel's pairs with the light are clear. */
+static int panel_pairs_clear(const pair_visibility *pv) { return sees_wholly(pv, 2, 0) + sees_wholly(pv, 2, 1) + sees_wholly(pv, 3, 0) + sees_wholly(pv, 3, 1); }
+
+/* 1b: the tolerance of "on a plane" follows the terms computed, not the largest coordinate of the
+ * triangles compared: a light 5e-6 under a ground of half-width 1e4 is under it (it was taken as in
+ * its plane, 2^-30 of 1e4 = 9.3e-6, and the panel lit). */
+static void check_mixed_scales(void)
+{
+    static const float cases[][2] = {{1e4f, 5e-6f}, {1e5f, 5e-5f}, {1e6f, 1e-3f}, {1e6f, 1e-5f}, {1e2f, 5e-8f}};
+    scene_t s;
+    pair_visibility pv;
+    int i, under = 0, over = 0, n = (int)(sizeof cases / sizeof cases[0]);
+    for (i = 0; i < n; i++) {
+        ground_panel_light(&s, cases[i][0], -cases[i][1]);
+        build(&s, &pv);
+        if (panel_pairs_clear(&pv)) printf("  ground %g, light %g under it: %d panel-light pairs clear\n", cases[i][0], cases[i][1], panel_pairs_clear(&pv));
+        under += panel_pairs_clear(&pv);
+        pair_visibility_free(&pv);
+        ground_panel_light(&s, cases[i][0], cases[i][1]);
+        build(&s, &pv);
+        over += panel_pairs_clear(&pv);
+        pair_visibility_free(&pv);
+    }
+    check(under == 0, "visibility_light_under_huge_ground", "%d panel-light pairs clear through the ground (%d scenes)", under, n);
+    check(over == 4 * n, "visibility_light_over_huge_ground", "%d of %d panel-light pairs clear with the light over the ground", over, 4 * n);
+}
+
 /* A sphere of 2 nl (nl - 1) triangles (nl >= 3 rings of nl quads, the poles' caps as triangles:
  * no zero-area triangle), centre c, radius r: convex, so its upper triangles see a light above. */
 static void add_sphere(scene_t *s, vec3 c, float r, int nl)
@@ -186,6 +226,7 @@ int main(void)
     blocked = blocked_segments(&s, &pv, 4000, &clear);
     check(blocked == 0 && clear > 0, "visibility_box_under_light_segments", "%ld of %ld segments blocked, %ld pairs clear", blocked, 4000 * clear, clear);
     pair_visibility_free(&pv);
+    check_mixed_scales();
 
     /* 2 */
     for (i = 0; i < rooms; i++) {

@@ -11,37 +11,60 @@
  * other. A pair is clear when every T is such: with each side of each plane a bit per triangle
  * (class_of), a pair takes a few ANDs and ORs per 64 triangles.
  *
- * "On the plane" means within 2^-30 of the coordinates (TOL_RELATIVE), 1/64 of a float ulp: in
- * doubles the distances of float corners to a plane are exact to ~2^-50, so a T that only touches H
- * (two walls meeting at an edge, at a shared corner) leaves H on one side, and a T that goes in any
- * further blocks the pair. The test is on the triangles themselves: a shadow ray's ends are moved
- * off them by offset_ray_origin (16 ulps), and p is rounded. So within ~16 ulps of an edge where A
+ * "On the plane" means within ERROR_BOUND of the terms of the signed distance computed (side_of):
+ * the corners are floats, the distances are computed in doubles, and their rounding error is a few
+ * units of 2^-53 of those terms, bounded here 256 times over. So a T that only touches H (two walls
+ * meeting at an edge, at a shared corner) leaves H on one side, and a T that goes in any further,
+ * by more than ~2^-45 of the lengths involved, blocks the pair. The bound follows the terms, not the
+ * largest coordinate: a light 5e-6 under a ground 1e4 wide is under it (with a tolerance of 2^-30 of
+ * the coordinates, as first written, it was in the ground's plane, and lit what the ground hides;
+ * tests/test_visibility.c, "mixed scales").
+ * The test is on the triangles themselves: a shadow ray's ends are moved off them by
+ * offset_ray_origin (16 ulps), and p is rounded. So within ~16 ulps of an edge where A
  * meets a tilted wall, a traced ray could start just behind that wall and find it at t ~ 1e-7; the
  * pair says lit, which is the answer without the move (on McGuire's boxes the images are the same
  * bit for bit: tests/test_visibility_render.sh). */
 #include "geometry/visibility.h"
-#include "geometry/ray.h"
 #include "math/dvec.h"
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
-#define TOL_RELATIVE 0x1p-30
+/* 2^8 times the few units of 2^-53 that bound the rounding of side_of (its comment) */
+#define ERROR_BOUND 0x1p-45
 /* hull_apart is 65 axes, ~1 us: at most this many per scene (a quarter of a second) */
 #define HULL_TESTS_MAX 250000L
 
-/* A triangle in doubles: its corners, its plane's normal N (not unit), |N| and its scale (largest
- * |coordinate|). */
-typedef struct { dvec c[3], N; double lenN, scale; } dtri;
+/* u x v, and in *terms the magnitudes of its products (|u.y v.z| + |u.z v.y|, ...), which bound
+ * its rounding error. */
+static dvec cross_terms(dvec u, dvec v, dvec *terms)
+{
+    terms->x = fabs(u.y * v.z) + fabs(u.z * v.y);
+    terms->y = fabs(u.z * v.x) + fabs(u.x * v.z);
+    terms->z = fabs(u.x * v.y) + fabs(u.y * v.x);
+    return dv_cross(u, v);
+}
+
+/* N . (p - o), N = u x v from cross_terms (terms M) with u, v differences of float corners, and in
+ * *err a bound on its rounding error: u, v, p - o are each rounded once (relative 2^-53), N's
+ * components then carry at most ~4 units of M, and the dot product adds ~3 of |N_i (p - o)_i|: in
+ * all less than 5 x 2^-53 x sum (|N_i| + M_i) |p_i - o_i|, bounded by ERROR_BOUND of that sum. */
+static double side_of(dvec N, dvec M, dvec o, dvec p, double *err)
+{
+    dvec d = dv_lin(p, 1.0, o, -1.0);
+    *err = ERROR_BOUND * ((fabs(N.x) + M.x) * fabs(d.x) + (fabs(N.y) + M.y) * fabs(d.y) + (fabs(N.z) + M.z) * fabs(d.z));
+    return dv_dot(N, d);
+}
+
+/* A triangle in doubles: its corners, its plane's normal N (not unit) and the terms M of N. */
+typedef struct { dvec c[3], N, M; } dtri;
 
 static void dtri_make(dtri *t, const vec3 *P, const int *corner)
 {
-    vec3 a = P[corner[0]], b = P[corner[1]], c = P[corner[2]];
-    t->c[0] = dv_of(a); t->c[1] = dv_of(b); t->c[2] = dv_of(c);
-    t->N = dv_cross(dv_lin(t->c[1], 1.0, t->c[0], -1.0), dv_lin(t->c[2], 1.0, t->c[0], -1.0));
-    t->lenN = sqrt(dv_dot(t->N, t->N));
-    t->scale = triangle_scale(a, b, c);
+    int k;
+    for (k = 0; k < 3; k++) t->c[k] = dv_of(P[corner[k]]);
+    t->N = cross_terms(dv_lin(t->c[1], 1.0, t->c[0], -1.0), dv_lin(t->c[2], 1.0, t->c[0], -1.0), &t->M);
 }
 
 enum { ABOVE = 1, BELOW = 2 };
@@ -51,17 +74,15 @@ enum { ABOVE = 1, BELOW = 2 };
  * practice, the parser drops zero areas) gets 0: it blocks. */
 static int class_of(const dtri *T, const dtri *X)
 {
-    double tol = TOL_RELATIVE * T->lenN * (T->scale + X->scale), lo = INFINITY, hi = -INFINITY;
-    int k, cls = 0;
-    if (!(T->lenN > 0.0) || !(tol < INFINITY)) return 0;
+    int k, above = 1, below = 1;
+    if (!(dv_dot(T->N, T->N) > 0.0)) return 0;
     for (k = 0; k < 3; k++) {
-        double s = dv_dot(T->N, dv_lin(X->c[k], 1.0, T->c[0], -1.0));
-        lo = s < lo ? s : lo;
-        hi = s > hi ? s : hi;
+        double err, s = side_of(T->N, T->M, T->c[0], X->c[k], &err);
+        if (!(err < INFINITY)) return 0;
+        above &= s >= -err;
+        below &= s <= err;
     }
-    if (lo >= -tol) cls |= ABOVE;
-    if (hi <= tol) cls |= BELOW;
-    return cls;
+    return (above ? ABOVE : 0) | (below ? BELOW : 0);
 }
 
 /* Separating-axis test of T against the hull H of A's and E's corners, for a pair that the planes of
@@ -70,38 +91,39 @@ static int class_of(const dtri *T, const dtri *X)
  * H are among the planes through 3 of its 6 points, T's face was tried, and the edge pairs give 15 x
  * 3 axes. Touching counts as separated, as above; a segment that could then meet T lies in the plane
  * through that contact, a set of segments of measure zero. */
-static int apart_on_axis(dvec axis, const dvec *h, int nh, const dvec *t, double tol)
+/* The projections on the axis N (terms M), from o, are compared with their error bounds (side_of):
+ * apart when H's highest point may be no higher than T's lowest, or the other way round, which a
+ * contact gives whatever the rounding. */
+static int apart_on_axis(dvec N, dvec M, dvec o, const dvec *h, const dvec *t)
 {
-    double hlo = INFINITY, hhi = -INFINITY, tlo = INFINITY, thi = -INFINITY;
+    double hlo = INFINITY, hhi = -INFINITY, tlo = INFINITY, thi = -INFINITY, s, err;
     int k;
-    for (k = 0; k < nh; k++) {
-        double s = dv_dot(axis, h[k]);
-        hlo = s < hlo ? s : hlo, hhi = s > hhi ? s : hhi;
+    if (!(dv_dot(N, N) > 0.0)) return 0;
+    for (k = 0; k < 6; k++) {
+        s = side_of(N, M, o, h[k], &err);
+        hlo = s + err < hlo ? s + err : hlo, hhi = s - err > hhi ? s - err : hhi;
     }
     for (k = 0; k < 3; k++) {
-        double s = dv_dot(axis, t[k]);
-        tlo = s < tlo ? s : tlo, thi = s > thi ? s : thi;
+        s = side_of(N, M, o, t[k], &err);
+        tlo = s + err < tlo ? s + err : tlo, thi = s - err > thi ? s - err : thi;
     }
-    return hhi <= tlo + tol || thi <= hlo + tol;
+    return hhi <= tlo || thi <= hlo;   /* false for a NaN */
 }
 
 static int hull_apart(const dtri *A, const dtri *E, const dtri *T)
 {
-    dvec h[6], axis;
-    double scale = (A->scale > E->scale ? A->scale : E->scale) + T->scale, len;
+    dvec h[6], N, M;
     int i, j, k;
     for (k = 0; k < 3; k++) h[k] = A->c[k], h[3 + k] = E->c[k];
     for (i = 0; i < 6; i++)
         for (j = i + 1; j < 6; j++) {
             for (k = j + 1; k < 6; k++) {   /* planes through three points of H */
-                axis = dv_cross(dv_lin(h[j], 1.0, h[i], -1.0), dv_lin(h[k], 1.0, h[i], -1.0));
-                len = sqrt(dv_dot(axis, axis));
-                if (len > 0.0 && apart_on_axis(axis, h, 6, T->c, 2.0 * TOL_RELATIVE * len * scale)) return 1;
+                N = cross_terms(dv_lin(h[j], 1.0, h[i], -1.0), dv_lin(h[k], 1.0, h[i], -1.0), &M);
+                if (apart_on_axis(N, M, h[i], h, T->c)) return 1;
             }
             for (k = 0; k < 3; k++) {       /* an edge of H and an edge of T */
-                axis = dv_cross(dv_lin(h[j], 1.0, h[i], -1.0), dv_lin(T->c[(k + 1) % 3], 1.0, T->c[k], -1.0));
-                len = sqrt(dv_dot(axis, axis));
-                if (len > 0.0 && apart_on_axis(axis, h, 6, T->c, 2.0 * TOL_RELATIVE * len * scale)) return 1;
+                N = cross_terms(dv_lin(h[j], 1.0, h[i], -1.0), dv_lin(T->c[(k + 1) % 3], 1.0, T->c[k], -1.0), &M);
+                if (apart_on_axis(N, M, h[i], h, T->c)) return 1;
             }
         }
     return 0;

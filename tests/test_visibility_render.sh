@@ -5,7 +5,7 @@
 # needle 1e-20 wide standing in the middle of the room from near the floor to near the ceiling: it
 # comes between every wall and the light, so that every shadow ray is traced, but no ray comes
 # within 1e-20 of it. The two PFM files must be the same bytes, and the stats lines must say which
-# rays were traced.
+# rays were traced. And a light under a huge ground lights nothing (a known answer at mixed scales).
 . "$(dirname "$0")/lib.sh"
 cat > "$TMP/box.mtl" << 'EOF'
 newmtl wall
@@ -66,3 +66,36 @@ if [ -n "$traced" ] && [ "${traced% *}" -gt "${traced#* }" ]; then
 else fail "visibility_render_hidden_traces: with the hidden triangle most shadow rays should be traced: $(err_tail "$TMP/hidden.err")"; fi
 if cmp -s "$TMP/box.pfm" "$TMP/hidden.pfm"; then pass "visibility_render_same_image (48x48, 32 spp: the same bytes)"
 else fail "visibility_render_same_image: the images differ: $("$PATHLAB" diff "$TMP/box.pfm" "$TMP/hidden.pfm" 2>&1 | head -3 | tr '\n' ' ')"; fi
+
+# A known answer at mixed scales: a light 5e-6 under a ground 1e4 wide, facing up into it, a panel over
+# the ground. Nothing the camera sees gets any light: every pixel is 0. (The pairs' tolerance was once
+# 2^-30 of the largest coordinate, 9.3e-6 here: the light counted as in the ground's plane, its pairs
+# with the panel were cleared and the panel was lit.)
+printf 'newmtl white\nKd 0.8 0.8 0.8\nnewmtl light\nKd 0.5 0.5 0.5\nKe 20 20 20\n' > "$TMP/under.mtl"
+cat > "$TMP/under.obj" << 'EOF'
+mtllib under.mtl
+usemtl white
+v -1e4 0 -1e4
+v -1e4 0 1e4
+v 1e4 0 1e4
+v 1e4 0 -1e4
+f 1 2 3 4
+v -0.5 1 -0.5
+v 0.5 1 -0.5
+v 0.5 1 0.5
+v -0.5 1 0.5
+f 5 6 7 8
+usemtl light
+v -0.25 -5e-6 0.25
+v -0.25 -5e-6 -0.25
+v 0.25 -5e-6 -0.25
+v 0.25 -5e-6 0.25
+f 12 11 10 9
+EOF
+run_ok "visibility_render_under_ground" "$PATHLAB" render "$TMP/under.obj" --eye 0,0.3,2.5 --target 0,1,0 --up 0,1,0 \
+    --fov 40 --size 32x32 --spp 8 --threads 2 -o "$TMP/under.pfm"
+header=$(head -n 3 "$TMP/under.pfm" | wc -c)
+lit=$(tail -c +$((header + 1)) "$TMP/under.pfm" | tr -d '\000' | wc -c)
+if [ "$lit" -eq 0 ] && [ "$(wc -c < "$TMP/under.pfm")" -eq $((header + 32 * 32 * 12)) ]; then
+    pass "visibility_render_under_ground_black (32x32: every pixel 0)"
+else fail "visibility_render_under_ground_black: $lit nonzero bytes; $(grep -o '[0-9]* of [0-9]* triangle-emitter pairs' "$TMP/run.err")"; fi

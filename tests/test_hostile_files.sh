@@ -63,6 +63,12 @@ forge t "a_var.pfm"
 expect_status "resume: a sidecar naming another file of its folder as the variance to update: refused" 2 r --spp 8 --seed 3 --resume -o stu/t.pfm
 expect_err "resume: says which variance --resume rewrites" "rewrites is the one the command line names: stu/t_var.pfm beside -o, or --variance"
 [ "$(sums)" = "$before" ] && pass "resume and view: the teacher's files untouched" || fail "resume and view: the teacher's files changed"
+# a sidecar's flags line replayed by --resume holds only what a render writes there: a planted
+# --write-view would have written anywhere (the view was written before the resume's checks ran)
+cp stu/a.pfm stu/wv.pfm; sed "s|^flags \(.*\)$|flags \1 --write-view $TMP/teacher/planted.view|" stu/a.pfm.meta > stu/wv.pfm.meta
+expect_status "resume: a sidecar whose flags line has --write-view: refused" 2 r --spp 8 --resume -o stu/wv.pfm
+expect_err "resume: says the sidecar was edited" "wv.pfm.meta: its flags line has --write-view, which a render does not write there"
+expect_no_file "resume: the view the sidecar names is not written" "$TMP/teacher/planted.view"
 r --spp 4 -o other/y.pfm --variance other/yv.pfm
 expect_status "resume: a variance of another name, given with --variance: updated" 0 r --spp 8 --resume -o other/y.pfm --variance other/yv.pfm
 grep -q "^samples 0:8" other/yv.pfm.meta && pass "resume: --variance holds the 8 samples" || fail "resume: --variance not updated"

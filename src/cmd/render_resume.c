@@ -54,8 +54,24 @@ static int push(char **out, int *n, char *word)
     return 0;
 }
 
-/* The sidecar's flags (words of text, split in place) that argv does not give, pushed to out. */
-static int push_flags(char *text, const cli_flag *t, const cli_flag *ta, const char *const *given, int ng, char **out, int *n)
+/* The flags a render writes in its sidecar's flags line (files/render_meta.c): the only ones replayed.
+ * Any other there (--write-view, --variance, -o ...) did not come from pathlab: a sidecar must not
+ * decide where a render writes. */
+static const char *const SIDECAR_FLAGS[] = {"--bounces", "--light", "--dir", "--direct", "--rr", "--rr-below",
+    "--pixel-offset", "--pixel-center", "--sampler", "--sky", "--material", "--normals", "--texture-filter",
+    "--texture-decode", "--mtl", NULL};
+
+static int sidecar_flag(const char *name)
+{
+    int k;
+    for (k = 0; SIDECAR_FLAGS[k] && strcmp(SIDECAR_FLAGS[k], name); k++) continue;
+    return SIDECAR_FLAGS[k] != NULL;
+}
+
+/* The sidecar's flags (words of text, split in place) that argv does not give, pushed to out; 1 if
+ * there is no room, 2 (said) for a flag a render does not write there. */
+static int push_flags(char *text, const cli_flag *t, const cli_flag *ta, const char *const *given, int ng, char **out, int *n,
+                      const char *file)
 {
     char *w = strtok(text, " ");
     while (w) {
@@ -63,6 +79,11 @@ static int push_flags(char *text, const cli_flag *t, const cli_flag *ta, const c
         char *v = f && f->kind != CLI_SWITCH ? strtok(NULL, " ") : NULL;
         int skip = !f || is_given(given, ng, f->name)
                    || (!strcmp(f->name, "--bounces") && is_given(given, ng, "--bounce"));
+        if (f && !sidecar_flag(f->name)) {
+            fprintf(stderr, "pathlab render: --resume: %s.meta: its flags line has %s, which a render does not write "
+                    "there: the sidecar was edited; nothing written\n", file, f->name);
+            return 2;
+        }
         if (!skip && (push(out, n, w) || (v && push(out, n, v)))) return 1;
         w = strtok(NULL, " ");
     }
@@ -91,7 +112,7 @@ int render_resume_args(int argc, char **argv, char **out, int *out_argc, char *t
     cli_flag t[RENDER_NFLAGS], ta[RENDER_ADAPTIVE_NFLAGS];
     const char *given[RESUME_MAX_ARGS], *file;
     sidecar m;
-    int ng, nwords, n = 0, i, err = 0;
+    int ng, nwords, n = 0, i, err = 0, bad = 0;
     size_t used;
     render_args_init(&scratch);
     render_flag_table(&scratch, t);
@@ -110,7 +131,8 @@ int render_resume_args(int argc, char **argv, char **out, int *out_argc, char *t
         used += strlen(text + used) + 1;
     }
     if (used < cap) snprintf(text + used, cap - used, "%s", m.flags);
-    err = err || (used < cap && push_flags(text + used, t, ta, given, ng, out, &n));
+    err = err || (used < cap && (bad = push_flags(text + used, t, ta, given, ng, out, &n, file)) != 0);
+    if (bad == 2) return 1;
     used += strlen(m.flags) + 1;
     if (used < cap) snprintf(text + used, cap - used, "%s", m.camera);
     err = err || (used < cap && push_camera(text + used, given, ng, out, &n));

@@ -131,6 +131,13 @@ $PFMTOOL const 16 16 1 1 1 "$TMP/small.pfm"
 expect_status "compare: reference of another size, exit 2" 2 $C --estimators light --ref "$TMP/small.pfm" -o "$TMP/bad6"
 expect_err "compare: both sizes named" "16x16.*32x32"
 expect_no_file "compare: reference size mismatch, no DIR" "$TMP/bad6"
+expect_status "compare: --mtl inside an estimator (the scene is loaded once for all), exit 2" 2 $C --estimators "light,b=--direct brdf --mtl $TMP/x.mtl" -o "$TMP/bad12"
+expect_err "compare: says --mtl is for the scene" "estimator 'b': --mtl is for the scene"
+expect_no_file "compare: --mtl inside an estimator, no DIR" "$TMP/bad12"
+# a string flag's value inside an estimator outlives its parsing (it pointed into a stack buffer,
+# and the view went to a file named by whatever was left there)
+expect_status "compare: --write-view inside an estimator, exit 0" 0 $C --spp 1 --estimators "light --write-view $TMP/wv.view" -o "$TMP/wv"
+if grep -q "^eye " "$TMP/wv.view" 2>/dev/null; then pass "compare: the view written where the estimator says"; else fail "compare: no view at $TMP/wv.view"; fi
 expect_status "compare: estimators with different cameras, exit 2" 2 $C --estimators "light,b=--eye 0,1,5 --direct brdf" -o "$TMP/bad8"
 expect_err "compare: the camera clash is named" "another camera"
 expect_no_file "compare: different cameras, no DIR" "$TMP/bad8"

@@ -153,18 +153,28 @@ static int make_slug(estimator_spec *e)
     return 0;
 }
 
+/* The flags of the scene, loaded once for all estimators: one estimator's would be ignored. */
+static const char *const SCENE_FLAGS[] = {"--mtl", "--sky", "--texture-decode", NULL};
+
 /* e->a: the shared flags of base, then the estimator's own, which win. */
 static int apply_flags(estimator_spec *e, const flag_list *f, const render_args *base)
 {
-    int i;
+    int i, k;
     e->a = *base;
     e->a.scene = e->a.out = e->a.variance = NULL;
     e->a.spp_given = 0;
-    for (i = 0; i < f->n; i++)
+    for (i = 0; i < f->n; i++) {
+        for (k = 0; SCENE_FLAGS[k] && !cli_flag_is(f->tok[i], SCENE_FLAGS[k]); k++) continue;
+        if (SCENE_FLAGS[k]) {
+            fprintf(stderr, "pathlab: compare: estimator '%s': %s is for the scene, which all estimators share: give it "
+                    "to compare, outside --estimators\n", shown(e->label), SCENE_FLAGS[k]);
+            return 1;
+        }
         if (render_parse_flag(&e->a, f->n, (char **)f->tok, &i)) {
             fprintf(stderr, "pathlab: compare: in estimator '%s'\n", shown(e->label));
             return 1;
         }
+    }
     if (e->a.scene || e->a.out || e->a.variance || e->a.ro.split || e->a.spp_given) {
         fprintf(stderr, "pathlab: compare: estimator '%s': %s\n", shown(e->label),
                 e->a.scene ? "a word that is neither a flag, a flag's value nor a name" :
@@ -181,10 +191,10 @@ static int apply_flags(estimator_spec *e, const flag_list *f, const render_args 
 /* One estimator, the len characters at item: its label, slug, flags and render_args. */
 static int parse_one(estimator_spec *e, const char *item, size_t len, const render_args *base)
 {
-    char text[600];
+    char *text = e->words;   /* not a local array: the string flags' values (--write-view F) point into it */
     flag_list f;
     int k;
-    if (len >= sizeof text) { fprintf(stderr, "pathlab: compare: estimator '%.40s...' is too long\n", item); return 1; }
+    if (len >= sizeof e->words) { fprintf(stderr, "pathlab: compare: estimator '%.40s...' is too long\n", item); return 1; }
     memcpy(text, item, len);
     text[len] = '\0';
     trim(text);

@@ -14,6 +14,7 @@ typedef struct {
     char label[600];     /* as long as the text it comes from */
     char slug[64];       /* the label as a file name: lower-case letters, digits and '-' */
     char flags[600];     /* the render flags, names expanded, separated by spaces */
+    char words[600];     /* the estimator's text cut into words: its flags' values point into it */
     render_args a;       /* the shared flags, then the estimator's own */
 } estimator_spec;
 

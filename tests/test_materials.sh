@@ -12,7 +12,7 @@
 #  - textures: map_Ke seen directly (L0, pixel centres) is the texel gKit picks, v up (nearest), and
 #    the bilinear mix of the four around; map_Kd of a constant 0.5 texture with Kd 1 gives the image of
 #    Kd 0.5 bit for bit; a texture named twice is read once; a map_Kd outside the scene's folder, a
-#    link out of it, a FIFO are refused (exit 2, file:line);
+#    link out of it, a FIFO, a texture holding a NaN or a negative value are refused (exit 2, file:line);
 #  - --mtl FILE replaces the mtllib, its textures relative to FILE's folder; recorded in the sidecar;
 #  - --texture-decode: an 8-bit texel 128 is 128/255 raw, 0.2159 srgb; a PFM texture is linear either
 #    way; a texture cut short is refused at its MTL line.
@@ -87,6 +87,13 @@ mkfifo "$S/fifo.pfm"; sed 's|map_Kd half.pfm|map_Kd fifo.pfm|' "$S/tex.mtl" > "$
 expect_status "map_Kd a FIFO: refused, not blocked" 2 timeout 10 $PATHLAB render "$S/wall2.obj" -o "$TMP/x.pfm"
 expect_err "map_Kd a FIFO: not a regular file" "not a regular file"
 expect_no_file "no image after a refused texture" "$TMP/x.pfm"
+for v in nan -5; do   # a PFM can hold any float: a NaN texel blackened every path, a negative one gave a negative image
+    "$PFMTOOL" const 2 2 0.5 "$v" 0.5 "$S/bad.pfm"; sed 's|map_Kd half.pfm|map_Kd bad.pfm|' "$S/tex.mtl" > "$S/tex2.mtl"
+    expect_status "map_Kd a PFM holding $v: refused" 2 $PATHLAB render "$S/wall2.obj" -o "$TMP/x.pfm"
+    expect_err "map_Kd a PFM holding $v: the pixel and why" "bad.pfm: pixel \(0, 0\) of the file is $v: a texture's values must be finite and >= 0"
+    expect_err "map_Kd a PFM holding $v: the MTL's line" "tex2.mtl:6: cannot read the texture"
+done
+expect_no_file "no image after a texture of bad values" "$TMP/x.pfm"
 
 # --mtl FILE: a teacher's MTL in another folder; its map_Ke relative to it
 mkdir -p "$TMP/teacher"; printf 'newmtl lamp\nKe 2\nmap_Ke t.pfm\n' > "$TMP/teacher/t.mtl"; cp "$S/t2x2.pfm" "$TMP/teacher/t.pfm"

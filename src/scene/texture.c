@@ -1,6 +1,9 @@
 /* texture.c — the textures of texture.h: read once, stored bottom row first, looked up as gKit does. */
 #include "scene/texture.h"
 #include "image/decode.h"
+#include "sys/shown.h"
+#include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -23,12 +26,25 @@ static int read_texels(image *im, const char *path, int *integer)
     return 0;
 }
 
+/* 0 if every value of im is a number >= 0 (a PFM or HDR file can hold any float: a NaN texel would
+ * blacken every path that meets it, a negative one make a negative image); else 1, said. */
+static int texels_valid(const image *im, const char *path)
+{
+    size_t i, n = (size_t)3 * (size_t)im->w * (size_t)im->h;
+    for (i = 0; i < n && isfinite(im->px[i]) && im->px[i] >= 0.0f; i++) continue;
+    if (i == n) return 0;
+    fprintf(stderr, "%s: pixel (%d, %d) of the file is %g: a texture's values must be finite and >= 0\n", shown(path),
+            (int)(i / 3 % (size_t)im->w), (int)(i / 3 / (size_t)im->w), (double)im->px[i]);
+    return 1;
+}
+
 int texture_load(texture *t, const char *path, texture_decode decode)
 {
     image im;
     int integer, x, y, c;
     memset(t, 0, sizeof *t);
     if (read_texels(&im, path, &integer)) return 1;
+    if (texels_valid(&im, path)) { img_free(&im); return 1; }
     t->w = im.w, t->h = im.h;
     t->rgb = im.px;   /* the same layout, rows flipped in place below */
     if (!(t->path = malloc(strlen(path) + 1))) {

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# pathlab diff: metrics with exact answers on constant images, a heatmap, and errors.
+# pathlab diff: metrics with exact answers on constant images, a heatmap, and errors (a reference
+# holding a NaN or a negative value among them).
 . "$(dirname "$0")/lib.sh"
 $PFMTOOL const 8 4 1.5 1.5 1.5 "$TMP/a.pfm"
 $PFMTOOL const 8 4 1 1 1 "$TMP/b.pfm"
@@ -19,6 +20,11 @@ expect_err "diff: sizes named" "8x4.*4x4"
 expect_status "diff: missing file, status 2" 2 $PATHLAB diff "$TMP/a.pfm" "$TMP/none.pfm"
 expect_err "diff: missing file named" "none.pfm"
 expect_status "diff: one image only, status 2" 2 $PATHLAB diff "$TMP/a.pfm"
+for v in nan -1; do   # the reference is checked as the image is: a NaN one gave "RMSE nan, PSNR inf dB", exit 0
+    $PFMTOOL const 8 4 1 "$v" 1 "$TMP/bad.pfm"
+    expect_status "diff: a reference holding $v, status 2" 2 $PATHLAB diff "$TMP/a.pfm" "$TMP/bad.pfm"
+    expect_err "diff: the reference's bad values named" "bad.pfm: 32 pixel-channels are (NaN|negative)"
+done
 expect_status "diff: three images, status 2" 2 $PATHLAB diff "$TMP/a.pfm" "$TMP/b.pfm" "$TMP/small.pfm"
 expect_err "diff: the extra image named" "^pathlab diff: 3 images and no --ref: which one is the reference"
 # flags before the file names: the same heatmap

@@ -23,7 +23,15 @@ refuse "render -o in a missing folder" "^pathlab render: -o $TMP/no/x.pfm: the f
 refuse "render -o a folder" "-o $TMP/dir.pfm: is a folder" $PATHLAB render $S $big -o "$TMP/dir.pfm"
 refuse "render -o .jpg" "unknown image format \(use .pfm, .ppm or .png\)" $PATHLAB render $S $big -o "$TMP/x.jpg"
 refuse "render --variance in a missing folder" "^pathlab render: --variance $TMP/no/v.pfm: the folder" $PATHLAB render $S $big -o "$TMP/x.pfm" --variance "$TMP/no/v.pfm"
-refuse "render --variance = -o" "three different files" $PATHLAB render $S $big -o "$TMP/x.pfm" --variance "$TMP/x.pfm"
+refuse "render --variance = -o" "-o and --variance are the same file" $PATHLAB render $S $big -o "$TMP/x.pfm" --variance "$TMP/x.pfm"
+# one file under two spellings, a --split layer as the variance, the view over the scene or a sidecar:
+# each was written, then the render failed or the file was lost (found by fuzzing)
+refuse "render --variance = -o spelled ./" "-o and --variance are the same file" $PATHLAB render $S $big -o "$TMP/x.pfm" --variance "$TMP/./x.pfm"
+refuse "render --variance = a --split layer of -o" "a layer of -o \(--split\) and --variance are the same file" \
+    $PATHLAB render $S $big --split --bounces 0:2 -o "$TMP/x.pfm" --variance "$TMP/x_L1.pfm"
+cp scenes/cornell.obj scenes/cornell.mtl "$TMP/"
+refuse "render --write-view = the scene" "--write-view and the scene are the same file" $PATHLAB render "$TMP/cornell.obj" $big -o "$TMP/x.pfm" --write-view "$TMP/cornell.obj"
+refuse "render --write-view = -o's sidecar" "-o's sidecar and --write-view are the same file" $PATHLAB render $S $big -o "$TMP/x.pfm" --write-view "$TMP/x.pfm.meta"
 refuse "render --sample-count in a missing folder" "^pathlab render: --sample-count $TMP/no/c.pfm" \
     $PATHLAB render $S --size 2048x2048 --target-error 0.001 -o "$TMP/x.pfm" --sample-count "$TMP/no/c.pfm"
 refuse "render --sample-count .png" "--sample-count .*c.png.*pfm" \

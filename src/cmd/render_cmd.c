@@ -31,7 +31,7 @@ static int check_render_args(render_args *a)
 {
     if (!a->scene) { fprintf(stderr, "pathlab render: needs a scene: pathlab render SCENE.obj -o FILE\n"); return 1; }
     if (!a->out) { fprintf(stderr, "pathlab render: needs an output: -o FILE.pfm, -o FILE.ppm or -o FILE.png\n"); return 1; }
-    if (render_files_check_outputs(a->out, a->variance, a->sample_count, a->cam.write_view, a->ro.split, a->ro.io.bmin, a->ro.io.bmax))
+    if (render_files_check_outputs(a->scene, a->out, a->variance, a->sample_count, a->cam.write_view, a->ro.split, a->ro.io.bmin, a->ro.io.bmax))
         return 1;
     if (a->ro.split && a->ro.io.bmax == BOUNCES_NO_END) {
         fprintf(stderr, "pathlab render: --split needs a last bounce, e.g. --bounces 0:8\n");

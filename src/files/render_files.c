@@ -1,4 +1,6 @@
 /* render_files.c — a render's files and their sidecars, written and read back. */
+/* realpath is POSIX 2008 but glibc declares it only for X/Open */
+#define _XOPEN_SOURCE 700
 #include "files/render_files.h"
 #include "sys/shown.h"
 #include "render/render.h"
@@ -19,8 +21,11 @@ void render_files_layer_path(char *dst, size_t cap, const char *out, int k)
     snprintf(dst, cap, "%.*s_L%d%s", (int)(strlen(out) - strlen(e)), out, k, e);
 }
 
-int render_files_check_outputs(const char *out, const char *var_out, const char *count_out, const char *view_out, int split,
-                               int bmin, int bmax)
+static int same_files(const char *scene, const char *out, const char *var_out, const char *count_out, const char *view_out,
+                      int split, int bmin, int bmax);
+
+int render_files_check_outputs(const char *scene, const char *out, const char *var_out, const char *count_out, const char *view_out,
+                               int split, int bmin, int bmax)
 {
     char layer[PATH_CAP];
     int k;
@@ -39,11 +44,7 @@ int render_files_check_outputs(const char *out, const char *var_out, const char 
     if (var_out && output_path_check("render", "--variance", var_out, IMG_PFM_EXTENSION)) return 1;
     if (count_out && output_path_check("render", "--sample-count", count_out, NULL)) return 1;   /* .pfm: render_adaptive_check */
     if (view_out && output_path_check("render", "--write-view", view_out, NULL)) return 1;
-    if ((var_out && !strcmp(var_out, out)) || (count_out && !strcmp(count_out, out)) || (var_out && count_out && !strcmp(var_out, count_out))) {
-        fprintf(stderr, "pathlab render: -o, --variance and --sample-count must be three different files\n");
-        return 1;
-    }
-    return 0;
+    return same_files(scene, out, var_out, count_out, view_out, split, bmin, bmax);
 }
 
 static const char *base_name(const char *p)
@@ -56,6 +57,74 @@ static const char *base_name(const char *p)
 static void folder_of(char *dst, size_t cap, const char *p)
 {
     snprintf(dst, cap, "%.*s", (int)(base_name(p) - p), p);
+}
+
+/* A file's name as its folder's real path and its own name, so that two spellings of one file
+ * (o/a.pfm, ./o/a.pfm, o/../o/a.pfm) give one key; a folder that does not resolve is kept as written. */
+static void file_key(char *dst, size_t cap, const char *path)
+{
+    char dir[PATH_CAP], *real;
+    int n;
+    folder_of(dir, sizeof dir, path);
+    real = realpath(dir[0] ? dir : ".", NULL);
+    n = snprintf(dst, cap, "%s/%s", real ? real : dir, base_name(path));
+    if (n < 0 || (size_t)n >= cap) snprintf(dst, cap, "%s", path);   /* too long to resolve: as written */
+    free(real);
+}
+
+/* The files a render writes (and its scene, read), by what names them: NULL where not given. */
+#define OUTPUT_NAMES 8
+typedef struct { const char *what[OUTPUT_NAMES]; char key[OUTPUT_NAMES][PATH_CAP]; int n; } output_names;
+
+static void add_name(output_names *o, const char *what, const char *path, const char *suffix)
+{
+    char name[PATH_CAP];
+    if (!path) return;
+    snprintf(name, sizeof name, "%s%s", path, suffix);
+    o->what[o->n] = what;
+    file_key(o->key[o->n++], PATH_CAP, name);
+}
+
+/* 1 (said) if the file of key is one of o's, other than o's own entry skip. */
+static int clash(const output_names *o, int skip, const char *what, const char *key)
+{
+    int i;
+    for (i = 0; i < o->n; i++)
+        if (i != skip && !strcmp(o->key[i], key)) {
+            fprintf(stderr, "pathlab render: %s and %s are the same file (%s): give each its own name\n", what, o->what[i],
+                    shown(key));
+            return 1;
+        }
+    return 0;
+}
+
+/* No two of the files a render writes are one file, whatever their spelling, and none is the scene:
+ * -o, --variance, --sample-count, their sidecars, --write-view, and with --split every layer of -o
+ * and of --variance with its sidecar (a layer named as the variance was written, then overwritten). */
+static int same_files(const char *scene, const char *out, const char *var_out, const char *count_out, const char *view_out,
+                      int split, int bmin, int bmax)
+{
+    static output_names o;   /* 35 kB: not on the stack */
+    char layer[PATH_CAP], key[PATH_CAP];
+    int i, k, v;
+    o.n = 0;
+    add_name(&o, "the scene", scene, "");
+    add_name(&o, "-o", out, ""); add_name(&o, "-o's sidecar", out, ".meta");
+    add_name(&o, "--variance", var_out, ""); add_name(&o, "--variance's sidecar", var_out, ".meta");
+    add_name(&o, "--sample-count", count_out, ""); add_name(&o, "--sample-count's sidecar", count_out, ".meta");
+    add_name(&o, "--write-view", view_out, "");
+    for (i = 1; i < o.n; i++)
+        if (clash(&o, i, o.what[i], o.key[i])) return 1;
+    for (k = bmin; split && bmax != BOUNCES_NO_END && k <= bmax; k++)
+        for (v = 0; v < 4; v++) {
+            const char *base = v < 2 ? out : var_out;
+            if (!base) continue;
+            render_files_layer_path(layer, sizeof layer, base, k);
+            if (v % 2) strncat(layer, ".meta", sizeof layer - strlen(layer) - 1);
+            file_key(key, sizeof key, layer);
+            if (clash(&o, -1, v < 2 ? "a layer of -o (--split)" : "a layer of --variance (--split)", key)) return 1;
+        }
+    return 0;
 }
 
 /* How a sidecar names the variance file: its path from the image's folder when it sits in that

@@ -16,10 +16,11 @@ typedef struct {
 /* Every file a render will write, checked before any work: -o out, --variance var_out, --sample-count
  * count_out, --write-view view_out (each NULL if not given) and with split the layers of bounces
  * bmin .. bmax beside out and var_out (none if bmax is BOUNCES_NO_END: render refuses that): the
- * folder exists and can be written, the extension is known, no two are the same file. 0, or 1
+ * folder exists and can be written, the extension is known, no two are the same file (whatever
+ * their spelling) and none is the scene. 0, or 1
  * after printing why ("pathlab render: ..."). */
-int render_files_check_outputs(const char *out, const char *var_out, const char *count_out, const char *view_out, int split,
-                               int bmin, int bmax);
+int render_files_check_outputs(const char *scene, const char *out, const char *var_out, const char *count_out, const char *view_out,
+                               int split, int bmin, int bmax);
 /* out.pfm, layer k -> out_Lk.pfm */
 void render_files_layer_path(char *dst, size_t cap, const char *out, int k);
 /* The variance file that the sidecar of image_path names (name), into dst[cap]: an input, resolved

@@ -5,7 +5,9 @@
 #    file whose own sidecar says it is this image's variance (samples, seed, scene, size), and it is
 #    never written: view, merge and render --resume refuse it (exit 2, saying why) and leave the
 #    teacher's files as they were; --resume rewrites only STEM_var.pfm beside -o or --variance;
-#  - a sidecar that lies about the size of its image, or a FIFO named FILE.pfm.meta, is refused at once;
+#  - a sidecar that lies about the size of its image, or a FIFO named FILE.pfm.meta, is refused at once,
+#    and a sidecar's flags line that names what a render never writes there (--write-view) too;
+#  - 40,000 material names made to collide in a fixed hash load in a blink;
 #  - grade compares a PFM's header (channels, size) with the reference's before reading its pixels:
 #    a sparse 1 GiB greyscale file is refused in a blink, without gigabytes of memory;
 #  - sidecar numbers are bounded as the command line bounds them (indices 2^62, counts 2^30): the
@@ -91,6 +93,17 @@ expect_err "resume: says the new indices would pass 2^62" "6 more would pass 2\^
 sed -i 's|^samples .*|samples 0:2,4611686018427387896:4611686018427387898|' other/n.pfm.meta other/n_var.pfm.meta
 expect_status "resume: samples up to 2^62 - 6, 6 more: done" 0 r --spp 10 --resume -o other/n.pfm
 expect_status "merge: the resumed sidecar reads back" 0 $P merge other/m.pfm other/n.pfm
+# material names made to collide in FNV-1a's low 20 bits (each block of 4 bytes maps those bits of the
+# standard basis to themselves): with a fixed hash and linear probing, 40,000 of them took seconds,
+# 100,000 took 73 s; the hash's basis is now drawn per process and its bits mixed
+awk 'BEGIN { n = split("0JZx 12ha 3y2n 70TU 8JbH DUtu FYK6 IHDG Ldvv PIan Xheo Ymqy ZX33 aWdX fG09 jZc5 lMRg uilr vAmh", b, " ")
+             for (i = 0; i < 40000; i++) printf "newmtl %s%s%s%s\nKd 0.5 0.5 0.5\n", b[i % n + 1], b[int(i / n) % n + 1], b[int(i / n / n) % n + 1], b[int(i / n / n / n) % n + 1]
+             print "newmtl light\nKe 1 1 1" }' > flood.mtl
+printf 'mtllib flood.mtl\nusemtl light\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' > flood.obj
+start=$(date +%s%N)
+expect_status "mtl: 40,000 material names of one FNV-1a low 20 bits: loaded" 0 timeout 60 $P render flood.obj --size 4x4 --spp 1 --quiet -o flood.pfm
+ms=$(( ($(date +%s%N) - start) / 1000000 ))
+[ "$ms" -lt 3000 ] && pass "mtl: those names in $ms ms (seconds with a fixed hash)" || fail "mtl: 40,000 colliding names took $ms ms"
 # grade: the header first
 printf 'Pf\n16384 16384\n-1\n' > big.pfm && truncate -s $((18 + 16384 * 16384 * 4)) big.pfm
 start=$(date +%s%N)

@@ -6,7 +6,8 @@
 #  - --samples pieces, merged, equal the whole render within float rounding (means: 4 ulp, variances
 #    1e-4 relative: they are recombined from float means), whatever the order of the pieces;
 #  - --resume equals the longer render within the same rounding;
-#  - merge and --resume refuse what is not the same render, naming the difference.
+#  - merge and --resume refuse what is not the same render, naming the difference; merge refuses a
+#    piece holding a NaN, and an output that is one of its inputs.
 . "$(dirname "$0")/lib.sh"
 R="$PATHLAB render scenes/cornell.obj --quiet --size 48x32"
 MEAN_TOL=5e-7   # 4 ulp of a float (2^-21 relative): the sums are in double, only the stored means round
@@ -83,6 +84,14 @@ expect_status "pieces with a gap merge (samples 0:7,8:24)" 0 $PATHLAB merge "$TM
 [ "$(meta "$TMP/g.pfm" samples)" = "0:7,8:24" ] && pass "the gap is in the sidecar: 0:7,8:24" || fail "gap sidecar: $(meta "$TMP/g.pfm" samples)"
 
 # 5. merge refuses what is not one render, and says why
+for f in "" _L0 _L1 _L2 _L3; do cp "$TMP/b$f.pfm" "$TMP/nan$f.pfm"; cp "$TMP/b$f.pfm.meta" "$TMP/nan$f.pfm.meta"; done
+printf '\000\000\300\177' | dd of="$TMP/nan.pfm" bs=1 seek=$(( $(head -n 3 "$TMP/nan.pfm" | wc -c) + 12 )) conv=notrunc 2> /dev/null
+expect_status "merge: a piece with a NaN refused (it made the merge NaN)" 2 $PATHLAB merge "$TMP/x.pfm" "$TMP/a.pfm" "$TMP/nan.pfm"
+expect_err "merge: names the piece and the NaN" "nan.pfm: 1 pixel-channel is NaN"
+expect_no_file "merge: nothing written after a NaN piece" "$TMP/x.pfm"
+cp "$TMP/a.pfm" "$TMP/self.pfm"; cp "$TMP/a.pfm.meta" "$TMP/self.pfm.meta"
+expect_status "merge: -o one of the pieces refused" 2 $PATHLAB merge "$TMP/./self.pfm" "$TMP/self.pfm" "$TMP/b.pfm"
+expect_err "merge: says -o is an input" "is the input .*self.pfm: write the merge to a new file"
 $R $F --samples 5:10 -o "$TMP/over.pfm"
 expect_status "merge: overlapping samples refused" 2 $PATHLAB merge "$TMP/x.pfm" "$TMP/a.pfm" "$TMP/over.pfm"
 expect_err "merge: names the samples taken twice" "both have samples 5:7"

@@ -4,12 +4,14 @@
 #include "files/render_merge.h"
 #include "sys/shown.h"
 #include "files/render_files.h"
+#include "image/radiance.h"
 #include "stats/combine.h"
 #include "tracer/integrator.h"
 #include <inttypes.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 typedef struct {
     const char *path;
@@ -80,6 +82,20 @@ static int common_layers(const input *in, int n)
 }
 
 /* Adds every input to the sums (one combine_acc per layer), reading one input at a time. */
+/* 0 if every layer of rf (and its variance) is finite and >= 0, else 1, said: a NaN in one piece
+ * would make the merged image NaN, a negative variance a negative one. */
+static int values_valid(const render_files *rf, int nlayers, int with_var, const char *path)
+{
+    char what[4400];
+    int k;
+    for (k = 0; k < nlayers; k++) {
+        snprintf(what, sizeof what, k ? "%s, its layer %d," : "%s", path, k);
+        if (img_check_radiance(&rf->mean[k], what, 5) || (with_var && img_check_radiance(&rf->var[k], k ? what : "its variance", 5)))
+            return 1;
+    }
+    return 0;
+}
+
 static int add_inputs(const input *in, int n, int nlayers, int with_var, combine_acc *acc, render_files *first)
 {
     int i, k;
@@ -88,6 +104,11 @@ static int add_inputs(const input *in, int n, int nlayers, int with_var, combine
         if (render_files_read(&rf, in[i].path, with_var, "merge")) return 1;
         if (rf.nlayers < nlayers || rf.mean[0].w != first->mean[0].w || rf.mean[0].h != first->mean[0].h) {
             fprintf(stderr, "pathlab merge: %s does not have the size or the layers of %s\n", shown(in[i].path), shown(in[0].path));
+            render_files_free(&rf);
+            return 1;
+        }
+        if (values_valid(&rf, nlayers, with_var, in[i].path)) {
+            fprintf(stderr, "pathlab merge: %s: nothing merged\n", shown(in[i].path));
             render_files_free(&rf);
             return 1;
         }
@@ -126,11 +147,26 @@ static int merge_inputs(const char *out, const char *var_out, input *in, int n)
     return err;
 }
 
+/* 1 (said) if out names the same file as one of the inputs (a link or another spelling too). */
+static int overwrites_input(const char *flag, const char *out, const char *const *paths, int n)
+{
+    struct stat o, p;
+    int i;
+    if (!out || stat(out, &o) != 0) return 0;   /* not there yet: not an input */
+    for (i = 0; i < n; i++)
+        if (stat(paths[i], &p) == 0 && p.st_dev == o.st_dev && p.st_ino == o.st_ino) {
+            fprintf(stderr, "pathlab merge: %s %s is the input %s: write the merge to a new file\n", flag, shown(out), shown(paths[i]));
+            return 1;
+        }
+    return 0;
+}
+
 int render_merge(const char *out, const char *var_out, const char *const *paths, int n)
 {
-    input *in = calloc((size_t)n, sizeof *in);
+    input *in;
     int i, rc;
-    if (!in) { fprintf(stderr, "pathlab merge: out of memory\n"); return 2; }
+    if (overwrites_input("-o", out, paths, n) || overwrites_input("--variance", var_out, paths, n)) return 2;
+    if (!(in = calloc((size_t)n, sizeof *in))) { fprintf(stderr, "pathlab merge: out of memory\n"); return 2; }
     for (i = 0; i < n; i++) in[i].path = paths[i];
     rc = merge_inputs(out, var_out, in, n);
     free(in);

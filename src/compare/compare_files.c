@@ -22,6 +22,11 @@ int compare_check_names(const compare_estimator *est, int n)
                         shown(label), shown(RESERVED[j]), shown(label), shown(e->row.flags));
                 return 1;
             }
+        if (!strncmp(e->slug, "heat-", 5)) {   /* its picture DIR/heat-X.png would be estimator X's heatmap */
+            fprintf(stderr, "pathlab: compare: label '%s' would write DIR/%s.png, a heatmap's name (heat-LABEL.png): name it "
+                    "otherwise\n", shown(label), shown(e->slug));
+            return 1;
+        }
         for (j = 0; j < i; j++)
             if (!strcmp(e->slug, est[j].slug)) {
                 fprintf(stderr, "pathlab: compare: estimators '%s' and '%s' would both write DIR/%s.pfm: label one (LABEL=FLAGS)\n",

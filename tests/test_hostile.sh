@@ -60,6 +60,9 @@ printf 'eye 0 1 -3\nfov 40\0 size 2 2\n' > "$TMP/v2.view"
 render_t "view: a NUL byte in a line is an error" 10 2 $D/quad-light.obj --view "$TMP/v2.view" -o "$OUT"
 expect_err "view: NUL byte: file:line" "v2.view:2: a NUL byte"
 render_t "view: /dev/zero as a view file ends at once" 10 2 $D/quad-light.obj --view /dev/zero -o "$OUT"
+render_t "view: /dev/null as --view refused (it was read as an empty view: the default framing, exit 0)" 10 2 $D/quad-light.obj \
+    --view /dev/null -o "$OUT"
+expect_err "view: /dev/null: says there is no camera in it" "/dev/null: no camera in it"
 F=$TMP/fifo; mkdir -p "$F"; cp $D/quad-light.obj $D/quad-light.mtl "$F/"
 if mkfifo "$F/quad-light.view" 2>/dev/null; then
     render_t "view: a FIFO named SCENE.view (no writer) refused at once, not read as an empty view" 10 2 "$F/quad-light.obj" \

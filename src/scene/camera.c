@@ -142,6 +142,12 @@ int view_read(view *vw, const char *path)
         if (rc) view_error(path, lineno, rc, line);
     }
     if (!rc && ferror(fp)) { fprintf(stderr, "%s: read error\n", shown(path)); rc = 1; }
+    /* an empty view (/dev/null, a FIFO with no writer: it reads as empty) would silently give the
+     * default framing */
+    if (!rc && !(vw->line_eye || vw->line_target || vw->line_up || vw->line_fov || vw->line_size)) {
+        fprintf(stderr, "%s: no camera in it (lines eye, target, up, fov or size)\n", shown(path));
+        rc = 1;
+    }
     fclose(fp);
     free(line);
     return rc ? 1 : 0;

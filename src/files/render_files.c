@@ -1,7 +1,6 @@
 /* render_files.c — a render's files and their sidecars, written and read back. */
-/* realpath is POSIX 2008 but glibc declares it only for X/Open */
-#define _XOPEN_SOURCE 700
 #include "files/render_files.h"
+#include "scene/scene_file.h"
 #include "sys/shown.h"
 #include "render/render.h"
 #include "sys/atomic_file.h"
@@ -63,10 +62,9 @@ static void folder_of(char *dst, size_t cap, const char *p)
  * (o/a.pfm, ./o/a.pfm, o/../o/a.pfm) give one key; a folder that does not resolve is kept as written. */
 static void file_key(char *dst, size_t cap, const char *path)
 {
-    char dir[PATH_CAP], *real;
+    char dir[PATH_CAP], *real = scene_file_folder(path);
     int n;
     folder_of(dir, sizeof dir, path);
-    real = realpath(dir[0] ? dir : ".", NULL);
     n = snprintf(dst, cap, "%s/%s", real ? real : dir, base_name(path));
     if (n < 0 || (size_t)n >= cap) snprintf(dst, cap, "%s", path);   /* too long to resolve: as written */
     free(real);

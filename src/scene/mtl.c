@@ -4,6 +4,7 @@
 #include "scene/mtl.h"
 #include "sys/shown.h"
 #include "scene/objtext.h"
+#include "math/rng.h"
 #include "scene/scene_file.h"
 #include <errno.h>
 #include <limits.h>
@@ -74,25 +75,24 @@ static void print_ignored(const objtext *t, const ignored_keys *ig)
     }
 }
 
-/* Materials by name: an open-addressing hash table (FNV-1a of the name, linear probing) of indices
- * into m->mats, kept at most half full, so that a newmtl or a usemtl costs the same among 200,000
- * materials as among 2 (a linear search made 50,000 materials take 9 s to load). A later material
- * of the same name takes its slot: the latest definition wins. */
-/* FNV-1a from a basis drawn once per process, then mixed (murmur3's finalizer) so that every bit of
- * the index depends on every byte: names made to collide in a fixed hash (100,000 whose FNV-1a
- * agreed in their low 20 bits took 73 s to load with linear probing) do not collide here. The
- * table is only looked up: nothing's order depends on the basis. */
+/* Materials by name: an open-addressing hash table (linear probing) of indices into m->mats, kept
+ * at most half full, so that a newmtl or a usemtl costs the same among 200,000 materials as among 2
+ * (a linear search made 50,000 materials take 9 s to load). A later material of the same name takes
+ * its slot: the latest definition wins. The hash is FNV-1a from a basis drawn once per process (the
+ * time and the stack's address, which ASLR moves), scattered by SplitMix64's finaliser so that every
+ * bit of the index depends on every byte: names made to collide in a fixed hash (100,000 whose FNV-1a
+ * agreed in their low 20 bits took 73 s to load) do not collide here. The table is only looked up:
+ * nothing's order depends on the basis. */
 static uint32_t name_hash(const char *name)
 {
     static uint32_t basis;
     uint32_t h;
     if (!basis) {
-        uint32_t seed = (uint32_t)time(NULL) * 2654435761u;
-        basis = (seed ^ (uint32_t)(uintptr_t)&seed ^ 2166136261u) | 1u;   /* the stack's address: ASLR */
+        uint32_t seed = (uint32_t)time(NULL);
+        basis = (uint32_t)splitmix64_mix((uint64_t)seed << 32 ^ (uint64_t)(uintptr_t)&seed) | 1u;
     }
     for (h = basis; *name; name++) h = (h ^ (unsigned char)*name) * 16777619u;
-    h ^= h >> 16, h *= 0x85ebca6bu, h ^= h >> 13, h *= 0xc2b2ae35u, h ^= h >> 16;
-    return h;
+    return (uint32_t)splitmix64_mix(h);
 }
 
 /* The slot of name: where it is, or the empty slot where it would go. */

@@ -4,7 +4,8 @@
  *   u2 = owen_scramble(sobol_dim1(j), scramble2_d),
  * with the seeds hashed from (seed, pixel, group, dimension) as sampler_start and sobol_point do,
  * and the two Sobol dimensions by their definition (loops over the index bits, not sampler.c's);
- * past SAMPLER_SOBOL_DIMS, the 64 bits of a hash of (the sample's seed, dimension).
+ * past SAMPLER_SOBOL_DIMS, the 64 bits of a hash of (the sample's seed, dimension); and the 21
+ * bits that sampler_2d_53bit puts below u1's 32, a second hash of (the sample's seed, dimension).
  * sobol_point computes the same numbers with fewer bit reversals (on reversed fractions): any
  * change to its shortcuts that changes a number, and thus every Sobol image, fails here. Exact
  * comparisons, no statistics: sobol and sobol1, 2000 (seed, pixel, index, dimension) each, 3 calls. */
@@ -29,13 +30,15 @@ static uint32_t dim1_by_definition(uint32_t index)
     return u;
 }
 
-/* Sample `index` of the sampler `kind`, dimension dim, as a 32-bit pair by the definition. */
-static void by_definition(sampler_kind kind, uint64_t seed, uint64_t pixel, uint64_t index, uint32_t dim, uint32_t *u1, uint32_t *u2)
+/* Sample `index` of the sampler `kind`, dimension dim, as a 32-bit pair by the definition, and the
+ * 21 bits below u1 in *low. */
+static void by_definition(sampler_kind kind, uint64_t seed, uint64_t pixel, uint64_t index, uint32_t dim, uint32_t *u1, uint32_t *u2, uint32_t *low)
 {
     uint64_t K = (uint64_t)sampler_groups(kind);
     uint64_t pixel_seed = splitmix64_at(splitmix64_mix(splitmix64_mix(seed) ^ pixel), index % K);
     uint64_t h = splitmix64_at(pixel_seed, dim);
     uint32_t j = owen_scramble((uint32_t)(index / K), (uint32_t)h);
+    *low = (uint32_t)(splitmix64_at(splitmix64_mix(pixel_seed ^ (index / K)), (uint64_t)dim + 4294967296u) >> 43);
     if (dim >= SAMPLER_SOBOL_DIMS) {   /* a deeper vertex: independent numbers */
         h = splitmix64_at(splitmix64_mix(pixel_seed ^ (index / K)), dim);
         *u1 = (uint32_t)h, *u2 = (uint32_t)(h >> 32);
@@ -47,7 +50,7 @@ static void by_definition(sampler_kind kind, uint64_t seed, uint64_t pixel, uint
 
 static float top24(uint32_t x) { return (float)(x >> 8) * (1.0f / 16777216.0f); }
 
-/* sampler_1d, sampler_2d and sampler_2d_32bit against the definition. */
+/* sampler_1d, sampler_2d and sampler_2d_53bit against the definition. */
 static void check_kind(sampler_kind kind)
 {
     pcg32 r;
@@ -57,17 +60,17 @@ static void check_kind(sampler_kind kind)
     for (n = 0; n < 2000; n++) {
         uint64_t seed = pcg32_next(&r), pixel = pcg32_next(&r) % 1000000u;
         uint64_t index = n < 1000 ? (uint64_t)n : pcg32_next(&r);   /* the first indices, then any */
-        uint32_t dim = pcg32_next(&r) % (n % 2 ? 200u : SAMPLER_SOBOL_DIMS), a, b;   /* half of them Sobol */
+        uint32_t dim = pcg32_next(&r) % (n % 2 ? 200u : SAMPLER_SOBOL_DIMS), a, b, low;   /* half of them Sobol */
         sampler s;
         float f1, f2, g2;
         double d;
-        by_definition(kind, seed, pixel, index, dim, &a, &b);
+        by_definition(kind, seed, pixel, index, dim, &a, &b, &low);
         sampler_start(&s, kind, seed, pixel, index);
         sampler_2d(&s, dim, &f1, &f2);
         bad += f1 != top24(a) || f2 != top24(b);
         bad += sampler_1d(&s, dim) != top24(a);
-        d = sampler_2d_32bit(&s, dim, &g2);
-        bad += d != (double)a / 4294967296.0 || g2 != top24(b);
+        d = sampler_2d_53bit(&s, dim, &g2);
+        bad += d != ((double)a + (double)low / 2097152.0) / 4294967296.0 || g2 != top24(b);
     }
     snprintf(name, sizeof name, "%s: 2000 draws of each call equal the definition (owen_scramble of Sobol dimensions 0, 1 at the shuffled index; a hash past the Sobol vertices)",
              SAMPLER_NAMES[kind]);

@@ -110,7 +110,7 @@ static int draw_light(const emitter_ctx *e, pcg32 *rng, sampling_result *r, ligh
 {
     const light_scene *s = e->s;
     const light_routine *l = e->l;
-    double u0 = pcg32_double(rng), b1, b2, want, fn;
+    double u0 = pcg32_double53(rng), b1, b2, want, fn;
     float u1 = pcg32_float(rng), u2 = pcg32_float(rng);
     int i, t;
     l->sample(&s->ls, l->st, l->p, u0, u1, u2, out);

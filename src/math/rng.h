@@ -57,6 +57,14 @@ static inline uint64_t splitmix64_at(uint64_t seed, uint64_t k) { return splitmi
  * where 24 bits would quantise each item's probability. */
 static inline double pcg32_double(pcg32 *r) { return (double)pcg32_next(r) * (1.0 / 4294967296.0); }
 
+/* Uniform double in [0, 1) with all 53 bits random, from two outputs: for a choice whose
+ * probabilities may be far below 2^-32 (a light tree's), which 32 bits would never draw. */
+static inline double pcg32_double53(pcg32 *r)
+{
+    uint32_t hi = pcg32_next(r), lo = pcg32_next(r) >> 11;
+    return ((double)hi + (double)lo * (1.0 / 2097152.0)) * (1.0 / 4294967296.0);
+}
+
 /* Uniform float in [0, 1): the top 24 bits, so that 1 is never returned. */
 static inline float pcg32_float(pcg32 *r) { return (float)(pcg32_next(r) >> 8) * (1.0f / 16777216.0f); }
 #endif

@@ -141,16 +141,24 @@ void sampler_2d(sampler *s, uint32_t dim, float *u1, float *u2)
     *u2 = to_float(b);
 }
 
-double sampler_2d_32bit(sampler *s, uint32_t dim, float *u2)
+/* The bits of the first coordinate below 2^-32, 21 of them: a hash of (sample, dimension). For a
+ * Sobol set that is what Owen's scrambling would put there, since it flips each bit by a random
+ * function of the bits above it and the points' own bits end at 2^-32. */
+static uint32_t low_bits(const sampler *s, uint32_t dim)
+{
+    return (uint32_t)(splitmix64_at(s->sample_seed, (uint64_t)dim + 4294967296u) >> 43);
+}
+
+double sampler_2d_53bit(sampler *s, uint32_t dim, float *u2)
 {
     uint32_t a, b;
     double u;
     if (s->kind == SAMPLER_INDEPENDENT) {
-        u = pcg32_double(&s->rng);
+        u = pcg32_double53(&s->rng);
         *u2 = pcg32_float(&s->rng);
         return u;
     }
     point(s, dim, &a, &b);
     *u2 = to_float(b);
-    return (double)a * (1.0 / 4294967296.0);
+    return ((double)a + (double)low_bits(s, dim) * (1.0 / 2097152.0)) * (1.0 / 4294967296.0);
 }

@@ -1,5 +1,5 @@
 /* sampler.h — the uniform numbers of one sample, addressed by (seed, pixel, sample index, dimension).
- * sampler_start picks the sample; then sampler_1d, sampler_2d and sampler_2d_32bit give its
+ * sampler_start picks the sample; then sampler_1d, sampler_2d and sampler_2d_53bit give its
  * coordinates at a dimension, and sampler_vertex with the named draws below (sampler_light,
  * sampler_lobe, ...) give each use at each path vertex its own dimension, so that the same use of
  * every path of a pixel reads the same dimension.
@@ -49,10 +49,11 @@ void sampler_from_stream(sampler *s, const pcg32 *r);
 float sampler_1d(sampler *s, uint32_t dim);
 /* Uniform in [0, 1)^2, both coordinates of one 2D set (independent: two numbers in turn). */
 void sampler_2d(sampler *s, uint32_t dim, float *u1, float *u2);
-/* Both coordinates of a 2D set, the first with 32 bits: a discrete choice among millions of items
- * whose remainder is reused as a coordinate (light_sample_point_joint), so the pair stays one
- * stratified 2D set. */
-double sampler_2d_32bit(sampler *s, uint32_t dim, float *u2);
+/* Both coordinates of a 2D set, the first a double with 53 random bits: a discrete choice among
+ * millions of items, some of probability far below 2^-32 (a light tree's), whose remainder is
+ * reused as a coordinate (light_sample_point_joint), so the pair stays one stratified 2D set. The
+ * top 32 bits are the set's (sobol: its stratified coordinate), the 21 below them independent. */
+double sampler_2d_53bit(sampler *s, uint32_t dim, float *u2);
 
 /* The numbers of a path, by use. A sample's dimensions are the pixel jitter, then
  * SAMPLER_DIMS_PER_VERTEX per path vertex k >= 1, one per use: the integrator tells the sampler
@@ -62,7 +63,7 @@ double sampler_2d_32bit(sampler *s, uint32_t dim, float *u2);
  * order of the calls. (pbrt-v4's samplers instead count the dimensions as they are drawn.) */
 enum {
     SAMPLER_DIM_PIXEL = 0,          /* 2D: the jitter inside the pixel */
-    SAMPLER_DIM_LIGHT = 0,          /* 2D, the first coordinate 32 bits: which emitter, and the point s on it */
+    SAMPLER_DIM_LIGHT = 0,          /* 2D, the first coordinate 53 bits: which emitter, and the point s on it */
     SAMPLER_DIM_LOBE = 1,           /* 1D: which BRDF lobe */
     SAMPLER_DIM_DIRECTION = 2,      /* 2D: the direction wi */
     SAMPLER_DIM_ROULETTE = 3,       /* 1D: Russian roulette */
@@ -74,8 +75,8 @@ enum {
 static inline void sampler_pixel(sampler *s, float *jx, float *jy) { sampler_2d(s, SAMPLER_DIM_PIXEL, jx, jy); }
 /* From here on, the numbers are those of path vertex k >= 1. */
 static inline void sampler_vertex(sampler *s, int k) { s->vertex_dim = 1u + (uint32_t)(k - 1) * SAMPLER_DIMS_PER_VERTEX; }
-/* The light's choice (returned, 32 bits) and the point's second coordinate *u2: one 2D set. */
-static inline double sampler_light(sampler *s, float *u2) { return sampler_2d_32bit(s, s->vertex_dim + SAMPLER_DIM_LIGHT, u2); }
+/* The light's choice (returned, 53 bits) and the point's second coordinate *u2: one 2D set. */
+static inline double sampler_light(sampler *s, float *u2) { return sampler_2d_53bit(s, s->vertex_dim + SAMPLER_DIM_LIGHT, u2); }
 static inline float sampler_lobe(sampler *s) { return sampler_1d(s, s->vertex_dim + SAMPLER_DIM_LOBE); }
 static inline void sampler_direction(sampler *s, float *u1, float *u2) { sampler_2d(s, s->vertex_dim + SAMPLER_DIM_DIRECTION, u1, u2); }
 static inline float sampler_roulette(sampler *s) { return sampler_1d(s, s->vertex_dim + SAMPLER_DIM_ROULETTE); }

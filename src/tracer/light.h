@@ -46,7 +46,7 @@ typedef struct {
 /* Collects the emitters of m (with unit normals Ng and areas of its triangles); 0 on success. */
 int light_build(light_set *ls, const mesh *m, const vec3 *Ng, const float *area);
 void light_free(light_set *ls);
-/* Samples s seen from the shading point p: u0 (32 random bits, see pcg32_double) chooses the
+/* Samples s seen from the shading point p: u0 (53 random bits, see pcg32_double53) chooses the
  * emitter, u1, u2 the point on it (the form the checks of check/ sample and test). */
 void light_sample_point(const light_set *ls, light_strategy strategy, vec3 p, double u0, float u1, float u2, light_sample *out);
 /* The same from two numbers: u0 chooses the emitter and where it fell in the emitter's share of

@@ -5,7 +5,9 @@
  * LightBounds::Importance, without the normal at p). The choice descends from the root: at each
  * node the first child with probability I1 / (I1 + I2), and u0 rescaled to stay uniform, so that
  * the leaf's probability is the product of the choices on its path. An emitter that can send light
- * toward p has a nonzero importance at every node above it, hence a nonzero probability: unbiased. */
+ * toward p has a nonzero importance at every node above it, hence a nonzero probability: unbiased,
+ * provided u0 can fall in a share that small. Far from p a share can be 1e-12 and less, hence u0's
+ * 53 random bits (sampler_2d_53bit): with 32, a share under 2^-32 was never drawn. */
 #ifndef PATHLAB_LIGHT_TREE_H
 #define PATHLAB_LIGHT_TREE_H
 #include <stdint.h>

@@ -42,6 +42,20 @@ static void print_figures(const image *im, const char *path)
         printf("  %-5s mean %.6g  min %.6g  max %.6g\n", ch == 0 ? "red" : ch == 1 ? "green" : "blue", sum[ch] / (double)n, lo[ch], hi[ch]);
 }
 
+/* 0 if every value of im is finite; else 1, after naming the first that is not: an image holding a
+ * NaN or an infinity has no mean, and a picture of it would show a wrong colour. */
+static int values_finite(const image *im, const char *path)
+{
+    size_t i, n = 3 * (size_t)im->w * (size_t)im->h, bad = 0, first = 0;
+    for (i = 0; i < n; i++)
+        if (!isfinite(im->px[i]) && bad++ == 0) first = i;
+    if (!bad) return 0;
+    fprintf(stderr, "%s: %zu %s NaN or infinite, the first at x %zu, y %zu (%s, %g; y = 0 is the top row): nothing written\n",
+            shown(path), bad, bad == 1 ? "value is" : "values are", first / 3 % (size_t)im->w, first / 3 / (size_t)im->w,
+            first % 3 == 0 ? "red" : first % 3 == 1 ? "green" : "blue", (double)im->px[first]);
+    return 1;
+}
+
 /* A PFM written: the input's sidecar beside it, if the input has one (the same pixels, made the same
  * way; the input's variance and sample counts are not copied, so the sidecar names none). 0, or 1
  * after saying why. */
@@ -73,6 +87,7 @@ int convert_main(int argc, char **argv)
     }
     if (output_path_check("convert", "output", path[1], IMG_EXTENSIONS)) return 2;
     if (img_format_of(path[0]) == IMG_HDR ? img_read_hdr(&im, path[0]) : img_read_pfm(&im, path[0])) return 2;
+    if (values_finite(&im, path[0])) { img_free(&im); return 2; }
     print_figures(&im, path[0]);
     if (isnan(exposure)) {
         exposure = img_auto_exposure(&im);

@@ -78,30 +78,31 @@ static float brdf_pdf_no_jacobian(const material *m, vec3 wo, vec3 wi)
 }
 
 /* asked for one strategy, samples another */
-static void light_by_power(const light_set *ls, light_strategy st, vec3 p, double u0, float u1, float u2, light_sample *out)
+static void light_by_power(const light_set *ls, light_strategy st, vec3 p, vec3 n, double u0, float u1, float u2, light_sample *out)
 {
     (void)st;
-    light_sample_point(ls, LIGHT_POWER, p, u0, u1, u2, out);
+    light_sample_point(ls, LIGHT_POWER, p, n, u0, u1, u2, out);
 }
 
 /* Arvo's map fed sqrt(u1): the sub-triangle areas are no longer uniform */
-static void arvo_sqrt_u1(const light_set *ls, light_strategy st, vec3 p, double u0, float u1, float u2, light_sample *out)
+static void arvo_sqrt_u1(const light_set *ls, light_strategy st, vec3 p, vec3 n, double u0, float u1, float u2, light_sample *out)
 {
-    light_sample_point(ls, st, p, u0, sqrtf(u1), u2, out);
+    light_sample_point(ls, st, p, n, u0, sqrtf(u1), u2, out);
 }
 
-/* The tree's descent from p with the first child's probability q(k) of node k; a uniform point on
- * the leaf's triangle, and the pdf the tree's own light_pdf_area gives it. rescale = 0: u0 is not
- * rescaled at each node (every level compares the same u0 with its q). */
-static void tree_descent(const light_set *ls, vec3 p, double u0, float u1, float u2, light_sample *out,
-                         double (*q_of)(const light_tree *t, int k, vec3 p), int rescale)
+/* The tree's descent from p with the first child's probability q(k) of node k, seen from p of
+ * normal q_n; a uniform point on the leaf's triangle, and the pdf the tree's own light_pdf_area gives
+ * it from p of normal n. rescale = 0: u0 is not rescaled at each node (every level compares the
+ * same u0 with its q). */
+static void tree_descent(const light_set *ls, vec3 p, vec3 n, vec3 q_n, double u0, float u1, float u2, light_sample *out,
+                         double (*q_of)(const light_tree *t, int k, vec3 p, vec3 n), int rescale)
 {
     const light_tree *t = &ls->tree;
     const emitter *e;
     int k = 0;
     float b1, b2;
     while (t->node[k].right >= 0) {
-        double q = q_of(t, k, p);
+        double q = q_of(t, k, p, q_n);
         if (u0 < q) u0 = rescale ? u0 / q : u0, k = k + 1;
         else u0 = rescale ? (u0 - q) / (1.0 - q) : u0, k = t->node[k].right;
     }
@@ -109,7 +110,7 @@ static void tree_descent(const light_set *ls, vec3 p, double u0, float u1, float
     sample_uniform_triangle(u1, u2, &b1, &b2);
     out->pos = v3_add(e->a, v3_add(v3_scale(e->e1, b1), v3_scale(e->e2, b2)));
     out->n = e->n, out->Le = e->Le;
-    out->pdf_area = light_pdf_area(ls, LIGHT_TREE, out->emitter, p, out->pos);
+    out->pdf_area = light_pdf_area(ls, LIGHT_TREE, out->emitter, p, n, out->pos);
 }
 
 /* the importance without the normal cones: power / d^2, d^2 clamped at the bounding sphere */
@@ -119,35 +120,43 @@ static double no_cone_importance(const light_node *nd, vec3 p)
     return nd->power / fmax(v3_dot(v, v), nd->r * nd->r);
 }
 
-static double q_no_cone(const light_tree *t, int k, vec3 p)
+static double q_no_cone(const light_tree *t, int k, vec3 p, vec3 n)
 {
     double i1 = no_cone_importance(&t->node[k + 1], p), i2 = no_cone_importance(&t->node[t->node[k].right], p);
+    (void)n;
     return i1 + i2 > 0.0 ? i1 / (i1 + i2) : 0.5;
 }
 
 /* the tree's descent with u0 never rescaled */
-static void tree_no_rescale(const light_set *ls, light_strategy st, vec3 p, double u0, float u1, float u2, light_sample *out)
+static void tree_no_rescale(const light_set *ls, light_strategy st, vec3 p, vec3 n, double u0, float u1, float u2, light_sample *out)
 {
     (void)st;
-    tree_descent(ls, p, u0, u1, u2, out, light_tree_first_prob, 0);
+    tree_descent(ls, p, n, n, u0, u1, u2, out, light_tree_first_prob, 0);
+}
+
+/* the tree's descent blind to the normal at p, checked against the tree's pdf, which sees it */
+static void tree_no_normal(const light_set *ls, light_strategy st, vec3 p, vec3 n, double u0, float u1, float u2, light_sample *out)
+{
+    (void)st;
+    tree_descent(ls, p, n, v3(0, 0, 0), u0, u1, u2, out, light_tree_first_prob, 1);
 }
 
 /* the tree's descent weighing nodes by power / d^2 only, checked against the tree's pdf */
-static void tree_no_cone(const light_set *ls, light_strategy st, vec3 p, double u0, float u1, float u2, light_sample *out)
+static void tree_no_cone(const light_set *ls, light_strategy st, vec3 p, vec3 n, double u0, float u1, float u2, light_sample *out)
 {
     (void)st;
-    tree_descent(ls, p, u0, u1, u2, out, q_no_cone, 1);
+    tree_descent(ls, p, n, n, u0, u1, u2, out, q_no_cone, 1);
 }
 
 /* the tree's pdf with the first child's probability at every step, whichever child the path takes */
-static float tree_pdf_first_always(const light_set *ls, light_strategy st, int i, vec3 p, vec3 s)
+static float tree_pdf_first_always(const light_set *ls, light_strategy st, int i, vec3 p, vec3 n, vec3 s)
 {
     const light_tree *t = &ls->tree;
     double pr = 1.0;
     int k = 0, level;
     (void)st, (void)s;
     for (level = 0; level < t->depth[i]; level++) {
-        pr *= light_tree_first_prob(t, k, p);
+        pr *= light_tree_first_prob(t, k, p, n);
         k = t->path[i] >> level & 1u ? t->node[k].right : k + 1;
     }
     return (float)pr / ls->e[i].area;
@@ -208,6 +217,9 @@ static int breakages(breakage *b)
     b[n].what = "tree: nodes weighed by power / d^2 (no normal cone), checked against the tree's pdf";
     b[n].control = find("tree, 40 emitters, corner (2.5, 2.5, 2.5)");
     b[n].broken = b[n].control, b[n++].broken.light.sample = tree_no_cone;
+    b[n].what = "tree: the descent blind to the normal at p, checked against the tree's pdf";
+    b[n].control = find("tree, 40 emitters, (0.3, -0.2, 0.1) normal +y");
+    b[n].broken = b[n].control, b[n++].broken.light.sample = tree_no_normal;
     b[n].what = "tree: pdf with the first child's probability at every step", b[n].control = find("tree points, 40 emitters, (0.5, 0.5, 0.5)");
     b[n].broken = b[n].control, b[n++].broken.light.pdf = tree_pdf_first_always;
     b[n].what = "sky directions uniform in theta inside their row (16 x 8 image)", b[n].control = find("sky_sample, 16 x 8 image");

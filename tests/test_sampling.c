@@ -253,6 +253,30 @@ static void test_light_build(void)
     light_scene_free(&s);
 }
 
+/* From p = (3, 2, 0.5) on a surface of normal +x, over the emitters of test_tree_many: those with a
+ * corner at x > 3 light p and must have a probability > 0; those wholly at x < 2.9 are under p's
+ * surface: the normal's bound must take a good part of their probability away (measured: 0.154
+ * of the choices, 0.311 without the normal; what is left falls in nodes whose loose bounding sphere
+ * holds p, and which then split it evenly among children that both have importance 0). */
+static void test_tree_normal(const light_set *ls)
+{
+    vec3 p = v3(3, 2, 0.5f), n = v3(1, 0, 0);
+    double sum = 0.0, under_p = 0.0, under_p_bare = 0.0;
+    long lit = 0, lit_zero = 0;
+    int i;
+    for (i = 0; i < ls->n; i++) {
+        const emitter *e = &ls->e[i];
+        double pr = (double)light_pdf_area(ls, LIGHT_TREE, i, p, n, p) * e->area;
+        float xmax = fmaxf(e->a.x, fmaxf(e->a.x + e->e1.x, e->a.x + e->e2.x));
+        sum += pr;
+        if (xmax > 3.0f) lit++, lit_zero += !(pr > 0.0);
+        else if (xmax < 2.9f) under_p += pr, under_p_bare += (double)light_pdf_area(ls, LIGHT_TREE, i, p, v3(0, 0, 0), p) * e->area;
+    }
+    check(fabs(sum - 1.0) < 1e-4 && lit_zero == 0 && under_p < 0.6 * under_p_bare,
+          "tree, 300000 emitters from (3, 2, 0.5) of normal +x: probabilities sum to 1, none 0 right of p, those under its surface under 0.6 of their share without the normal",
+          "sum %.7f; %ld of %ld right of p at 0; under p's surface %.3g of the choices, %.3g without the normal", sum, lit_zero, lit, under_p, under_p_bare);
+}
+
 /* The tree over many emitters (all in z = 0, facing +z): its depth, and from points above (every
  * emitter faces them: each must have a probability > 0) and below (none does), the probabilities of
  * light_pdf_area x area sum to 1 */
@@ -268,13 +292,14 @@ static void test_tree_many(const light_set *ls)
         long zero = 0;
         char name[160];
         for (i = 0; i < ls->n; i++) {
-            double pr = (double)light_pdf_area(ls, LIGHT_TREE, i, p, p) * ls->e[i].area;
+            double pr = (double)light_pdf_area(ls, LIGHT_TREE, i, p, v3(0, 0, 0), p) * ls->e[i].area;
             sum += pr, zero += !(pr > 0.0);
         }
         snprintf(name, sizeof name, "tree, 300000 emitters from (%g, %g, %g): probabilities sum to 1, %s", p.x, p.y, p.z,
                  p.z > 0 ? "none 0" : "below them");
         check(fabs(sum - 1.0) < 1e-4 && (p.z < 0 || zero == 0), name, "sum %.7f, %ld emitters of probability 0", sum, zero);
     }
+    test_tree_normal(ls);
 }
 
 static void test_many_emitters(void)
@@ -306,23 +331,23 @@ static void test_many_emitters(void)
     m.P = P, m.nverts = 3 * n, m.tri = tri, m.tri_mat = tri_mat, m.ntris = n, m.mats = mats, m.nmats = 3;
     i = light_build(&ls, &m, Ng, area);
     if (check(i == 0 && ls.n == n, "light_build on 300000 emitters", "%d emitters", ls.n)) {
-        check(fabs(light_pdf_area(&ls, LIGHT_AREA, 0, v3(0, 0, 0), v3(0, 0, 0)) * A - 1.0) < 1e-5, "area pdf of 300000 emitters = 1 / total area",
-              "1/pdf = %.7g, sum of the areas %.7g (relative gap %.2g)", 1.0 / light_pdf_area(&ls, LIGHT_AREA, 0, v3(0, 0, 0), v3(0, 0, 0)), A,
-              light_pdf_area(&ls, LIGHT_AREA, 0, v3(0, 0, 0), v3(0, 0, 0)) * A - 1.0);
+        check(fabs(light_pdf_area(&ls, LIGHT_AREA, 0, v3(0, 0, 0), v3(0, 0, 0), v3(0, 0, 0)) * A - 1.0) < 1e-5, "area pdf of 300000 emitters = 1 / total area",
+              "1/pdf = %.7g, sum of the areas %.7g (relative gap %.2g)", 1.0 / light_pdf_area(&ls, LIGHT_AREA, 0, v3(0, 0, 0), v3(0, 0, 0), v3(0, 0, 0)), A,
+              light_pdf_area(&ls, LIGHT_AREA, 0, v3(0, 0, 0), v3(0, 0, 0), v3(0, 0, 0)) * A - 1.0);
         for (st = 0; st <= LIGHT_POWER; st++) {   /* the strategies whose pdf is choice / area */
             double worst = 0.0, worst_allowed = 0.0, prev = 0.0, sum_p = 0.0;
             char name[96];
             for (i = 0; i < n; i++) {
-                double next = ceil((double)ls.cdf[st][i] * 4294967296.0), picked = (next - prev) / 4294967296.0;
-                double claimed = (double)light_pdf_area(&ls, (light_strategy)st, i, v3(0, 0, 0), v3(0, 0, 0)) * ls.e[i].area;
-                double gap = fabs(picked - claimed) / claimed, allowed = 1.0 / 4294967296.0 / claimed + 1e-5;
+                double next = ceil((double)ls.cdf[st][i] * 9007199254740992.0), picked = (next - prev) / 9007199254740992.0;
+                double claimed = (double)light_pdf_area(&ls, (light_strategy)st, i, v3(0, 0, 0), v3(0, 0, 0), v3(0, 0, 0)) * ls.e[i].area;
+                double gap = fabs(picked - claimed) / claimed, allowed = 1.0 / 9007199254740992.0 / claimed + 1e-5;
                 if (gap / allowed > worst) worst = gap / allowed, worst_allowed = allowed;
                 sum_p += claimed;
                 prev = next;
             }
             snprintf(name, sizeof name, "300000 emitters, %s: pick probabilities = pdf x area", LIGHT_STRATEGY_NAMES[st]);
             check(worst <= 1.0 && fabs(sum_p - 1.0) < 1e-4, name,
-                  "worst gap %.2g of the allowed 2^-32/p + 1e-5 (= %.2g there); sum of pdf x area %.7f", worst,
+                  "worst gap %.2g of the allowed 2^-53/p + 1e-5 (= %.2g there); sum of pdf x area %.7f", worst,
                   worst_allowed, sum_p);
         }
         test_tree_many(&ls);

@@ -35,12 +35,12 @@ typedef struct {                 /* brdf_sample and its pdf, for one material an
     int wi_integral;             /* also integrate the pdf in the wi domain itself (slower) */
 } brdf_routine;
 
-typedef struct {                 /* light_sample_point and light_pdf_area in a test scene, from p */
-    void (*sample)(const light_set *ls, light_strategy st, vec3 p, double u0, float u1, float u2, light_sample *out);
-    float (*pdf)(const light_set *ls, light_strategy st, int i, vec3 p, vec3 s);
+typedef struct {                 /* light_sample_point and light_pdf_area in a test scene, from p of normal n */
+    void (*sample)(const light_set *ls, light_strategy st, vec3 p, vec3 n, double u0, float u1, float u2, light_sample *out);
+    float (*pdf)(const light_set *ls, light_strategy st, int i, vec3 p, vec3 n, vec3 s);
     light_strategy st;
     light_scene_id scene;
-    vec3 p;
+    vec3 p, n;                   /* n = (0, 0, 0): a bare point, lit from every side */
     int grid;                    /* CASE_LIGHT_POINT: grid^2 cells per emitter */
 } light_routine;
 

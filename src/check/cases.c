@@ -78,14 +78,15 @@ static void add_brdfs(sampling_case *cases, int *n, int max)
 
 /* light_sample_point_joint in the form of the checks: u1 unused, the point's first coordinate is
  * what the choice left of u0 (for tree: u0 rescaled at every node of the descent) */
-static void joint_sample(const light_set *ls, light_strategy st, vec3 p, double u0, float u1, float u2, light_sample *out)
+static void joint_sample(const light_set *ls, light_strategy st, vec3 p, vec3 n, double u0, float u1, float u2, light_sample *out)
 {
     (void)u1;
-    light_sample_point_joint(ls, st, p, u0, u2, out);
+    light_sample_point_joint(ls, st, p, n, u0, u2, out);
 }
 
 /* tree: the choice among the 40 emitters of LIGHT_SCENE_MANY (some face p, some do not) from inside
- * the cluster, from its corner and from far away; the point, from plain and joint sampling */
+ * the cluster, from its corner and from far away, and from a surface inside it (a normal: the
+ * emitters under it get 0); the point, from plain and joint sampling */
 static void add_tree(sampling_case *cases, int *n, int max)
 {
     static const struct { const char *name; float p[3]; } from[] = {
@@ -104,6 +105,12 @@ static void add_tree(sampling_case *cases, int *n, int max)
     if ((c = add(cases, n, max, CASE_LIGHT_POINT, "tree joint, 40 emitters, (0.3, -0.2, 0.1)"))) {
         c->light.st = LIGHT_TREE, c->light.scene = LIGHT_SCENE_MANY, c->light.grid = 4, c->light.p = v3(0.3f, -0.2f, 0.1f);
         c->light.sample = joint_sample;
+    }
+    if ((c = add(cases, n, max, CASE_LIGHT_CHOICE, "tree, 40 emitters, (0.3, -0.2, 0.1) normal +y")))
+        c->light.st = LIGHT_TREE, c->light.scene = LIGHT_SCENE_MANY, c->light.p = v3(0.3f, -0.2f, 0.1f), c->light.n = v3(0, 1, 0);
+    if ((c = add(cases, n, max, CASE_LIGHT_POINT, "tree joint, 40 emitters, (0.5, 0.5, 0.5) normal -x"))) {
+        c->light.st = LIGHT_TREE, c->light.scene = LIGHT_SCENE_MANY, c->light.grid = 4;
+        c->light.p = v3(0.5f, 0.5f, 0.5f), c->light.n = v3(-1, 0, 0), c->light.sample = joint_sample;
     }
 }
 

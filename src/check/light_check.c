@@ -38,7 +38,7 @@ static dvec corner(const light_scene *s, int i, int k) { return dv_of(s->P[s->tr
 /* The tree's choice of every emitter from p, by walking the whole tree (not light.c's walk down one
  * emitter's path): each node passes its probability to its children in proportion to their
  * importances, half each when both are 0. */
-static void tree_choices(const light_tree *t, int k, vec3 p, double prob, double *choice)
+static void tree_choices(const light_tree *t, int k, vec3 p, vec3 n, double prob, double *choice)
 {
     const light_node *nd = &t->node[k];
     double i1, i2, q;
@@ -46,10 +46,10 @@ static void tree_choices(const light_tree *t, int k, vec3 p, double prob, double
         choice[nd->emitter] = prob;
         return;
     }
-    i1 = light_node_importance(nd + 1, p), i2 = light_node_importance(&t->node[nd->right], p);
+    i1 = light_node_importance(nd + 1, p, n), i2 = light_node_importance(&t->node[nd->right], p, n);
     q = i1 + i2 > 0.0 ? i1 / (i1 + i2) : 0.5;
-    tree_choices(t, k + 1, p, prob * q, choice);
-    tree_choices(t, nd->right, p, prob * (1.0 - q), choice);
+    tree_choices(t, k + 1, p, n, prob * q, choice);
+    tree_choices(t, nd->right, p, n, prob * (1.0 - q), choice);
 }
 
 /* What the checks know of emitter i seen from p, computed once. */
@@ -67,7 +67,7 @@ static void emitters_seen(const light_scene *s, const light_routine *l, emitter_
     double sum = 0.0, tree[LIGHT_SCENE_MAX];
     int i, k;
     for (i = 0; i < s->ls.n; i++) sum += choice_weight(s, l->st, i);
-    if (l->st == LIGHT_TREE) tree_choices(&s->ls.tree, 0, l->p, 1.0, tree);
+    if (l->st == LIGHT_TREE) tree_choices(&s->ls.tree, 0, l->p, l->n, 1.0, tree);
     for (i = 0; i < s->ls.n; i++) {
         memset(&e[i], 0, sizeof e[i]);
         e[i].s = s, e[i].l = l, e[i].i = i;
@@ -113,7 +113,7 @@ static int draw_light(const emitter_ctx *e, pcg32 *rng, sampling_result *r, ligh
     double u0 = pcg32_double53(rng), b1, b2, want, fn;
     float u1 = pcg32_float(rng), u2 = pcg32_float(rng);
     int i, t;
-    l->sample(&s->ls, l->st, l->p, u0, u1, u2, out);
+    l->sample(&s->ls, l->st, l->p, l->n, u0, u1, u2, out);
     i = out->emitter;
     if (i < 0 || i >= s->ls.n) {
         r->outside++;
@@ -121,7 +121,7 @@ static int draw_light(const emitter_ctx *e, pcg32 *rng, sampling_result *r, ligh
     }
     t = s->ls.e[i].tri;
     r->geom_gap = fmax(r->geom_gap, barycentrics(s, i, dv_of(out->pos), &b1, &b2));
-    fn = l->pdf(&s->ls, l->st, i, l->p, out->pos);
+    fn = l->pdf(&s->ls, l->st, i, l->p, l->n, out->pos);
     want = pdf_formula(&e[i], dv_of(out->pos));
     r->formula_gap = fmax(r->formula_gap, fabs(fn - want) / want);
     r->pdf_checked++;
@@ -139,7 +139,7 @@ static double pdf_in_barycentrics(const void *ctx, double b1, double b2)
     const emitter_ctx *e = ctx;
     dvec a = corner(e->s, e->i, 0), b = corner(e->s, e->i, 1), c = corner(e->s, e->i, 2);
     dvec sp = dv_lin(dv_lin(a, 1.0 - b1 - b2, b, b1), 1.0, c, b2);
-    return e->l->pdf(&e->s->ls, e->l->st, e->i, e->l->p, fv_of(sp)) * 2.0 * e->s->area[e->s->ls.e[e->i].tri];
+    return e->l->pdf(&e->s->ls, e->l->st, e->i, e->l->p, e->l->n, fv_of(sp)) * 2.0 * e->s->area[e->s->ls.e[e->i].tri];
 }
 
 /* pdf_w Omega at Arvo's coordinates (u1, u2) of emitter i: a density in du1 du2 */
@@ -147,7 +147,7 @@ static double pdf_in_arvo(const emitter_ctx *e, double u1, double u2)
 {
     dvec w = arvo_direction(&e->t, u1, u2), p = dv_of(e->l->p), n = dv_of(e->s->Ng[e->s->ls.e[e->i].tri]);
     double dist = dv_dot(dv_lin(corner(e->s, e->i, 0), 1.0, p, -1.0), n) / dv_dot(w, n);
-    float pdf_area = e->l->pdf(&e->s->ls, e->l->st, e->i, e->l->p, fv_of(dv_lin(p, 1.0, w, dist)));
+    float pdf_area = e->l->pdf(&e->s->ls, e->l->st, e->i, e->l->p, e->l->n, fv_of(dv_lin(p, 1.0, w, dist)));
     return pdf_area * dist * dist / fabs(dv_dot(w, n)) * e->t.omega;
 }
 
@@ -190,10 +190,12 @@ static int begin(light_scene *s, const light_routine *l, emitter_ctx *e, samplin
     r->has_geom = 1, r->geom_tol = 1e-5;
     for (i = 0; i < s->ls.n; i++) {   /* the pdf at each centroid, in case an emitter is never drawn */
         dvec g = dv_lin(dv_lin(corner(s, i, 0), 1.0, corner(s, i, 1), 1.0), 1.0 / 3.0, corner(s, i, 2), 1.0 / 3.0);
-        double fn = l->pdf(&s->ls, l->st, i, l->p, fv_of(g)), want = pdf_formula(&e[i], dv_of(fv_of(g)));
+        double fn = l->pdf(&s->ls, l->st, i, l->p, l->n, fv_of(g)), want = pdf_formula(&e[i], dv_of(fv_of(g)));
         double facing = dv_dot(dv_of(s->Ng[s->ls.e[i].tri]), dv_lin(dv_of(l->p), 1.0, g, -1.0));
+        int k, above = !(v3_dot(l->n, l->n) > 0.0f);   /* a corner above p's surface (any, with no normal) */
+        for (k = 0; k < 3; k++) above |= dv_dot(dv_of(l->n), dv_lin(corner(s, i, k), 1.0, dv_of(l->p), -1.0)) > 0.0;
         r->formula_gap = fmax(r->formula_gap, fn == want ? 0.0 : fabs(fn - want) / want);
-        if (facing > 0.0 && !(fn > 0.0)) r->outside++;   /* it lights p: a pdf of 0 there is a bias */
+        if (facing > 0.0 && above && !(fn > 0.0)) r->outside++;   /* it lights p: a pdf of 0 there is a bias */
     }
     return 0;
 }

@@ -184,7 +184,7 @@ static vec3 direct_from_light(const scene *sc, const integrator_opts *opt, const
         if (u0 < sc->sky_prob) return direct_from_sky(sc, opt, p, u0 / sc->sky_prob, u->light_u2, st);
         u0 = fmin((u0 - sc->sky_prob) / (1.0 - sc->sky_prob), 0x1.fffffffffffffp-1);
     }
-    light_sample_point_joint(&sc->lights, opt->light, p->pos, u0, u->light_u2, &s);
+    light_sample_point_joint(&sc->lights, opt->light, p->pos, p->n, u0, u->light_u2, &s);
     to_s = v3_sub(s.pos, p->pos);
     dist2 = v3_dot(to_s, to_s);
     dist = sqrtf(dist2);
@@ -208,7 +208,7 @@ static float light_pdf1_sa(const scene *sc, const integrator_opts *opt, const ve
     float dist2 = q->t * q->t * v3_dot(ray_pq->d, ray_pq->d);
     float cos_s = -v3_dot(sc->Ng[q->tri], ray_pq->d) / v3_length(ray_pq->d);
     assert(i >= 0);   /* q emits light, so its triangle is one of the emitters */
-    return pdf_area_to_solid_angle(light_pdf_area(&sc->lights, opt->light, i, p->pos, scene_hit_point(sc, q)), dist2, cos_s) * sc->emitter_prob;
+    return pdf_area_to_solid_angle(light_pdf_area(&sc->lights, opt->light, i, p->pos, p->n, scene_hit_point(sc, q)), dist2, cos_s) * sc->emitter_prob;
 }
 
 /* L_k by direction sampling: the ray from p, of density pdf2_sa, hit q; Le(q) if q emits toward p,

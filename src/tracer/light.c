@@ -109,11 +109,11 @@ static int pick(const double *cdf, int n, double u)
 }
 
 /* The probability of choosing emitter i from p (before the point on it). */
-static float choice_prob(const light_set *ls, light_strategy strategy, int i, vec3 p)
+static float choice_prob(const light_set *ls, light_strategy strategy, int i, vec3 p, vec3 n)
 {
     const double *cdf = ls->cdf[choice_of(strategy)];
     assert(0 <= i && i < ls->n);
-    if (strategy == LIGHT_TREE) return (float)light_tree_prob(&ls->tree, i, p);
+    if (strategy == LIGHT_TREE) return (float)light_tree_prob(&ls->tree, i, p, n);
     return (float)(cdf[i] - (i > 0 ? cdf[i - 1] : 0.0));
 }
 
@@ -171,29 +171,29 @@ static vec3 sample_spherical_triangle(const spherical_triangle *t, float u1, flo
 }
 
 /* solid-angle's pdf1 per unit area at the point s of emitter i, which subtends t from p (usable). */
-static float solid_angle_pdf_area(const light_set *ls, int i, const spherical_triangle *t, vec3 p, vec3 s)
+static float solid_angle_pdf_area(const light_set *ls, int i, const spherical_triangle *t, vec3 p, vec3 n, vec3 s)
 {
     vec3 d = v3_sub(s, p);
     float dist2 = v3_dot(d, d), cos_s = fabsf(v3_dot(ls->e[i].n, d)) / sqrtf(dist2);
-    float pdf_sa = choice_prob(ls, LIGHT_SOLID_ANGLE, i, p) / (float)t->omega;   /* uniform over Omega */
+    float pdf_sa = choice_prob(ls, LIGHT_SOLID_ANGLE, i, p, n) / (float)t->omega;   /* uniform over Omega */
     return pdf_solid_angle_to_area(pdf_sa, dist2, cos_s);
 }
 
-float light_pdf_area(const light_set *ls, light_strategy strategy, int i, vec3 p, vec3 s)
+float light_pdf_area(const light_set *ls, light_strategy strategy, int i, vec3 p, vec3 n, vec3 s)
 {
     const emitter *e = &ls->e[i];
     /* the area strategy is exactly 1/A; computing it from the cdf would add rounding */
     if (strategy == LIGHT_AREA) return 1.0f / ls->total_area;
     if (strategy == LIGHT_SOLID_ANGLE) {
         spherical_triangle t = spherical_triangle_from(e, p);
-        if (solid_angle_usable(&t)) return solid_angle_pdf_area(ls, i, &t, p, s);
+        if (solid_angle_usable(&t)) return solid_angle_pdf_area(ls, i, &t, p, n, s);
     }
-    return choice_prob(ls, strategy, i, p) / e->area;
+    return choice_prob(ls, strategy, i, p, n) / e->area;
 }
 
 /* The point on emitter i (chosen already) from u1, u2; tree_choice: for tree, the probability its
  * descent gave i (light_pdf_area would descend again). */
-static void sample_on_emitter(const light_set *ls, light_strategy strategy, int i, float tree_choice, vec3 p, float u1, float u2, light_sample *out)
+static void sample_on_emitter(const light_set *ls, light_strategy strategy, int i, float tree_choice, vec3 p, vec3 n, float u1, float u2, light_sample *out)
 {
     const emitter *e = &ls->e[i];
     float b1, b2;
@@ -207,30 +207,30 @@ static void sample_on_emitter(const light_set *ls, light_strategy strategy, int 
             vec3 w = sample_spherical_triangle(&t, u1, u2);
             float dist = v3_dot(v3_sub(e->a, p), e->n) / v3_dot(w, e->n);
             out->pos = v3_madd(p, w, dist);
-            out->pdf_area = solid_angle_pdf_area(ls, i, &t, p, out->pos);   /* the t just made: no second one */
+            out->pdf_area = solid_angle_pdf_area(ls, i, &t, p, n, out->pos);   /* the t just made: no second one */
             return;
         }
     }
     sample_uniform_triangle(u1, u2, &b1, &b2);
     out->pos = v3_add(e->a, v3_add(v3_scale(e->e1, b1), v3_scale(e->e2, b2)));
-    out->pdf_area = strategy == LIGHT_TREE ? tree_choice / e->area : light_pdf_area(ls, strategy, i, p, out->pos);
+    out->pdf_area = strategy == LIGHT_TREE ? tree_choice / e->area : light_pdf_area(ls, strategy, i, p, n, out->pos);
 }
 
-void light_sample_point(const light_set *ls, light_strategy strategy, vec3 p, double u0, float u1, float u2, light_sample *out)
+void light_sample_point(const light_set *ls, light_strategy strategy, vec3 p, vec3 n, double u0, float u1, float u2, light_sample *out)
 {
     double prob;
     int i;
     assert(ls->n > 0);   /* callers sample lights only in a scene that has some */
     if (strategy == LIGHT_TREE) {
-        i = light_tree_pick(&ls->tree, p, &u0, &prob);
-        sample_on_emitter(ls, strategy, i, (float)prob, p, u1, u2, out);
+        i = light_tree_pick(&ls->tree, p, n, &u0, &prob);
+        sample_on_emitter(ls, strategy, i, (float)prob, p, n, u1, u2, out);
         return;
     }
     i = pick(ls->cdf[choice_of(strategy)], ls->n, u0);
-    sample_on_emitter(ls, strategy, i, 0.0f, p, u1, u2, out);
+    sample_on_emitter(ls, strategy, i, 0.0f, p, n, u1, u2, out);
 }
 
-void light_sample_point_joint(const light_set *ls, light_strategy strategy, vec3 p, double u0, float u2, light_sample *out)
+void light_sample_point_joint(const light_set *ls, light_strategy strategy, vec3 p, vec3 n, double u0, float u2, light_sample *out)
 {
     const double *cdf = ls->cdf[choice_of(strategy)];
     int i;
@@ -239,7 +239,7 @@ void light_sample_point_joint(const light_set *ls, light_strategy strategy, vec3
     assert(ls->n > 0);
     if (strategy == LIGHT_TREE) {   /* the descent rescales u0 at each node: r is what is left */
         r = u0;
-        i = light_tree_pick(&ls->tree, p, &r, &share);
+        i = light_tree_pick(&ls->tree, p, n, &r, &share);
     } else {
         i = pick(cdf, ls->n, u0);
         lo = i > 0 ? cdf[i - 1] : 0.0;
@@ -249,5 +249,5 @@ void light_sample_point_joint(const light_set *ls, light_strategy strategy, vec3
     u1 = (float)r;
     if (!(u1 < 1.0f)) u1 = 0x1.fffffep-1f;   /* r rounded up to 1, or past it by the cdf's rounding */
     if (!(u1 >= 0.0f)) u1 = 0.0f;
-    sample_on_emitter(ls, strategy, i, (float)share, p, u1, u2, out);
+    sample_on_emitter(ls, strategy, i, (float)share, p, n, u1, u2, out);
 }

@@ -46,17 +46,19 @@ typedef struct {
 /* Collects the emitters of m (with unit normals Ng and areas of its triangles); 0 on success. */
 int light_build(light_set *ls, const mesh *m, const vec3 *Ng, const float *area);
 void light_free(light_set *ls);
-/* Samples s seen from the shading point p: u0 (53 random bits, see pcg32_double53) chooses the
- * emitter, u1, u2 the point on it (the form the checks of check/ sample and test). */
-void light_sample_point(const light_set *ls, light_strategy strategy, vec3 p, double u0, float u1, float u2, light_sample *out);
+/* Samples s seen from the shading point p of normal n (the side it is lit from; (0, 0, 0): none,
+ * which only --light tree reads, to skip the emitters under p's surface): u0 (53 random bits, see
+ * pcg32_double53) chooses the emitter, u1, u2 the point on it (the form the checks of check/
+ * sample and test). */
+void light_sample_point(const light_set *ls, light_strategy strategy, vec3 p, vec3 n, double u0, float u1, float u2, light_sample *out);
 /* The same from two numbers: u0 chooses the emitter and where it fell in the emitter's share of
  * [0, 1) is the point's first coordinate, u2 its second. Conditional on the choice that remainder
  * is uniform and independent of u2, so it samples the same density; but a stratified (u0, u2) set
  * stays stratified over all the emitters together, where an emitter chosen by a number of its own
  * would receive a random subset of the points. What the integrator uses, whatever the sampler. */
-void light_sample_point_joint(const light_set *ls, light_strategy strategy, vec3 p, double u0, float u2, light_sample *out);
-/* pdf1(s) per unit area of the point s on emitter i, chosen from p under that strategy. */
-float light_pdf_area(const light_set *ls, light_strategy strategy, int i, vec3 p, vec3 s);
+void light_sample_point_joint(const light_set *ls, light_strategy strategy, vec3 p, vec3 n, double u0, float u2, light_sample *out);
+/* pdf1(s) per unit area of the point s on emitter i, chosen from p of normal n under that strategy. */
+float light_pdf_area(const light_set *ls, light_strategy strategy, int i, vec3 p, vec3 n, vec3 s);
 /* A density per unit area at a point seen at squared distance dist2 under cosine cos_s, made one
  * per steradian (0 when the point is seen edge-on or from behind). */
 static inline float pdf_area_to_solid_angle(float pdf_area, float dist2, float cos_s)

@@ -13,11 +13,21 @@
 
 /* ---------- importance ---------- */
 
+/* cos of theta - theta_b, or 1 when theta <= theta_b: the smallest angle between a direction
+ * within theta_b of one at angle theta (of cosine cos_t) and the axis theta is measured from. */
+static inline float cos_minus(float cos_t, float cos_b, float sin_b)
+{
+    float sin_t;
+    if (cos_t >= cos_b) return 1.0f;
+    sin_t = sqrtf(1.0f - cos_t * cos_t > 0.0f ? 1.0f - cos_t * cos_t : 0.0f);
+    return cos_t * cos_b + sin_t * sin_b;
+}
+
 /* (inline here: the descent calls it twice per level, the hottest code of a light sample) */
-static inline float importance(const light_node *nd, vec3 p)
+static inline float importance(const light_node *nd, vec3 p, vec3 n)
 {
     vec3 v = v3_sub(p, nd->c);
-    float d2 = v3_dot(v, v), inv_d, cos_w, sin_w, cos_x, sin_x, sin_b, cos_b;
+    float d2 = v3_dot(v, v), inv_d, cos_w, sin_w, cos_x, sin_x, sin_b, cos_b, cos_i;
     /* p in the bounding sphere: any emitter may face it, and 1/d^2 is clamped at the sphere */
     if (d2 <= nd->r * nd->r) return nd->r > 0.0f ? nd->power / (nd->r * nd->r) : nd->power;
     inv_d = 1.0f / sqrtf(d2);
@@ -32,27 +42,31 @@ static inline float importance(const light_node *nd, vec3 p)
     if (cos_x < cos_b) cos_x = cos_x * cos_b + sin_x * sin_b;
     else cos_x = 1.0f;
     if (cos_x < -CONE_MARGIN) return 0.0f;   /* theta' > pi/2: every emitter below shows p its back */
-    return nd->power * (cos_x > CONE_MARGIN ? cos_x : CONE_MARGIN) / d2;
+    /* theta_i, from n to p -> s, is at least the angle from n to p -> c minus theta_b: past pi/2
+     * every emitter below is under p's surface (n = 0: no normal, no bound) */
+    cos_i = 1.0f;
+    if (v3_dot(n, n) > 0.0f && (cos_i = cos_minus(-v3_dot(n, v) * inv_d, cos_b, sin_b)) < -CONE_MARGIN) return 0.0f;
+    return nd->power * (cos_x > CONE_MARGIN ? cos_x : CONE_MARGIN) * (cos_i > CONE_MARGIN ? cos_i : CONE_MARGIN) / d2;
 }
 
-float light_node_importance(const light_node *nd, vec3 p) { return importance(nd, p); }
+float light_node_importance(const light_node *nd, vec3 p, vec3 n) { return importance(nd, p, n); }
 
-double light_tree_first_prob(const light_tree *t, int k, vec3 p)
+double light_tree_first_prob(const light_tree *t, int k, vec3 p, vec3 n)
 {
     const light_node *nd = &t->node[k];
-    double i1 = importance(nd + 1, p), i2 = importance(&t->node[nd->right], p);
+    double i1 = importance(nd + 1, p, n), i2 = importance(&t->node[nd->right], p, n);
     /* neither child can light p: any choice gives 0, but it must have a probability */
     return i1 + i2 > 0.0 ? i1 / (i1 + i2) : 0.5;
 }
 
 /* ---------- the descent and its probability ---------- */
 
-int light_tree_pick(const light_tree *t, vec3 p, double *u, double *prob)
+int light_tree_pick(const light_tree *t, vec3 p, vec3 n, double *u, double *prob)
 {
     double pr = 1.0;
     int k = 0;
     while (t->node[k].right >= 0) {
-        double q = light_tree_first_prob(t, k, p);
+        double q = light_tree_first_prob(t, k, p, n);
         if (*u < q) *u = *u / q, pr *= q, k = k + 1;
         else *u = (*u - q) / (1.0 - q), pr *= 1.0 - q, k = t->node[k].right;
         if (!(*u < 1.0)) *u = 1.0 - DBL_EPSILON / 2;   /* rounded up to 1 */
@@ -61,12 +75,12 @@ int light_tree_pick(const light_tree *t, vec3 p, double *u, double *prob)
     return t->node[k].emitter;
 }
 
-double light_tree_prob(const light_tree *t, int i, vec3 p)
+double light_tree_prob(const light_tree *t, int i, vec3 p, vec3 n)
 {
     double pr = 1.0;
     int k = 0, level;
     for (level = 0; level < t->depth[i]; level++) {
-        double q = light_tree_first_prob(t, k, p);
+        double q = light_tree_first_prob(t, k, p, n);
         if (t->path[i] >> level & 1u) pr *= 1.0 - q, k = t->node[k].right;
         else pr *= q, k = k + 1;
     }

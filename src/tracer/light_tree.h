@@ -1,8 +1,10 @@
 /* light_tree.h — choosing among many lights (--light tree): a binary tree over the emitters, each
  * node bounding those below it by a sphere (position), a cone of their normals (orientation) and
- * their power. From the shading point p, a node's importance is its power x cos(theta') / d^2, an
- * upper bound of what its emitters can send toward p (Conty Estevez and Kulla 2018; pbrt-v4's
- * LightBounds::Importance, without the normal at p). The choice descends from the root: at each
+ * their power. From the shading point p of normal n, a node's importance is its power x cos(theta')
+ * x cos(theta_i) / d^2, bounds of the angle of emission and of incidence: an upper bound of what
+ * its emitters can send to p (Conty Estevez and Kulla 2018; pbrt-v4's LightBounds::Importance), 0
+ * when every emitter below shows p its back or lies under p's surface. n = (0, 0, 0): no normal,
+ * the factor is 1 (the checks' bare points). The choice descends from the root: at each
  * node the first child with probability I1 / (I1 + I2), and u0 rescaled to stay uniform, so that
  * the leaf's probability is the product of the choices on its path. An emitter that can send light
  * toward p has a nonzero importance at every node above it, hence a nonzero probability: unbiased,
@@ -38,13 +40,14 @@ typedef struct {
  * at most ceil(log2 n). 0 on success. */
 int light_tree_build(light_tree *t, const light_bounds *b, int n);
 void light_tree_free(light_tree *t);
-/* What the emitters below nd can send toward p, bounded above (0 only if none faces p). */
-float light_node_importance(const light_node *nd, vec3 p);
-/* Probability of taking the first child of node k from p. */
-double light_tree_first_prob(const light_tree *t, int k, vec3 p);
-/* Descends from the root with *u in [0, 1): returns the emitter, its probability in *prob, and
+/* What the emitters below nd can send to p of normal n, bounded above (0 only if none faces p
+ * from above its surface). */
+float light_node_importance(const light_node *nd, vec3 p, vec3 n);
+/* Probability of taking the first child of node k from p of normal n. */
+double light_tree_first_prob(const light_tree *t, int k, vec3 p, vec3 n);
+/* Descends from the root, seen from p of normal n, with *u in [0, 1): returns the emitter, its probability in *prob, and
  * leaves in *u where it fell within that emitter's share, uniform in [0, 1). */
-int light_tree_pick(const light_tree *t, vec3 p, double *u, double *prob);
-/* The probability that light_tree_pick chooses emitter i from p (along i's path). */
-double light_tree_prob(const light_tree *t, int i, vec3 p);
+int light_tree_pick(const light_tree *t, vec3 p, vec3 n, double *u, double *prob);
+/* The probability that light_tree_pick chooses emitter i from p of normal n (along i's path). */
+double light_tree_prob(const light_tree *t, int i, vec3 p, vec3 n);
 #endif

@@ -24,36 +24,40 @@ static int parse_exposure(void *ctx, const char *flag, const char *v)
     return cli_fail("convert", flag, "a number of stops between -100 and 100, or auto", v);
 }
 
-/* The size, then each channel's mean, min and max. */
+/* The size, then each channel's mean, min and max over its finite values. */
 static void print_figures(const image *im, const char *path)
 {
     double sum[3] = {0, 0, 0}, lo[3], hi[3];
-    size_t i, n = (size_t)im->w * im->h;
+    size_t i, n = (size_t)im->w * im->h, finite[3] = {0, 0, 0};
     int ch;
     for (ch = 0; ch < 3; ch++) lo[ch] = HUGE_VAL, hi[ch] = -HUGE_VAL;
     for (i = 0; i < 3 * n; i++) {
         double v = im->px[i];
+        if (!isfinite(v)) continue;
+        finite[i % 3]++;
         sum[i % 3] += v;
         if (v < lo[i % 3]) lo[i % 3] = v;
         if (v > hi[i % 3]) hi[i % 3] = v;
     }
     printf("%s: %d x %d\n", shown(path), im->w, im->h);
     for (ch = 0; ch < 3; ch++)
-        printf("  %-5s mean %.6g  min %.6g  max %.6g\n", ch == 0 ? "red" : ch == 1 ? "green" : "blue", sum[ch] / (double)n, lo[ch], hi[ch]);
+        printf("  %-5s mean %.6g  min %.6g  max %.6g%s\n", ch == 0 ? "red" : ch == 1 ? "green" : "blue",
+               finite[ch] ? sum[ch] / (double)finite[ch] : 0.0, finite[ch] ? lo[ch] : 0.0, finite[ch] ? hi[ch] : 0.0,
+               finite[ch] < n ? " (of its finite values)" : "");
 }
 
-/* 0 if every value of im is finite; else 1, after naming the first that is not: an image holding a
- * NaN or an infinity has no mean, and a picture of it would show a wrong colour. */
-static int values_finite(const image *im, const char *path)
+/* A warning naming the first NaN or infinite value of im, and how many there are: convert still
+ * shows such an image (the student looks for them; the picture shows them black), but says so. */
+static void warn_not_finite(const image *im, const char *path)
 {
     size_t i, n = 3 * (size_t)im->w * (size_t)im->h, bad = 0, first = 0;
     for (i = 0; i < n; i++)
         if (!isfinite(im->px[i]) && bad++ == 0) first = i;
-    if (!bad) return 0;
-    fprintf(stderr, "%s: %zu %s NaN or infinite, the first at x %zu, y %zu (%s, %g; y = 0 is the top row): nothing written\n",
+    if (!bad) return;
+    fprintf(stderr, "pathlab convert: warning: %s: %zu %s NaN or infinite, the first at x %zu, y %zu (%s, %g; y = 0 is the "
+            "top row): in a PNG or PPM a NaN shows black, an infinity as 0 or 1; a PFM keeps them\n",
             shown(path), bad, bad == 1 ? "value is" : "values are", first / 3 % (size_t)im->w, first / 3 / (size_t)im->w,
             first % 3 == 0 ? "red" : first % 3 == 1 ? "green" : "blue", (double)im->px[first]);
-    return 1;
 }
 
 /* A PFM written: the input's sidecar beside it, if the input has one (the same pixels, made the same
@@ -87,8 +91,8 @@ int convert_main(int argc, char **argv)
     }
     if (output_path_check("convert", "output", path[1], IMG_EXTENSIONS)) return 2;
     if (img_format_of(path[0]) == IMG_HDR ? img_read_hdr(&im, path[0]) : img_read_pfm(&im, path[0])) return 2;
-    if (values_finite(&im, path[0])) { img_free(&im); return 2; }
     print_figures(&im, path[0]);
+    warn_not_finite(&im, path[0]);
     if (isnan(exposure)) {
         exposure = img_auto_exposure(&im);
         printf("exposure auto: %+.1f stops (the median luminance of the pixels that are not black to mid-grey, %g)\n", exposure,

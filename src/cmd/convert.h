@@ -1,6 +1,6 @@
 /* convert.h — the command `pathlab convert IN.pfm|IN.hdr OUT.png|OUT.ppm|OUT.pfm [--exposure STOPS]`:
  * a PFM (e.g. a --split layer) or a Radiance .hdr made viewable or a PFM, and its size and each channel's mean, min and max.
- * An input holding a NaN or an infinity is refused (its first such value named), nothing written. */
+ * An input holding a NaN or an infinity is still shown (black in a picture), with a warning naming the first. */
 #ifndef PATHLAB_CONVERT_H
 #define PATHLAB_CONVERT_H
 

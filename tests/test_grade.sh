@@ -138,5 +138,37 @@ expect_status "--heatmap of an unknown format: status 2" 2 $PATHLAB grade "$TMP/
 expect_err "--heatmap of an unknown format explained" "^pathlab grade: --heatmap .*h.jpg: a heatmap is a picture: use .png or .ppm"
 expect_status "--heatmap h.pfm: refused (a picture, not a render), status 2" 2 $PATHLAB grade "$TMP/c.pfm" --ref "$TMP/c.pfm" --heatmap "$TMP/h.pfm"
 expect_status "--ref before the image: status 0" 0 $PATHLAB grade --ref "$TMP/c.pfm" "$TMP/c.pfm"
+# A black image but for one pixel, which holds all the reference's light (or 1e4; or an honest render
+# with one value of 3.4e38), against ref/cornell.pfm (64x64, the whole light transport): every block
+# is "rare-event noise" and the plain t is about 1 whatever that pixel, so these passed. The plain
+# mean's standard error is 100% of the mean and more: too noisy to judge, a FAIL (a PASS needs 50%).
+# The honest 16-spp render they are made from passes.
+$PATHLAB render scenes/cornell.obj --quiet --size 64x64 --spp 16 --seed 301 -o "$TMP/honest64.pfm"
+python3 - ref/cornell.pfm "$TMP/honest64.pfm" "$TMP" <<'PYEND'
+import struct, sys
+def rd(fn):
+    d = open(fn, 'rb').read().split(b'\n', 3)
+    w, h = map(int, d[1].split())
+    return w, h, list(struct.unpack('<%df' % (3 * w * h), d[3][:12 * w * h]))
+def wr(fn, w, h, v):
+    open(fn, 'wb').write(b'PF\n%d %d\n-1\n' % (w, h) + struct.pack('<%df' % len(v), *v))
+w, h, ref = rd(sys.argv[1])
+_, _, honest = rd(sys.argv[2])
+one = [0.0] * len(ref)
+for c in range(3): one[3 * (w * h // 2 + w // 2) + c] = sum(ref[c::3])
+wr(sys.argv[3] + '/one_pixel.pfm', w, h, one)
+one[3 * (w * h // 2 + w // 2)] = 1e4
+wr(sys.argv[3] + '/one_1e4.pfm', w, h, one)
+honest[3 * 100 + 1] = 3.4e38
+wr(sys.argv[3] + '/honest_3e38.pfm', w, h, honest)
+PYEND
+for f in honest64 one_pixel one_1e4 honest_3e38; do
+    want=1; [ $f = honest64 ] && want=0
+    out=$($PATHLAB grade "$TMP/$f.pfm" --ref ref/cornell.pfm 2>&1); rc=$?
+    line=$(echo "$out" | grep -E "^(PASS|FAIL)|^  too noisy" | paste -sd ';' - | cut -c1-300)
+    if [ $rc = $want ] && { [ $want = 0 ] || echo "$out" | grep -q "^  too noisy to judge: the whole image's mean is known to"; }; then
+        pass "$f against ref/cornell.pfm: exit $rc [$line]"
+    else fail "$f against ref/cornell.pfm: exit $rc, wanted $want$([ $want = 1 ] && echo ', too noisy to judge') [$line]"; fi
+done
 echo "grade tests took $(( $(date +%s) - start )) s (size $SIZE, reference $REF_SPP spp)"
 exit 0

@@ -175,7 +175,7 @@ static int grade_one(grade_row *rows, int index, const run *s, const char *path,
     mark_copies(rows, index);
     grade_fill_row(row, &r);
     row->status = grade_failed(&r);
-    if (row->status == 1 && diagnose(row, &img, s, &o, grade_excess(&r), h, &nh)) row->status = 2;
+    if (row->status == 1 && grade_biased(&r) && diagnose(row, &img, s, &o, grade_excess(&r), h, &nh)) row->status = 2;
     img_free(&steps);
     write_heatmap(row, &r, s, skip);
     write_page(row, &r, &img, s, h, nh, skip);

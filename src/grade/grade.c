@@ -681,9 +681,12 @@ static void test_plain(grade_report *r, const image *img, const image *ref)
     size_t p, n = (size_t)r->w * r->h;
     long m = 0;
     int ch;
-    double sum[3] = {0, 0, 0}, m2[3] = {0, 0, 0}, m3[3] = {0, 0, 0}, crit;
+    double sum[3] = {0, 0, 0}, m2[3] = {0, 0, 0}, m3[3] = {0, 0, 0}, refsum[3] = {0, 0, 0}, crit;
     for (p = 0; p < n; p++)
-        for (ch = 0; ch < 3 && !r->exact[p]; ch++) sum[ch] += (double)img->px[3 * p + ch] - ref->px[3 * p + ch];
+        for (ch = 0; ch < 3 && !r->exact[p]; ch++) {
+            sum[ch] += (double)img->px[3 * p + ch] - ref->px[3 * p + ch];
+            refsum[ch] += ref->px[3 * p + ch];
+        }
     for (p = 0; p < n; p++) m += !r->exact[p];
     for (p = 0; p < n; p++)
         for (ch = 0; ch < 3 && !r->exact[p] && m > 0; ch++) {
@@ -697,7 +700,9 @@ static void test_plain(grade_report *r, const image *img, const image *ref)
         r->plain_t[ch] = t_stat(sum[ch] / m, m2[ch] / (m - 1.0) / m);
         r->plain_limit[ch] = skewed_limit(crit, r->plain_t[ch] < 0.0 ? skew : -skew, m);
         if (fabs(r->plain_t[ch]) > r->plain_limit[ch]) r->image_fail = 1;
+        if (refsum[ch] > 0.0) r->plain_rel_se = fmax(r->plain_rel_se, sqrt(m2[ch] / (m - 1.0) / m) / (refsum[ch] / m));
     }
+    r->too_noisy = r->plain_rel_se > GRADE_MAX_REL_SE;
 }
 
 /* Information only: z per pixel-channel with the student's variance taken as var_ref M / N. A
@@ -788,7 +793,9 @@ void grade_free(grade_report *r)
     r->exact = NULL;
 }
 
-int grade_failed(const grade_report *r)
+int grade_failed(const grade_report *r) { return grade_biased(r) || r->too_noisy; }
+
+int grade_biased(const grade_report *r)
 {
     int k;
     for (k = 0; k < r->ncoarse; k++) if (r->coarse[k].brighter || r->coarse[k].darker) return 1;

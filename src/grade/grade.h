@@ -35,6 +35,13 @@ typedef struct {
     int channel;             /* the channel that decided the sign */
 } grade_block;
 
+/* A PASS needs evidence: the plain mean of d known to within this much of the reference's mean
+ * (one standard error), else the image is too noisy to judge (a FAIL). An image black but for one
+ * pixel that holds all the light has no other test (its blocks are rare-event noise, its t is about
+ * 1 whatever that pixel): its standard error is about 100% of the mean. Honest 64x64 renders at 1
+ * spp: 5-9% on the Cornell boxes, up to 90% on mis-plates (a firefly holds most of the light). */
+#define GRADE_MAX_REL_SE 0.5
+
 /* Blocks at a coarser scale: side 2, 4, 8... times the finest, down to 2 x 2 blocks. */
 typedef struct {
     int side, nbx, nby, nblocks;
@@ -61,6 +68,8 @@ typedef struct {
     double image_eps[3], image_eps_se[3], image_z[3], image_level, image_zcrit;  /* relative-bias fit */
     double image_zlimit[3];              /* image_zcrit widened by the skewness, per channel */
     double plain_t[3], plain_limit[3];   /* the unweighted mean of d over the noisy pixels */
+    double plain_rel_se;                 /* its standard error over the reference's mean there, the largest channel */
+    int too_noisy;                       /* 1: plain_rel_se over GRADE_MAX_REL_SE: too noisy to judge (a FAIL) */
     int image_fail, image_nfit;          /* image_nfit: block-channels with a weight in the fit */
     double floor_k[3];                   /* the noise floor's scale, per channel (0 without REF_var) */
     unsigned char *exact;                /* per pixel: 1 if the reference is noise-free there */
@@ -86,7 +95,9 @@ void grade_free(grade_report *r);
  * largest channel, told from the decoded value (its mantissa in [128, 256)); 0 for a black pixel.
  * Replicated in R, G, B. 0, or 1 when out of memory. */
 int grade_rgbe_steps(image *steps, const image *img);
-/* 1 when the image fails: a missed exact pixel, a significant block or level, or the whole image. */
+/* 1 when a test finds bias: a missed exact pixel, a significant block or level, or the whole image. */
+int grade_biased(const grade_report *r);
+/* 1 when the image fails: biased, or too noisy to judge (too_noisy). */
 int grade_failed(const grade_report *r);
 /* How far the worst statistic is beyond its limit: <= 1 passes the tests with a level (a missed
  * exact pixel counts as 1e9). The diagnosis compares hypotheses with it. */

@@ -13,7 +13,9 @@ static const char *const CHANNELS[3] = {"red", "green", "blue"};
 static const char *pct_pm(char *s, size_t cap, double value, double se)
 {
     int decimals = se > 0.0 ? (int)fmin(8.0, fmax(0.0, 1.0 - floor(log10(100.0 * se)))) : 0;
-    snprintf(s, cap, "%+.*f%% +- %.*f%%", decimals, 100.0 * value, decimals, 100.0 * se);
+    if (fabs(value) >= 1e4 || se >= 1e4)   /* a million percent and more: in powers of ten */
+        snprintf(s, cap, "%+.3g%% +- %.2g%%", 100.0 * value, 100.0 * se);
+    else snprintf(s, cap, "%+.*f%% +- %.*f%%", decimals, 100.0 * value, decimals, 100.0 * se);
     return s;
 }
 
@@ -133,9 +135,9 @@ static void print_image_test(const grade_report *r)
                r->image_z[1], r->image_z[2], r->image_zlimit[0], r->image_zlimit[1], r->image_zlimit[2], r->image_zcrit, r->image_level);
     }
     printf("whole image, unweighted: plain mean of image - ref %+.4g %+.4g %+.4g (%+.2f%% of the reference's mean); t over the noisy "
-           "pixels %+.2f %+.2f %+.2f, limits %.2f %.2f %.2f\n", r->image_diff[0], r->image_diff[1], r->image_diff[2],
+           "pixels %+.2f %+.2f %+.2f, limits %.2f %.2f %.2f; standard error %.2g%% of the reference's mean\n", r->image_diff[0], r->image_diff[1], r->image_diff[2],
            100.0 * relative_diff(r, NULL, 0, 0), r->plain_t[0], r->plain_t[1], r->plain_t[2], r->plain_limit[0],
-           r->plain_limit[1], r->plain_limit[2]);
+           r->plain_limit[1], r->plain_limit[2], 100.0 * r->plain_rel_se);
 }
 
 static void print_tests(const grade_report *r, const char *image, const char *ref, const grade_opts *o)
@@ -216,8 +218,12 @@ static void print_verdict(const grade_report *r)
                r->alpha, n, 3 * block_count(r), 3 * r->nlevels_tested);
         return;
     }
-    printf("FAIL: biased (alpha %g; %ld pixel-channels, %d block, %d level and 6 whole-image tests)\n", r->alpha, n,
-           3 * block_count(r), 3 * r->nlevels_tested);
+    printf("FAIL: %s (alpha %g; %ld pixel-channels, %d block, %d level and 6 whole-image tests)\n", grade_biased(r) ? "biased" :
+           "too noisy to judge", r->alpha, n, 3 * block_count(r), 3 * r->nlevels_tested);
+    if (r->too_noisy)
+        printf("  too noisy to judge: the whole image's mean is known to +-%.0f%% of the reference's only (one standard error; a PASS "
+               "needs %.0f%%): a few pixels hold most of its light; render more samples per pixel\n", 100.0 * r->plain_rel_se,
+               100.0 * GRADE_MAX_REL_SE);
     if (r->exact_fail)
         printf("  %ld of %ld exact pixels differ; the worst at x %d, y %d: %.4g %.4g %.4g, the reference %.4g %.4g %.4g\n",
                r->exact_fail, r->nexact, r->exact_x, r->exact_y, r->exact_img[0], r->exact_img[1], r->exact_img[2],
@@ -240,7 +246,7 @@ static void print_verdict(const grade_report *r)
         print_blocks(r, r->coarse[k].blocks, r->coarse[k].nblocks, r->coarse[k].side, -1);
     }
     print_levels(r);
-    if (grade_excess(r) < 1.5)
+    if (grade_biased(r) && grade_excess(r) < 1.5)
         printf("  (the worst statistic is only %.2f times its limit: this is how a false alarm looks (at most 1 honest image in %.0f fails); "
                "more samples per pixel would settle it)\n", grade_excess(r), 1.0 / r->alpha);
     if (r->image_fail && !any_block(r) && !r->level_brighter && !r->level_darker)
@@ -311,11 +317,15 @@ void grade_fill_row(grade_row *row, const grade_report *r)
     row->bias = r->image_eps[worst];
     row->bias_se = r->image_eps_se[worst];
     snprintf(row->channel, sizeof row->channel, "%s", CHANNELS[worst]);
-    if (!fit_failed(r) && plain_failed(r)) {   /* the fit misses it (few pixels): the plain mean says how much */
+    if (!r->image_nfit || (r->too_noisy && !grade_biased(r))) {   /* no fit (black around every block), or too noisy: the plain mean */
+        row->bias = relative_diff(r, NULL, 0, 0);
+        row->bias_se = r->plain_rel_se;
+        snprintf(row->channel, sizeof row->channel, "mean");
+    } else if (!fit_failed(r) && plain_failed(r)) {   /* the fit misses it (few pixels): the plain mean says how much */
         row->bias = relative_diff(r, NULL, 0, 0);
         row->bias_se = -1.0;
         snprintf(row->channel, sizeof row->channel, "mean");
-    } else if (!fit_failed(r) && grade_failed(r)) {   /* only groups: how much there, not over the image */
+    } else if (!fit_failed(r) && grade_biased(r)) {   /* only groups: how much there, not over the image */
         row->bias = group_diff(r);
         row->bias_se = -2.0;
         snprintf(row->channel, sizeof row->channel, "groups");
@@ -326,6 +336,7 @@ void grade_fill_row(grade_row *row, const grade_report *r)
              coarse_box(r, b) || sign_box(r->levels, r->nlevels, -1, b, &area) || sign_box(r->levels, r->nlevels, 1, b, &area))
         describe_box(row->where, sizeof row->where, b[0], b[1], b[2], b[3], r->w, r->h);
     else if (r->image_fail) snprintf(row->where, sizeof row->where, "spread over the image");
+    else if (r->too_noisy) snprintf(row->where, sizeof row->where, "too noisy to judge");
 }
 
 void grade_print_row(const grade_row *row)
@@ -343,7 +354,8 @@ void grade_print_row(const grade_row *row)
         else {
             if (row->channel[0] && row->bias_se < 0.0) printf(", %+.2f%% on the whole image's plain mean", 100 * row->bias);
             else if (row->channel[0]) printf(", %s in %s over the whole image", pct_pm(pm, sizeof pm, row->bias, row->bias_se), row->channel);
-            if (row->where[0]) printf("; %s: %s", strcmp(row->where, "spread over the image") ? "significant in" : "the bias", row->where);
+            if (!strcmp(row->where, "too noisy to judge")) printf("; %s", row->where);
+            else if (row->where[0]) printf("; %s: %s", strcmp(row->where, "spread over the image") ? "significant in" : "the bias", row->where);
         }
         printf("%s%s", row->mistake[0] ? "; likely: " : "", shown(row->mistake));
     }

@@ -559,13 +559,17 @@ static void test_radiance(void)
     expect_radiance("radiance_error_hint", &im, 3, 1, "x.pfm: radiance is a finite number >= 0 in every pixel-channel");
     for (i = 0; i < 36; i++) im.px[i] = 0.5f;
     im.px[7] = -0.25f;           /* x 2, y 0, green */
-    expect_radiance("radiance_negative", &im, 3, 1, "x.pfm: 1 pixel-channel is negative (below -1e-06 x the mean 0.493, "
-                    "down to -0.25), at x 2, y 0 (green -0.25); y = 0 is the top row\n");
-    im.px[7] = -6e-7f;           /* beyond 1e-6 x the mean (about 0.5) */
+    expect_radiance("radiance_negative", &im, 3, 1, "x.pfm: 1 pixel-channel is negative (below -1e-06 x 0.5, the median |value| "
+                    "rounded down to a power of 2; down to -0.25), at x 2, y 0 (green -0.25); y = 0 is the top row\n");
+    im.px[7] = -6e-7f;           /* beyond 1e-6 x the median, 0.5 */
     expect_radiance("radiance_small_negative_beyond_tolerance", &im, 3, 1, "1 pixel-channel is negative");
     im.px[7] = -4e-7f;           /* within the tolerance: a warning, no error */
     expect_radiance("radiance_tiny_negative_warning", &im, 3, 0, "x.pfm: warning: 1 pixel-channel is slightly negative "
-                    "(down to -4e-07, within 1e-06 x the mean 0.486: float rounding?), at x 2, y 0 (green -4e-07)");
+                    "(down to -4e-07, within 1e-06 x 0.5, the median |value| rounded down to a power of 2: float rounding?), "
+                    "at x 2, y 0 (green -4e-07)");
+    im.px[0] = 1e11f;            /* one huge value moved the mean (8e9 here), and -4e-7 with it... */
+    im.px[7] = -0.25f;           /* ...so that -0.25 passed for float rounding: the median does not move */
+    expect_radiance("radiance_negative_beside_a_huge_value", &im, 3, 1, "1 pixel-channel is negative (below -1e-06 x 0.5,");
     img_free(&im);
 }
 

@@ -46,11 +46,11 @@ int grade_explain_negatives(char *out, size_t cap, const image *img, const image
 {
     long count[KINDS] = {0, 0, 0}, n = 0;
     int x, y, k, box[4] = {1 << 30, 1 << 30, 0, 0}, most = 0, first;
-    double mean_img = 0.0, mean_ref = 0.0;
+    double mean_img, mean_ref = 0.0;
     char where[64];
     size_t used;
     out[0] = '\0';
-    for (k = 0; k < 3 * img->w * img->h; k++) mean_img += fabs(img->px[k]) / (3.0 * img->w * img->h);
+    mean_img = img_typical_abs(img);
     for (y = 0; y < ref->h; y++) for (x = 0; x < ref->w; x++) mean_ref += lum_at(ref, x, y) / ((double)ref->w * ref->h);
     for (y = 0; y < img->h; y++)
         for (x = 0; x < img->w; x++) {

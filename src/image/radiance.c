@@ -1,6 +1,7 @@
 /* radiance.c — the NaN, infinite and negative values of an image, counted and located. */
 #include "image/radiance.h"
 #include "sys/shown.h"
+#include <math.h>
 #include <stdio.h>
 
 enum { K_NAN, K_PINF, K_NINF, K_NEG, K_TINY, K_KINDS };
@@ -11,18 +12,20 @@ typedef struct {
     float worst;                           /* the most negative value (K_NEG, K_TINY) */
 } rad_kind;
 
-/* The mean of |v| over the finite values (0 when there is none). */
-static double mean_abs(const image *im)
+double img_typical_abs(const image *im)
 {
-    long i, n = 3L * im->w * im->h, finite = 0;
-    double sum = 0.0;
+    long i, n = 3L * im->w * im->h, count[256] = {0}, nonzero = 0, below = 0;
+    int e;
     for (i = 0; i < n; i++) {
         float v = im->px[i];
-        if (!(v - v == 0.0f)) continue;
-        sum += v < 0.0f ? -(double)v : (double)v;
-        finite++;
+        if (!(v - v == 0.0f) || v == 0.0f) continue;
+        (void)frexpf(v, &e);   /* |v| in [2^(e-1), 2^e) */
+        count[e + 150 < 0 ? 0 : e + 150 > 255 ? 255 : e + 150]++;
+        nonzero++;
     }
-    return finite ? sum / finite : 0.0;
+    for (e = 0; e < 256; e++)
+        if ((below += count[e]) * 2 >= nonzero && nonzero) return ldexp(1.0, e - 150 - 1);
+    return 0.0;
 }
 
 /* The kind of v, or -1 for a good radiance value (>= 0, -0.0 included). */
@@ -42,10 +45,10 @@ static void print_kind(const image *im, const char *path, const rad_kind *k, int
     fprintf(stderr, "%s: %s%ld pixel-channel%s %s %s", shown(path), kind == K_TINY ? "warning: " : "", k->count,
             k->count == 1 ? "" : "s", k->count == 1 ? "is" : "are", what[kind]);
     if (kind == K_NEG)
-        fprintf(stderr, " (below -%g x the mean %.3g, down to %.3g)", RADIANCE_NEG_TOL, mean, k->worst);
+        fprintf(stderr, " (below -%g x %.3g, the median |value| rounded down to a power of 2; down to %.3g)", RADIANCE_NEG_TOL, mean, k->worst);
     if (kind == K_TINY)
-        fprintf(stderr, " (down to %.3g, within %g x the mean %.3g: float rounding?)", k->worst,
-                RADIANCE_NEG_TOL, mean);
+        fprintf(stderr, " (down to %.3g, within %g x %.3g, the median |value| rounded down to a power of 2: float rounding?)",
+                k->worst, RADIANCE_NEG_TOL, mean);
     for (j = 0; j < k->listed; j++) {
         long i = k->at[j], p = i / 3;
         fprintf(stderr, "%s x %ld, y %ld (%s", j == 0 ? (k->count == 1 ? ", at" : ", first at") : ",",
@@ -60,7 +63,7 @@ int img_check_radiance(const image *im, const char *path, int max_listed)
 {
     rad_kind k[K_KINDS] = { { 0, { 0 }, 0, 0.0f } };
     long i, n = 3L * im->w * im->h;
-    double mean = mean_abs(im), tol = RADIANCE_NEG_TOL * mean;
+    double mean = img_typical_abs(im), tol = RADIANCE_NEG_TOL * mean;
     int kind, bad = 0;
     if (max_listed < 0) max_listed = 0;
     if (max_listed > RADIANCE_MAX_LISTED) max_listed = RADIANCE_MAX_LISTED;

@@ -1,13 +1,13 @@
 /* radiance.h — is an image plausible radiance? Radiance is a finite number >= 0 in every
  * pixel-channel; img_check_radiance finds the NaN, +Inf, -Inf and negative ones and says where.
- * The rule for negative values: v < -1e-6 x m, where m is the mean of |v| over the image's finite
- * values, is an error; a negative value closer to 0 (float rounding in a sum, e.g. -1e-8 in an
- * image of mean 0.5) is only a warning, and -0.0 is fine. */
+ * The rule for negative values: v < -1e-6 x m, where m is the image's typical value
+ * (img_typical_abs), is an error; a negative value closer to 0 (float rounding in a sum, e.g.
+ * -1e-8 in an image of values near 0.5) is only a warning, and -0.0 is fine. */
 #ifndef PATHLAB_RADIANCE_H
 #define PATHLAB_RADIANCE_H
 #include "image/image.h"
 
-#define RADIANCE_NEG_TOL 1e-6   /* relative to the mean of |v| */
+#define RADIANCE_NEG_TOL 1e-6   /* relative to img_typical_abs */
 #define RADIANCE_MAX_LISTED 16  /* max_listed is clamped to it */
 
 /* Prints on stderr one line per kind found, e.g.
@@ -18,4 +18,8 @@
  * error, a line on what radiance must be. Returns nonzero when there is an error (NaN, infinite or
  * negative beyond the tolerance), 0 when the image is clean or has only warnings. */
 int img_check_radiance(const image *im, const char *path, int max_listed);
+/* The median of |v| over the finite nonzero values, rounded down to a power of 2 (0 if there is
+ * none): the scale of the tolerance for negative values. Not the mean, which one huge value moves:
+ * a pixel of 1e11 made -0.5 look like float rounding. */
+double img_typical_abs(const image *im);
 #endif

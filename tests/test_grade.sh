@@ -133,6 +133,13 @@ expect_err "an empty folder: said" "no image to grade"
 mkdir -p "$TMP/class1"; cp "$TMP/c_bright.pfm" "$TMP/class1/"
 expect_status "a folder without --ref: status 2, not a crash" 2 $PATHLAB grade "$TMP/class1"
 expect_err "a folder without --ref: said" "needs an image .* and --ref REF.pfm"
+# a folder: an image's extension in any case is graded (Bob.PFM was left out without a word), and
+# what is not graded is counted on stderr
+mkdir -p "$TMP/class2"; cp "$TMP/c.pfm" "$TMP/class2/alice.pfm"; cp "$TMP/c_bright.pfm" "$TMP/class2/Bob.PFM"
+cp "$TMP/c.pfm" "$TMP/class2/x_var.pfm"; echo notes > "$TMP/class2/notes.txt"
+expect_status "a folder with Bob.PFM (failing): graded, status 1" 1 $PATHLAB grade "$TMP/class2" --ref "$TMP/c.pfm"
+if grep -q "class2/Bob.PFM: FAIL" "$TMP/out"; then pass "a folder: Bob.PFM graded"; else fail "a folder: Bob.PFM not graded: $(head -c 300 "$TMP/out")"; fi
+expect_err "a folder: what is not graded counted" "the folder .*class2: not graded: 1 variance .*_var.pfm.*, 1 not .pfm or .hdr"
 expect_status "a class with an unreadable image: status 2" 2 $PATHLAB grade "$TMP/c.pfm" "$TMP/none.pfm" --ref "$TMP/c.pfm"
 expect_status "--heatmap of an unknown format: status 2" 2 $PATHLAB grade "$TMP/c.pfm" --ref "$TMP/c.pfm" --heatmap "$TMP/h.jpg"
 expect_err "--heatmap of an unknown format explained" "^pathlab grade: --heatmap .*h.jpg: a heatmap is a picture: use .png or .ppm"

@@ -45,16 +45,46 @@ static int is_reference(const char *dir, const char *name, const char *ref)
     return path_same_file(dir, ref_dir) && !strncmp(name, base, stem) && (name[stem] == '_' || name[stem] == '-');
 }
 
+/* What the folder's entry `name` is to grade: 0 an image, 1 a variance (*_var.pfm), 2 a split layer
+ * (*_split_L*), 3 the reference or a file made beside it, 4 not an image (.pfm or .hdr, in any case:
+ * a student's Bob.PFM is graded, not silently left out), 5 a sidecar (.meta). */
+static int entry_kind(const char *dir, const char *name, const char *ref)
+{
+    char low[512];
+    size_t i;
+    for (i = 0; name[i] && i + 1 < sizeof low; i++) low[i] = (char)(name[i] >= 'A' && name[i] <= 'Z' ? name[i] - 'A' + 'a' : name[i]);
+    low[i] = '\0';
+    if (path_ends_with(low, ".meta")) return 5;   /* a sidecar: expected, not counted */
+    if (img_format_of(low) != IMG_PFM && img_format_of(low) != IMG_HDR) return 4;
+    if (path_ends_with(low, "_var.pfm")) return 1;
+    if (strstr(low, "_split_l")) return 2;
+    return is_reference(dir, name, ref) ? 3 : 0;
+}
+
+/* Says what the folder held besides the images it grades, so that no student's file disappears unsaid. */
+static void say_left_out(const char *dir, const long left[5])
+{
+    static const char *const what[5] = {"", "variance (*_var.pfm)", "split layer (*_split_L*)", "the reference or made beside it",
+                                         "not .pfm or .hdr"};
+    int k, first = 1;
+    if (!left[1] && !left[2] && !left[3] && !left[4]) return;
+    fprintf(stderr, "pathlab grade: the folder %s: not graded:", shown(dir));
+    for (k = 1; k < 5; k++)
+        if (left[k]) fprintf(stderr, "%s %ld %s", first ? "" : ",", left[k], what[k]), first = 0;
+    fprintf(stderr, "\n");
+}
+
 int grade_list_add_folder(grade_list *l, const char *dir, const char *ref)
 {
     DIR *d = opendir(dir);
     struct dirent *e;
-    int first = l->n;
+    int first = l->n, kind;
+    long left[6] = {0, 0, 0, 0, 0, 0};
     if (!d) { fprintf(stderr, "pathlab grade: cannot open the folder %s\n", shown(dir)); return 1; }
     while ((e = readdir(d)) != NULL) {
         char *path;
-        if (!(path_ends_with(e->d_name, ".pfm") || img_is_rgbe(e->d_name)) || path_ends_with(e->d_name, "_var.pfm") || strstr(e->d_name, "_split_L") ||
-            is_reference(dir, e->d_name, ref)) continue;
+        if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;
+        if ((kind = entry_kind(dir, e->d_name, ref)) != 0) { left[kind]++; continue; }
         if (l->n >= l->cap) { fprintf(stderr, "pathlab grade: more than %d images\n", l->cap); closedir(d); return 1; }
         path = malloc(strlen(dir) + strlen(e->d_name) + 2);
         if (!path) { closedir(d); return 1; }
@@ -63,6 +93,7 @@ int grade_list_add_folder(grade_list *l, const char *dir, const char *ref)
     }
     closedir(d);
     qsort(l->images + first, (size_t)(l->n - first), sizeof *l->images, by_name);
+    say_left_out(dir, left);
     if (l->n == first) fprintf(stderr, "pathlab grade: warning: no .pfm or .hdr image to grade in the folder %s\n", shown(dir));
     return 0;
 }

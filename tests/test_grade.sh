@@ -140,6 +140,19 @@ cp "$TMP/c.pfm" "$TMP/class2/x_var.pfm"; echo notes > "$TMP/class2/notes.txt"
 expect_status "a folder with Bob.PFM (failing): graded, status 1" 1 $PATHLAB grade "$TMP/class2" --ref "$TMP/c.pfm"
 if grep -q "class2/Bob.PFM: FAIL" "$TMP/out"; then pass "a folder: Bob.PFM graded"; else fail "a folder: Bob.PFM not graded: $(head -c 300 "$TMP/out")"; fi
 expect_err "a folder: what is not graded counted" "the folder .*class2: not graded: 1 variance .*_var.pfm.*, 1 not .pfm or .hdr"
+# --heatmap FOLDER with one image (a class of one): FOLDER/NAME.png (it wrote to the folder's name: exit 2)
+mkdir -p "$TMP/hm1"
+expect_status "a class of one, --heatmap FOLDER: graded (a fail), status 1" 1 $PATHLAB grade "$TMP/class1" --ref "$TMP/c.pfm" --heatmap "$TMP/hm1"
+if [ -s "$TMP/hm1/c_5fbright.png" ]; then pass "a class of one, --heatmap FOLDER: FOLDER/NAME.png written"
+else fail "a class of one, --heatmap FOLDER: no $TMP/hm1/c_5fbright.png: $(ls "$TMP/hm1")"; fi
+# a student named like the report, pages in the report's folder: refused before anything is written
+mkdir -p "$TMP/class3" "$TMP/rep3"; cp "$TMP/c.pfm" "$TMP/class3/index.pfm"; cp "$TMP/c.pfm" "$TMP/class3/alice.pfm"
+expect_status "index.pfm's page would be --report rep3/index.html: status 2" 2 $PATHLAB grade "$TMP/class3" --ref "$TMP/c.pfm" --report "$TMP/rep3/index.html" --pages "$TMP/rep3"
+expect_err "index.pfm's page would be the report: said" "the page of .*index.pfm would be .*rep3/index.html, the --report itself"
+expect_no_file "index.pfm's page would be the report: nothing written" "$TMP/rep3/alice.html"
+# a flag given twice (a student's file named --ref=x.pfm, expanded by the shell's *.pfm) is refused
+expect_status "--ref given twice: status 2" 2 $PATHLAB grade --ref "$TMP/c.pfm" "$TMP/c.pfm" "--ref=$TMP/c_bright.pfm"
+expect_err "--ref given twice: said, with the way out" "--ref given twice .again as '--ref=.*c_bright.pfm'.: give it once.*put -- before the file names"
 expect_status "a class with an unreadable image: status 2" 2 $PATHLAB grade "$TMP/c.pfm" "$TMP/none.pfm" --ref "$TMP/c.pfm"
 expect_status "--heatmap of an unknown format: status 2" 2 $PATHLAB grade "$TMP/c.pfm" --ref "$TMP/c.pfm" --heatmap "$TMP/h.jpg"
 expect_err "--heatmap of an unknown format explained" "^pathlab grade: --heatmap .*h.jpg: a heatmap is a picture: use .png or .ppm"

@@ -28,11 +28,11 @@ static int parse_alpha(void *ctx, const char *flag, const char *v)
 }
 
 /* The outputs' names, then where they go: the folder exists and can be written. */
-static int check_outputs(const grade_job *j)
+static int check_outputs(grade_job *j)
 {
     static const char *const reports[] = {".md", ".csv", ".html", NULL};
     const char *r = j->report;
-    int folder = j->heatmap && (j->nimages > 1 || path_is_dir(j->heatmap));   /* FOLDER/NAME.png, even for one image */
+    int folder = j->heatmap_folder = j->heatmap && (j->nimages > 1 || path_is_dir(j->heatmap));   /* FOLDER/NAME.png, even for one image */
     if (j->heatmap && !(folder ? path_is_dir(j->heatmap) : img_is_picture(j->heatmap))) {
         fprintf(stderr, j->nimages > 1 ? "pathlab grade: --heatmap %s: with several images, give a folder that exists\n"
                                        : "pathlab grade: --heatmap %s: a heatmap is a picture: use .png or .ppm\n", shown(j->heatmap));

@@ -26,13 +26,13 @@ typedef struct {
     int loud;              /* each image's tests in full: one image, or --details */
 } run;
 
-/* The heatmap's path for an image: the --heatmap file itself, or FOLDER/NAME.png with several (NAME
- * as its page's, page_paths.h: one-to-one with the image's name). */
+/* The heatmap's path for an image: the --heatmap file itself, or FOLDER/NAME.png (several images, or
+ * a folder that exists; NAME as its page's, page_paths.h: one-to-one with the image's name). */
 static void heatmap_path(char *out, size_t cap, const grade_job *j, const char *image, int skip)
 {
     char name[GRADE_NAME_CAP];
     grade_output_name(name, image, skip);
-    if (j->nimages == 1) snprintf(out, cap, "%s", j->heatmap);
+    if (!j->heatmap_folder) snprintf(out, cap, "%s", j->heatmap);
     else snprintf(out, cap, "%s/%s.png", j->heatmap, name);
 }
 
@@ -212,6 +212,27 @@ static int start(run *s)
     return 0;
 }
 
+/* 1 after saying so when an image's page would be the report itself (--pages the report's folder,
+ * a student named like the report: index.pfm beside --report out/index.html): the report, written
+ * last, would replace that page, and link the student to the class's table. */
+static int page_is_report(const run *s, const int *skip)
+{
+    const grade_job *j = &s->job;
+    char page[PATH_CAP], report_dir[PATH_CAP];
+    const char *name = j->report ? path_file_name(j->report) : NULL;
+    int k;
+    if (!name || !s->pages.dir[0]) return 0;
+    snprintf(report_dir, sizeof report_dir, "%.*s", name > j->report ? (int)(name - j->report) : 1, name > j->report ? j->report : ".");
+    if (!path_same_file(report_dir, s->pages.dir)) return 0;
+    for (k = 0; k < j->nimages; k++) {
+        if (grade_page_path(page, sizeof page, &s->pages, j->images[k], skip[k]) || strcmp(path_file_name(page), name)) continue;
+        fprintf(stderr, "pathlab grade: the page of %s would be %s, the --report itself: give --pages another folder, or the report "
+                "another name\n", shown(j->images[k]), shown(page));
+        return 1;
+    }
+    return 0;
+}
+
 int grade_run(const grade_job *job)
 {
     int n = job->nimages, k, rc = 0, started;
@@ -223,6 +244,7 @@ int grade_run(const grade_job *job)
     if (!s || !rows || !skip || grade_mark_same_names(job->images, n, skip)) rc = 2;
     if (s) s->job = *job;
     if (!rc) rc = start(s);
+    if (!rc && page_is_report(s, skip)) rc = 2;
     started = !rc;
     if (started) rc = grade_all(s, rows, kept, skip);
     if (started && n > 1) grade_print_summary(rows, n, &s->job.o);

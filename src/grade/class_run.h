@@ -9,6 +9,8 @@
 typedef struct {
     const char *ref, *var, *layers;        /* --ref; --var and --layers, or NULL: found beside the reference */
     const char *heatmap, *report, *pages;  /* the outputs asked for, or NULL */
+    int heatmap_folder;                    /* 1: --heatmap is a folder (several images, or one that exists):
+                                            * FOLDER/NAME.png; 0: the picture itself (cmd/grade.c decides) */
     int details;                           /* 1: each image's tests in full, even with several */
     grade_opts o;
     const char *const *images;             /* the images, folders expanded (folder.h) */

@@ -292,15 +292,33 @@ int cli_parse_flag(const char *cmd, int argc, char **argv, int *i, const cli_fla
     return cli_parse_value(cmd, f, argv[++*i], ctx);
 }
 
+/* 1 after saying so if flag f was given before (its name among seen[0..n-1]): the last one would
+ * silently win, and a student's file named --ref=x.pfm, expanded by the shell's *.pfm, would
+ * replace the teacher's reference. */
+static int given_twice(const char *cmd, const cli_flag *f, const char *const *seen, int n, const char *arg)
+{
+    int k;
+    for (k = 0; k < n && strcmp(seen[k], f->name); k++) continue;
+    if (k == n) return 0;
+    say_who(cmd);
+    fprintf(stderr, "%s given twice (again as '%s'): give it once. A file whose name starts with '-' is read as a flag: put -- "
+            "before the file names, or write ./NAME\n", f->name, shown(arg));
+    return 1;
+}
+
 int cli_parse(const char *cmd, int argc, char **argv, const cli_flag *const *tables, void *ctx,
               const char **words, int max_words, int *nwords)
 {
-    int i, words_only = 0;
+    const char *seen[64];
+    int i, words_only = 0, nseen = 0;
     *nwords = 0;
     if (list_to) return list_tables(tables);
     for (i = 1; i < argc; i++) {
         if (!words_only && !strcmp(argv[i], "--")) { words_only = 1; continue; }   /* then "-x.pfm" is a file */
         if (!words_only && !cli_is_word(argv[i])) {
+            const cli_flag *f = find_flag(tables, argv[i], cli_flag_length(argv[i]));
+            if (f && given_twice(cmd, f, seen, nseen, argv[i])) return 1;
+            if (f && nseen < (int)(sizeof seen / sizeof *seen)) seen[nseen++] = f->name;
             if (cli_parse_flag(cmd, argc, argv, &i, tables, ctx)) return 1;
         } else if (*nwords < max_words) {
             words[(*nwords)++] = argv[i];

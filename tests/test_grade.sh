@@ -153,6 +153,25 @@ expect_no_file "index.pfm's page would be the report: nothing written" "$TMP/rep
 # a flag given twice (a student's file named --ref=x.pfm, expanded by the shell's *.pfm) is refused
 expect_status "--ref given twice: status 2" 2 $PATHLAB grade --ref "$TMP/c.pfm" "$TMP/c.pfm" "--ref=$TMP/c_bright.pfm"
 expect_err "--ref given twice: said, with the way out" "--ref given twice .again as '--ref=.*c_bright.pfm'.: give it once.*put -- before the file names"
+# a 4 MB run-length .hdr whose resolution line claims 8192x8192 (the wrong size): refused from its
+# header, nothing decoded (it was decoded whole first: 793 MB, 1.4 s)
+python3 - "$TMP/big.hdr" <<'PYEND'
+import sys
+n = 8192
+line = bytes([2, 2, n >> 8, n & 255])
+for c in range(4):
+    left = n
+    while left:
+        k = min(127, left); line += bytes([128 + k, 128 if c < 3 else 129]); left -= k
+open(sys.argv[1], 'wb').write(b'#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y %d +X %d\n' % (n, n) + line * n)
+PYEND
+if [ -x /usr/bin/time ]; then
+    /usr/bin/time -f 'maxrss %M' -o "$TMP/time" $PATHLAB grade "$TMP/big.hdr" --ref "$TMP/c.pfm" > "$TMP/out" 2> "$TMP/err"; rc=$?
+    rss=$(sed -n 's/^maxrss //p' "$TMP/time")
+    if [ $rc = 1 ] && grep -q "the wrong image size: 8192x8192" "$TMP/out" && [ "${rss:-999999999}" -lt 200000 ]; then
+        pass "an .hdr claiming 8192x8192: the wrong size, from its header ($rss KB)"
+    else fail "an .hdr claiming 8192x8192: exit $rc, $rss KB (under 200000 wanted): $(head -c 300 "$TMP/out")"; fi
+else skip "an .hdr claiming 8192x8192 refused from its header (needs /usr/bin/time)"; fi
 expect_status "a class with an unreadable image: status 2" 2 $PATHLAB grade "$TMP/c.pfm" "$TMP/none.pfm" --ref "$TMP/c.pfm"
 expect_status "--heatmap of an unknown format: status 2" 2 $PATHLAB grade "$TMP/c.pfm" --ref "$TMP/c.pfm" --heatmap "$TMP/h.jpg"
 expect_err "--heatmap of an unknown format explained" "^pathlab grade: --heatmap .*h.jpg: a heatmap is a picture: use .png or .ppm"

@@ -220,6 +220,7 @@ static void worst_channel(void)
     memset(&r, 0, sizeof r);
     memset(&row, 0, sizeof row);
     r.w = r.h = 8;
+    r.image_nfit = 12;   /* a fit was made (without one the row shows the plain mean) */
     r.image_z[0] = 4.5, r.image_z[1] = 4.2, r.image_z[2] = 1.0;
     r.image_zlimit[0] = 4.82, r.image_zlimit[1] = 4.13, r.image_zlimit[2] = 4.0;
     r.image_eps[0] = 0.03, r.image_eps[1] = 0.015, r.image_eps[2] = 0.001;

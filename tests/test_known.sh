@@ -35,7 +35,10 @@ known() {   # name scene value size spp precision flags...
     $PFMTOOL const "$size" "$size" 0 0 0 "$TMP/zero.pfm"
     zcheck_expect "$name: L = $value" 0 "$TMP/r.pfm" "$TMP/r_var.pfm" "$TMP/exact.pfm" "$TMP/zero.pfm" --pixel-pass 0 --precision "$prec"
 }
-known "furnace, default estimators, 32x32 x 1024 spp" furnace 2 32 1024 1e-3
+# --seed 2: with seed 1 one block of 16 has |z| 3.74 against its 3.71 since the light's choice got 53
+# bits (2026-12-07), the image |z| 1.13: a false alarm, as alpha allows (seeds 2 to 12: every block
+# below 2.94, every image |z| below 1.6)
+known "furnace, default estimators, 32x32 x 1024 spp" furnace 2 32 1024 1e-3 --seed 2
 known "furnace, BRDF sampling only, uniform, 32x32 x 2048 spp" furnace 2 32 2048 1e-3 --direct brdf --dir uniform
 known "furnace, light sampling only, cosine, 16x16 x 1024 spp (infinite variance: no precision asked)" furnace 2 16 1024 0 --direct light --dir cosine
 known "sphere furnace, default estimators, 32x32 x 1024 spp" sphere-furnace 1 32 1024 1e-3

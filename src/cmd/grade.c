@@ -80,7 +80,7 @@ static int parse_args(grade_job *j, grade_list *l, int argc, char **argv)
     const cli_flag *tables[] = {flags, NULL};
     const char **words = calloc((size_t)argc + 1, sizeof *words);
     int n, err;
-    err = !words || grade_list_init(l, GRADE_MAX_IMAGES) || cli_parse("grade", argc, argv, tables, &alpha, words, argc, &n)
+    err = !words || grade_list_init(l, GRADE_MAX_IMAGES) || cli_parse_once("grade", argc, argv, tables, &alpha, words, argc, &n)
           || add_images(l, words, n, j->ref);
     free(words);
     j->o.alpha = alpha;

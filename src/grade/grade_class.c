@@ -9,6 +9,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include "image/linear_file.h"
+#include "image/rgbe.h"
 #include "image/radiance.h"
 #include "sys/input_file.h"
 #include "sys/output_path.h"
@@ -133,8 +134,12 @@ int grade_read_image(image *img, grade_row *row, const grade_refs *refs, const c
     img->w = img->h = 0;
     img->px = NULL;
     /* the header first: a file claiming gigabytes of the wrong kind or size is refused unread (an .hdr
-     * is read whole: its reader refuses a file shorter than its scanlines' most compact encoding) */
+     * is colour, its size from its resolution line: its run-length scanlines could hold 8192^2
+     * pixels in 4 MB) */
     if (img_is_rgbe(row->path)) {
+        if (img_read_hdr_size(row->path, &info.w, &info.h)) return unreadable(row);
+        info.channels = 3;
+        if ((info.w != refs->ref->w || info.h != refs->ref->h) && refs->channels == 3) return wrong_size(row, info.w, info.h, refs, ref_path);
         if (img_read_linear(img, row->path, &info)) return unreadable(row);
     } else if (img_read_pfm_header(row->path, &info)) return unreadable(row);
     if (info.channels != refs->channels) {

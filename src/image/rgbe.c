@@ -339,26 +339,34 @@ static int decode_hdr(image *im, const unsigned char *b, size_t n, const char *p
     return 0;
 }
 
-/* The file's bytes, read in two steps: the header first (at most RGBE_HEADER_MAX bytes), so that
- * the size check runs before the pixel data is read into memory. */
-static int read_checked(FILE *f, const char *path, unsigned char **out, size_t *n)
+/* The header of the file f (at most RGBE_HEADER_MAX bytes) into *hd and the file's length into
+ * *size, checked against the scanlines the resolution line declares: 0, or 1 after saying why. */
+static int read_header(FILE *f, const char *path, rgbe_header *hd, long *size)
 {
     unsigned char *b;
-    rgbe_header hd;
-    long size;
     size_t head;
-    if (fseek(f, 0, SEEK_END) != 0 || (size = ftell(f)) < 0 || fseek(f, 0, SEEK_SET) != 0)
+    if (fseek(f, 0, SEEK_END) != 0 || (*size = ftell(f)) < 0 || fseek(f, 0, SEEK_SET) != 0)
         return header_error(path, "cannot find the file's size");
-    head = (size_t)size < RGBE_HEADER_MAX ? (size_t)size : RGBE_HEADER_MAX;
+    head = (size_t)*size < RGBE_HEADER_MAX ? (size_t)*size : RGBE_HEADER_MAX;
     b = malloc(head ? head : 1);
     if (!b) return header_error(path, "out of memory");
-    if (fread(b, 1, head, f) != head || parse_header(b, head, &hd, path)
-        || check_size(&hd, (size_t)size - hd.size, path)) {
+    if (fread(b, 1, head, f) != head || parse_header(b, head, hd, path) || check_size(hd, (size_t)*size - hd->size, path)) {
         if (ferror(f)) fprintf(stderr, "%s: read error: %s\n", path, strerror(errno));
         free(b);
         return 1;
     }
     free(b);
+    return 0;
+}
+
+/* The file's bytes, read in two steps: the header first, so that the size check runs before the
+ * pixel data is read into memory. */
+static int read_checked(FILE *f, const char *path, unsigned char **out, size_t *n)
+{
+    unsigned char *b;
+    rgbe_header hd;
+    long size;
+    if (read_header(f, path, &hd, &size)) return 1;
     b = malloc((size_t)size);
     if (!b) return header_error(path, "out of memory");
     if (fseek(f, 0, SEEK_SET) != 0 || fread(b, 1, (size_t)size, f) != (size_t)size) {
@@ -369,6 +377,24 @@ static int read_checked(FILE *f, const char *path, unsigned char **out, size_t *
     *out = b;
     *n = (size_t)size;
     return 0;
+}
+
+int img_read_hdr_size(const char *path, int *w, int *h)
+{
+    rgbe_header hd;
+    long size;
+    int err;
+    char name[SHOWN_CAP];
+    FILE *f = input_file_open(path, 1);
+    snprintf(name, sizeof name, "%s", shown(path));
+    if (!f) {
+        fprintf(stderr, "%s: cannot open: %s\n", name, input_file_why(errno));
+        return 1;
+    }
+    err = read_header(f, name, &hd, &size);
+    fclose(f);
+    if (!err) *w = (int)hd.w, *h = (int)hd.h;
+    return err;
 }
 
 int img_read_hdr(image *im, const char *path)

@@ -16,4 +16,8 @@
  * declares (at least as many bytes as the most compact encoding of its scanlines) or holds more
  * than their least compact encoding; memory is the file plus the image. */
 int img_read_hdr(image *im, const char *path);
+/* The header only (the image's size into *w, *h; the file's length checked against it), nothing
+ * decoded: a small file that claims gigabytes of the wrong size is refused unread. 0, or 1 after
+ * printing "path: reason". */
+int img_read_hdr_size(const char *path, int *w, int *h);
 #endif

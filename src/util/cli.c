@@ -306,8 +306,8 @@ static int given_twice(const char *cmd, const cli_flag *f, const char *const *se
     return 1;
 }
 
-int cli_parse(const char *cmd, int argc, char **argv, const cli_flag *const *tables, void *ctx,
-              const char **words, int max_words, int *nwords)
+static int parse_all(const char *cmd, int argc, char **argv, const cli_flag *const *tables, void *ctx,
+                     const char **words, int max_words, int *nwords, int once)
 {
     const char *seen[64];
     int i, words_only = 0, nseen = 0;
@@ -317,7 +317,7 @@ int cli_parse(const char *cmd, int argc, char **argv, const cli_flag *const *tab
         if (!words_only && !strcmp(argv[i], "--")) { words_only = 1; continue; }   /* then "-x.pfm" is a file */
         if (!words_only && !cli_is_word(argv[i])) {
             const cli_flag *f = find_flag(tables, argv[i], cli_flag_length(argv[i]));
-            if (f && given_twice(cmd, f, seen, nseen, argv[i])) return 1;
+            if (once && f && given_twice(cmd, f, seen, nseen, argv[i])) return 1;
             if (f && nseen < (int)(sizeof seen / sizeof *seen)) seen[nseen++] = f->name;
             if (cli_parse_flag(cmd, argc, argv, &i, tables, ctx)) return 1;
         } else if (*nwords < max_words) {
@@ -331,4 +331,16 @@ int cli_parse(const char *cmd, int argc, char **argv, const cli_flag *const *tab
         }
     }
     return 0;
+}
+
+int cli_parse(const char *cmd, int argc, char **argv, const cli_flag *const *tables, void *ctx,
+              const char **words, int max_words, int *nwords)
+{
+    return parse_all(cmd, argc, argv, tables, ctx, words, max_words, nwords, 0);
+}
+
+int cli_parse_once(const char *cmd, int argc, char **argv, const cli_flag *const *tables, void *ctx,
+                   const char **words, int max_words, int *nwords)
+{
+    return parse_all(cmd, argc, argv, tables, ctx, words, max_words, nwords, 1);
 }

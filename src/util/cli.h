@@ -37,6 +37,11 @@ typedef struct {
  * wrong (unknown flag, missing or bad value, one word too many). */
 int cli_parse(const char *cmd, int argc, char **argv, const cli_flag *const *tables, void *ctx,
               const char **words, int max_words, int *nwords);
+/* The same, but a flag given twice is an error (with cli_parse the last one wins): for a command
+ * whose words are students' files, expanded by the shell (grade's *.pfm), where a file named
+ * --ref=x.pfm would otherwise replace the teacher's flag. */
+int cli_parse_once(const char *cmd, int argc, char **argv, const cli_flag *const *tables, void *ctx,
+                   const char **words, int max_words, int *nwords);
 /* The flag argv[*i] of the tables and its value, leaving *i on the last argument used; 0 or 1 as cli_parse. */
 int cli_parse_flag(const char *cmd, int argc, char **argv, int *i, const cli_flag *const *tables, void *ctx);
 /* The value of flag f, stored as f says (CLI_CUSTOM gets ctx); 0, or 1 after printing why. */

@@ -118,3 +118,12 @@ cmp -s "$TMP/l.pfm" "$TMP/l2.pfm" && pass "a PFM texture is linear whatever --te
 printf 'P6\n2 2\n255\n' > "$S/short.ppm"; printf 'newmtl lamp\nKe 1\nmap_Ke short.ppm\n' > "$S/s.mtl"
 expect_status "a texture cut short: refused" 2 $PATHLAB render "$S/lamp.obj" --mtl "$S/s.mtl" -o "$TMP/x.pfm"
 expect_err "a texture cut short: the MTL line named" "s.mtl:3: cannot read the texture"
+# a lamp written twice (the same corners, one face each winding) and a lamp alone: the first is
+# warned about once (a ray sees one copy, light sampling draws both); the second is not
+printf 'mtllib d.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 -3\nv 4 0 -3\nv 0 4 -3\nusemtl lamp\nf 1 2 3\nf 1 3 2\nusemtl wall\nf 4 5 6\n' > "$S/twice.obj"
+printf 'mtllib d.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 -3\nv 4 0 -3\nv 0 4 -3\nusemtl lamp\nf 1 2 3\nusemtl wall\nf 4 5 6\n' > "$S/once.obj"
+printf 'newmtl lamp\nKd 0 0 0\nKe 1 1 1\nnewmtl wall\nKd 0.5 0.5 0.5\n' > "$S/d.mtl"
+expect_status "a lamp written twice: rendered" 0 $PATHLAB render "$S/twice.obj" --size 8x8 --spp 1 --eye 0.3,0.3,3 --target 0.3,0.3,0 -o "$TMP/x.pfm"
+expect_err "a lamp written twice: warned" "twice.obj: 1 emitting triangle has the same three corners as another"
+expect_status "a lamp alone: rendered" 0 $PATHLAB render "$S/once.obj" --size 8x8 --spp 1 --eye 0.3,0.3,3 --target 0.3,0.3,0 -o "$TMP/x.pfm"
+if grep -q "same three corners" "$TMP/err"; then fail "a lamp alone: warned as written twice"; else pass "a lamp alone: no warning"; fi

@@ -419,17 +419,57 @@ static int add_default_material(mesh *m)
     return 1;
 }
 
+/* An emitting triangle's three corners, sorted: the same key for a face written twice, in either winding. */
+typedef struct { float c[9]; } corners_key;
+
+static int by_corners(const void *a, const void *b) { return memcmp(a, b, sizeof(corners_key)); }
+
+static void corner_key(const mesh *m, int i, corners_key *k)
+{
+    int order[3] = {0, 1, 2}, a, b, tmp;
+    for (a = 0; a < 2; a++)   /* the three corners sorted by their bytes: any winding, any first corner */
+        for (b = a + 1; b < 3; b++)
+            if (memcmp(&m->P[m->tri[3 * i + order[b]]], &m->P[m->tri[3 * i + order[a]]], sizeof(vec3)) < 0)
+                tmp = order[a], order[a] = order[b], order[b] = tmp;
+    for (a = 0; a < 3; a++) {
+        vec3 p = m->P[m->tri[3 * i + order[a]]];
+        k->c[3 * a] = p.x, k->c[3 * a + 1] = p.y, k->c[3 * a + 2] = p.z;
+    }
+}
+
+/* Emitting triangles with the same three corners as another (a lamp written twice, or back to back):
+ * a ray hits one of them, whichever the BVH meets first, while light sampling draws each, so light
+ * and BRDF sampling disagree there. Counted for a warning (0 if memory runs out: no warning). */
+static long coincident_emitters(const mesh *m)
+{
+    corners_key *k;
+    long n = 0, i, same = 0;
+    for (i = 0; i < m->ntris; i++) n += !v3_is_zero(m->mats[m->tri_mat[i]].Ke);
+    if (n < 2 || !(k = malloc((size_t)n * sizeof *k))) return 0;
+    for (i = 0, n = 0; i < m->ntris; i++)
+        if (!v3_is_zero(m->mats[m->tri_mat[i]].Ke)) corner_key(m, (int)i, &k[n++]);
+    qsort(k, (size_t)n, sizeof *k, by_corners);
+    for (i = 1; i < n; i++) same += !memcmp(&k[i], &k[i - 1], sizeof *k);
+    free(k);
+    return same;
+}
+
 /* Checks that something is left to render and gives the arrays back their unused room. */
 static int finish(loader *L)
 {
     mesh *m = L->m;
     objtext *t = L->obj;
     void *fit;
+    long twice;
     t->line = 0; /* messages about the whole file */
     if (m->ntris == 0 && m->ndegenerate > 0)
         return objtext_fail(t, "no triangles: all %d had zero area", m->ndegenerate);
     if (m->ntris == 0) return objtext_fail(t, "no triangles (no faces with 3 or more vertices)");
     if (m->ndegenerate > 0) objtext_warn(t, 0, "dropped %d triangles of zero area", m->ndegenerate);
+    if ((twice = coincident_emitters(m)) > 0)
+        objtext_warn(t, 0, "%ld emitting triangle%s the same three corners as another (a lamp written twice, or back to back): "
+                     "a ray sees one of them, light sampling draws each, so --direct light and --direct brdf disagree; keep one "
+                     "(an emitter lights the side its winding faces)", twice, twice == 1 ? " has" : "s have");
     if ((fit = realloc(m->P, (size_t)m->nverts * sizeof *m->P))) m->P = fit;
     if ((fit = realloc(m->tri, 3 * (size_t)m->ntris * sizeof *m->tri))) m->tri = fit;
     if ((fit = realloc(m->tri_mat, (size_t)m->ntris * sizeof *m->tri_mat))) m->tri_mat = fit;

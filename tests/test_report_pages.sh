@@ -108,3 +108,16 @@ missing=$(links_missing "$G/st/c.md" $links)
 if [ "$links" = "$(printf 'c-pages/ana_2frender.html\nc-pages/ben_2frender.html')" ] && [ -z "$missing" ] && grep -q '<b>FAIL</b>' "$(resolve "$G/st/c.md" "$(echo "$links" | grep ben)")"; then
     pass "grade: two images named render.pfm get two pages ($(echo $links))"
 else fail "grade: same file names: links '$links', missing '$missing'"; fi
+# students of one file name in their own folders (st/ana/render.pfm, st/ben/render.pfm): the class
+# page's viewer names each by its path, not both "render.pfm"
+mkdir -p "$TMP/st/ana" "$TMP/st/ben"
+for s in ana ben; do $PATHLAB render scenes/cornell.obj --quiet --spp 16 --seed 3 --bounce 1 --size 24x24 --pixel-center -o "$TMP/st/$s/render.pfm"; done
+$PATHLAB grade "$TMP/st/ana/render.pfm" "$TMP/st/ben/render.pfm" --ref ref/cornell_L1.pfm --report "$TMP/st.html" > /dev/null 2>&1
+names=$(python3 - "$TMP/st.html" <<'PYEND'
+import re, json, sys
+t = open(sys.argv[1]).read()
+d = json.loads(re.search(r'id="pathlab-settings">(.*?)</script>', t, re.S).group(1))
+print(' '.join(i['name'].split('/st/')[-1] for i in d['images']))
+PYEND
+)
+[ "$names" = "ana/render.pfm ben/render.pfm" ] && pass "class page: the viewer names students of one file name by their paths ($names)" || fail "class page: viewer names '$names'"

@@ -187,7 +187,7 @@ static int class_images(html_image *im, const grade_row *rows, int n, const imag
     int k, m = 0;
     for (k = 0; imgs && k < n; k++) {
         if (!imgs[k].px) continue;
-        im[m].name = path_file_name(rows[k].path), im[m].img = &imgs[k], im[m].var = NULL;
+        im[m].name = rows[k].path, im[m].img = &imgs[k], im[m].var = NULL;
         im[m++].link = rows[k].page[0] ? rows[k].page : NULL;
     }
     return m;

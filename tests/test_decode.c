@@ -178,6 +178,39 @@ static void test_float(void)
     check(r != 0 && im.px == NULL, "decode_refuses_fifo", NULL);
 }
 
+/* img_decode_file_within: each format's file of w x h pixels decodes with a cap of w h pixels and is
+ * refused, nothing decoded, with a cap of one less (a scene's textures share one budget). */
+static void test_cap(void)
+{
+    static const char *const names[] = {"c.ppm", "c.tga", "c.png", "c.pfm", "c.hdr"};
+    unsigned char b[512];
+    image im, src;
+    size_t n;
+    int k, bad = 0;
+    char msg[2048], why[600] = "";
+    img_alloc(&src, 3, 2);
+    spit(in_dir("c.ppm"), "P6\n3 2\n255\n000111222333444555", 29);
+    n = write_tga(b, 2, 24, 0), spit(in_dir("c.tga"), b, n);
+    img_write_png(&src, in_dir("c.png"), 0.0f);
+    img_write_pfm(&src, in_dir("c.pfm"));
+    n = (size_t)sprintf((char *)b, "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 3\n");
+    memset(b + n, 128, 24), spit(in_dir("c.hdr"), b, n + 24);
+    for (k = 0; k < 5; k++) {
+        int ok, refused;
+        ok = img_decode_file_within(&im, in_dir(names[k]), NULL, 6) == 0 && im.w == 3 && im.h == 2;
+        if (ok) img_free(&im);
+        capture_begin();
+        refused = img_decode_file_within(&im, in_dir(names[k]), NULL, 5) != 0 && !im.px;
+        snprintf(msg, sizeof msg, "%s", chop_newlines(capture_end()));
+        if (!ok || !refused || !strstr(msg, "over the 5 allowed here")) {
+            bad++;
+            snprintf(why + strlen(why), sizeof why - strlen(why), "%s: %.100s; ", names[k], msg);
+        }
+    }
+    img_free(&src);
+    check(bad == 0, "decode_within_a_cap: PPM, TGA, PNG, PFM, HDR of 3 x 2 read with a cap of 6 pixels, refused with 5", "%s", why);
+}
+
 /* oiiotool --dumpdata's integer values of an 8-bit file (its y = 0 is the top row). */
 static int oiio_codes(const char *path, int *out, int w, int h)
 {
@@ -237,6 +270,7 @@ int main(void)
     test_hostile();
     test_tga();
     test_float();
+    test_cap();
     test_oiiotool();
     scratch_end();
     return check_summary();

@@ -61,9 +61,17 @@ static int unknown_format(const char *path, const unsigned char *b, size_t n)
     return 1;
 }
 
-static int decode_float(image *im, const char *path, file_format fmt, img_decoded *info)
+static int decode_float(image *im, const char *path, file_format fmt, img_decoded *info, long max_pixels)
 {
     img_pfm_info pfm;
+    int w, h;
+    /* the size from the header first: an .hdr's run-length scanlines can claim 64 times its bytes */
+    if (fmt == FMT_HDR ? img_read_hdr_size(path, &w, &h) : img_read_pfm_header(path, &pfm)) return 1;
+    if (fmt != FMT_HDR) w = pfm.w, h = pfm.h;
+    if ((long)w * h > img_decode_cap(max_pixels)) {
+        fprintf(stderr, "%s: %d x %d pixels, over the %ld allowed here\n", shown(path), w, h, img_decode_cap(max_pixels));
+        return 1;
+    }
     if (fmt == FMT_HDR ? img_read_hdr(im, path) : img_read_pfm_info(im, path, &pfm)) return 1;
     info->format = fmt == FMT_HDR ? "HDR" : "PFM";
     info->encoding = IMG_ENC_LINEAR;
@@ -73,18 +81,20 @@ static int decode_float(image *im, const char *path, file_format fmt, img_decode
 }
 
 static int decode_bytes(image *im, const unsigned char *b, size_t n, const char *path, file_format fmt,
-                        img_decoded *info)
+                        img_decoded *info, long max_pixels)
 {
     switch (fmt) {
-    case FMT_PPM: return img_decode_ppm(im, b, n, path, info);
-    case FMT_TGA: return img_decode_tga(im, b, n, path, info);
-    case FMT_PNG: return img_decode_png(im, b, n, path, info);
-    case FMT_JPEG: return img_decode_jpeg(im, b, n, path, info);
+    case FMT_PPM: return img_decode_ppm(im, b, n, path, info, max_pixels);
+    case FMT_TGA: return img_decode_tga(im, b, n, path, info, max_pixels);
+    case FMT_PNG: return img_decode_png(im, b, n, path, info, max_pixels);
+    case FMT_JPEG: return img_decode_jpeg(im, b, n, path, info, max_pixels);
     default: return unknown_format(path, b, n);
     }
 }
 
-int img_decode_file(image *im, const char *path, img_decoded *info)
+int img_decode_file(image *im, const char *path, img_decoded *info) { return img_decode_file_within(im, path, info, IMG_DECODE_MAX_PIXELS); }
+
+int img_decode_file_within(image *im, const char *path, img_decoded *info, long max_pixels)
 {
     unsigned char head[32], *b;
     img_decoded mine;
@@ -105,12 +115,12 @@ int img_decode_file(image *im, const char *path, img_decoded *info)
     fmt = sniff(head, fread(head, 1, sizeof head, f));
     if (fmt == FMT_PFM || fmt == FMT_HDR) {
         fclose(f);
-        return decode_float(im, path, fmt, info);
+        return decode_float(im, path, fmt, info, max_pixels);
     }
     b = read_all(f, name, &n);
     fclose(f);
     if (!b) return 1;
-    err = decode_bytes(im, b, n, name, sniff(b, n), info);
+    err = decode_bytes(im, b, n, name, sniff(b, n), info, max_pixels);
     free(b);
     if (err) img_free(im);
     return err;

@@ -37,13 +37,20 @@ typedef struct {
  * error prints "path: reason" on stderr, returns nonzero, with im empty. info may be NULL. */
 int img_decode_file(image *im, const char *path, img_decoded *info);
 
+/* The same, refusing before it decodes anything an image of more than max_pixels pixels (at most
+ * IMG_DECODE_MAX_PIXELS whatever it says): a scene's textures share one budget (scene/texture.h). */
+int img_decode_file_within(image *im, const char *path, img_decoded *info, long max_pixels);
+
 /* The decoders on a whole file in memory (b, n bytes), for img_decode_file and the fuzz harnesses:
- * the same contract (path names the file in messages; info is filled, never NULL). */
-int img_decode_ppm(image *im, const unsigned char *b, size_t n, const char *path, img_decoded *info);
+ * the same contract (path names the file in messages; info is filled, never NULL; at most
+ * max_pixels pixels, capped at IMG_DECODE_MAX_PIXELS). */
+int img_decode_ppm(image *im, const unsigned char *b, size_t n, const char *path, img_decoded *info, long max_pixels);
 /* PNG: png_decode.c; JPEG: jpeg.c; TGA: tga.c; PPM/PGM: pnm.c */
-int img_decode_png(image *im, const unsigned char *b, size_t n, const char *path, img_decoded *info);
-int img_decode_jpeg(image *im, const unsigned char *b, size_t n, const char *path, img_decoded *info);
-int img_decode_tga(image *im, const unsigned char *b, size_t n, const char *path, img_decoded *info);
+int img_decode_png(image *im, const unsigned char *b, size_t n, const char *path, img_decoded *info, long max_pixels);
+int img_decode_jpeg(image *im, const unsigned char *b, size_t n, const char *path, img_decoded *info, long max_pixels);
+int img_decode_tga(image *im, const unsigned char *b, size_t n, const char *path, img_decoded *info, long max_pixels);
+/* max_pixels within [0, IMG_DECODE_MAX_PIXELS] (0: a budget spent, nothing allowed) */
+static inline long img_decode_cap(long max_pixels) { return max_pixels < 0 ? 0 : max_pixels < IMG_DECODE_MAX_PIXELS ? max_pixels : IMG_DECODE_MAX_PIXELS; }
 /* 1 when b (n bytes) starts like a TGA header (TGA has no magic number: its fields are checked). */
 int img_looks_like_tga(const unsigned char *b, size_t n);
 #endif

@@ -42,6 +42,7 @@ typedef struct {
     long mcux, mcuy, eobrun;
     int ns, sc[3], ss, se, ah, al;   /* the current scan */
     const char *path;
+    long max_pixels;                 /* the most pixels allowed (img_decode_cap) */
 } jpeg;
 
 static const unsigned char ZIGZAG[64] = {0, 1, 8, 16, 9, 2, 3, 10, 17, 24, 32, 25, 18, 11, 4, 5, 12, 19, 26, 33, 40, 48,
@@ -181,7 +182,11 @@ static int read_sof(jpeg *j, const unsigned char *s, size_t len, int marker)
     j->nc = s[5];
     j->progressive = marker == 0xc2;
     if (j->h == 0) return jfail(j, "a JPEG whose height is given later (DNL): not read");
-    if (j->w == 0 || (long)j->w * j->h > IMG_DECODE_MAX_PIXELS) return jfail(j, "bad JPEG size (width 0, or over 268435456 pixels)");
+    if (j->w == 0) return jfail(j, "bad JPEG size (width 0)");
+    if ((long)j->w * j->h > j->max_pixels) {
+        fprintf(stderr, "%s: JPEG of %d x %d pixels, over the %ld allowed here\n", j->path, j->w, j->h, j->max_pixels);
+        return 1;
+    }
     if ((j->nc != 1 && j->nc != 3) || len < 6 + 3 * (size_t)j->nc)
         return jfail(j, "a JPEG of other than 1 (grey) or 3 components (CMYK is not read)");
     j->hmax = j->vmax = 1;
@@ -520,7 +525,7 @@ static int markers(jpeg *j)
     return scans ? 0 : jfail(j, "no scan: no pixel data");
 }
 
-int img_decode_jpeg(image *im, const unsigned char *b, size_t n, const char *path, img_decoded *info)
+int img_decode_jpeg(image *im, const unsigned char *b, size_t n, const char *path, img_decoded *info, long max_pixels)
 {
     jpeg *j = calloc(1, sizeof *j);
     int err, i;
@@ -531,6 +536,7 @@ int img_decode_jpeg(image *im, const unsigned char *b, size_t n, const char *pat
     j->n = n;
     j->pos = 2;
     j->path = path;
+    j->max_pixels = img_decode_cap(max_pixels);
     err = n < 4 || b[0] != 0xff || b[1] != 0xd8 ? jfail(j, "not a JPEG file") : markers(j) || !j->frame;
     if (!err) err = to_image(im, j);
     if (!err) {

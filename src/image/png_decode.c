@@ -245,7 +245,7 @@ static int decode_rows(image *im, png_info *p, const char *path)
     return err;
 }
 
-int img_decode_png(image *im, const unsigned char *b, size_t n, const char *path, img_decoded *info)
+int img_decode_png(image *im, const unsigned char *b, size_t n, const char *path, img_decoded *info, long max_pixels)
 {
     static const unsigned char sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     png_info p;
@@ -254,7 +254,10 @@ int img_decode_png(image *im, const unsigned char *b, size_t n, const char *path
     im->px = NULL;
     memset(&p, 0, sizeof p);
     if (n < 8 || memcmp(b, sig, 8) != 0) return fail(path, "not a PNG file");
-    err = read_chunks(&p, b, n, path) || decode_rows(im, &p, path);
+    err = read_chunks(&p, b, n, path);
+    if (!err && p.w * p.h > img_decode_cap(max_pixels))   /* before inflating: 55 KB can hold 16384^2 pixels */
+        err = fprintf(stderr, "%s: PNG of %ld x %ld pixels, over the %ld allowed here\n", path, p.w, p.h, img_decode_cap(max_pixels)) > 0;
+    if (!err) err = decode_rows(im, &p, path);
     free(p.idat);
     if (err) {
         img_free(im);

@@ -89,7 +89,7 @@ static int read_samples(image *im, const unsigned char *b, size_t n, size_t p, c
     return 0;
 }
 
-int img_decode_ppm(image *im, const unsigned char *b, size_t n, const char *path, img_decoded *info)
+int img_decode_ppm(image *im, const unsigned char *b, size_t n, const char *path, img_decoded *info, long max_pixels)
 {
     pnm_header hd;
     size_t p, count, need;
@@ -100,6 +100,10 @@ int img_decode_ppm(image *im, const unsigned char *b, size_t n, const char *path
         return 1;
     }
     if (parse_header(b, n, &p, &hd, path)) return 1;
+    if (hd.w * hd.h > img_decode_cap(max_pixels)) {
+        fprintf(stderr, "%s: %ld x %ld pixels, over the %ld allowed here\n", path, hd.w, hd.h, img_decode_cap(max_pixels));
+        return 1;
+    }
     count = (size_t)hd.w * (size_t)hd.h * (size_t)hd.channels;
     /* binary: exactly the samples' bytes; text: at least one digit and one separator a sample */
     need = hd.binary ? count * (hd.maxval > 255 ? 2 : 1) : 2 * count - 1;

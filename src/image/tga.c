@@ -130,7 +130,7 @@ truncated:
     return 1;
 }
 
-int img_decode_tga(image *im, const unsigned char *b, size_t n, const char *path, img_decoded *info)
+int img_decode_tga(image *im, const unsigned char *b, size_t n, const char *path, img_decoded *info, long max_pixels)
 {
     tga_header hd;
     size_t total, bpp, need;
@@ -144,6 +144,10 @@ int img_decode_tga(image *im, const unsigned char *b, size_t n, const char *path
     if (n - hd.data < need) {
         fprintf(stderr, "%s: truncated: %ld x %ld pixels need %s%zu bytes, the file has %zu after its header\n",
                 path, hd.w, hd.h, hd.type >= 9 ? "at least " : "", need, n - hd.data);
+        return 1;
+    }
+    if (hd.w * hd.h > img_decode_cap(max_pixels)) {
+        fprintf(stderr, "%s: %ld x %ld pixels, over the %ld allowed here\n", path, hd.w, hd.h, img_decode_cap(max_pixels));
         return 1;
     }
     depth = (hd.type & 7) == 1 ? hd.cmap_depth : hd.depth;

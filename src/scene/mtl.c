@@ -6,6 +6,7 @@
 #include "scene/objtext.h"
 #include "math/rng.h"
 #include "scene/scene_file.h"
+#include "image/decode.h"
 #include <errno.h>
 #include <limits.h>
 #include <unistd.h>
@@ -181,13 +182,19 @@ static void check_energy(const objtext *t, mesh *m, const material *mat, int lin
 static int find_or_load_texture(const objtext *t, mesh *m, char *real, const mtl_opts *o, int *tex)
 {
     texture *more;
+    long used = 0;
     int i;
     for (i = 0; i < m->ntextures; i++)
         if (!strcmp(m->textures[i].path, real)) break;
     if (i == m->ntextures) {
+        for (i = 0; i < m->ntextures; i++) used += (long)m->textures[i].w * m->textures[i].h;
         if (!(more = realloc(m->textures, ((size_t)m->ntextures + 1) * sizeof *more))) return objtext_fail(t, "out of memory");
         m->textures = more;
-        if (texture_load(&m->textures[i], real, o->decode)) return objtext_fail(t, "cannot read the texture %s", real);   /* shown by objtext_fail */
+        if (texture_load(&m->textures[i], real, o->decode, TEXTURE_SCENE_MAX_TEXELS - used))   /* shown by objtext_fail */
+            return TEXTURE_SCENE_MAX_TEXELS - used < IMG_DECODE_MAX_PIXELS
+                   ? objtext_fail(t, "cannot read the texture %s (a scene's textures hold at most %ld texels together; those before "
+                                  "it, %ld)", real, TEXTURE_SCENE_MAX_TEXELS, used)
+                   : objtext_fail(t, "cannot read the texture %s", real);
         m->ntextures++;
     }
     *tex = i + 1;

@@ -18,10 +18,10 @@ static float srgb_decode(float c)
 
 /* The file's pixels into *im, by its magic bytes (image/decode.h); *integer: its values are integers
  * over a maxval (PNG, JPEG, TGA, PPM), to which --texture-decode applies. */
-static int read_texels(image *im, const char *path, int *integer)
+static int read_texels(image *im, const char *path, int *integer, long max_texels)
 {
     img_decoded info;
-    if (img_decode_file(im, path, &info)) return 1;
+    if (img_decode_file_within(im, path, &info, max_texels)) return 1;
     *integer = info.encoding == IMG_ENC_INTEGER;
     return 0;
 }
@@ -38,12 +38,12 @@ static int texels_valid(const image *im, const char *path)
     return 1;
 }
 
-int texture_load(texture *t, const char *path, texture_decode decode)
+int texture_load(texture *t, const char *path, texture_decode decode, long max_texels)
 {
     image im;
     int integer, x, y, c;
     memset(t, 0, sizeof *t);
-    if (read_texels(&im, path, &integer)) return 1;
+    if (read_texels(&im, path, &integer, max_texels)) return 1;
     if (texels_valid(&im, path)) { img_free(&im); return 1; }
     t->w = im.w, t->h = im.h;
     t->rgb = im.px;   /* the same layout, rows flipped in place below */

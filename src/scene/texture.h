@@ -23,8 +23,13 @@ typedef struct {
     char *path;      /* resolved (realpath): one texture per file, whatever number of materials name it */
 } texture;
 
-/* Reads the image at path (resolved already) into t; 0, or 1 after printing "path: why". */
-int texture_load(texture *t, const char *path, texture_decode decode);
+/* A scene's textures together hold at most this many texels (6 GiB of floats): each file is capped
+ * at IMG_DECODE_MAX_PIXELS, but 55 KB of PNG can claim 16384^2 pixels, and a scene can name many. */
+#define TEXTURE_SCENE_MAX_TEXELS (1L << 29)
+
+/* Reads the image at path (resolved already) into t, refused unread past max_texels texels; 0, or 1
+ * after printing "path: why". */
+int texture_load(texture *t, const char *path, texture_decode decode, long max_texels);
 void texture_free(texture *t);
 /* The texture's value at texcoord (u, v). */
 vec3 texture_lookup(const texture *t, float u, float v, texture_filter filter);

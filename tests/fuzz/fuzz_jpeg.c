@@ -12,7 +12,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     img_decoded info;
     size_t i;
     (void)info;
-    if (img_decode_jpeg(&im, data, size, "f.jpg", &info) == 0) {
+    if (img_decode_jpeg(&im, data, size, "f.jpg", &info, IMG_DECODE_MAX_PIXELS) == 0) {
         if (im.w < 1 || im.h < 1 || !im.px) abort();
         for (i = 0; i < (size_t)im.w * im.h * 3; i++)
             if (!(im.px[i] >= 0.0f) || !isfinite(im.px[i]) || im.px[i] > 1.0f) abort();

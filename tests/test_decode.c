@@ -179,7 +179,8 @@ static void test_float(void)
 }
 
 /* img_decode_file_within: each format's file of w x h pixels decodes with a cap of w h pixels and is
- * refused, nothing decoded, with a cap of one less (a scene's textures share one budget). */
+ * refused, nothing decoded, with a cap of one less, and of 0 (a scene's textures share one budget:
+ * when it is spent, 0 once meant no cap at all). */
 static void test_cap(void)
 {
     static const char *const names[] = {"c.ppm", "c.tga", "c.png", "c.pfm", "c.hdr"};
@@ -201,6 +202,7 @@ static void test_cap(void)
         if (ok) img_free(&im);
         capture_begin();
         refused = img_decode_file_within(&im, in_dir(names[k]), NULL, 5) != 0 && !im.px;
+        refused = refused && img_decode_file_within(&im, in_dir(names[k]), NULL, 0) != 0 && !im.px;   /* a budget spent */
         snprintf(msg, sizeof msg, "%s", chop_newlines(capture_end()));
         if (!ok || !refused || !strstr(msg, "over the 5 allowed here")) {
             bad++;
@@ -208,7 +210,7 @@ static void test_cap(void)
         }
     }
     img_free(&src);
-    check(bad == 0, "decode_within_a_cap: PPM, TGA, PNG, PFM, HDR of 3 x 2 read with a cap of 6 pixels, refused with 5", "%s", why);
+    check(bad == 0, "decode_within_a_cap: PPM, TGA, PNG, PFM, HDR of 3 x 2 read with a cap of 6 pixels, refused with 5 and with 0", "%s", why);
 }
 
 /* oiiotool --dumpdata's integer values of an 8-bit file (its y = 0 is the top row). */

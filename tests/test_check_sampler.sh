@@ -80,14 +80,34 @@ gen nopi.txt cosine-nopi $N 9;      run "cosine pdf without 1/pi: caught" nopi.t
 gen norm.txt cosm-norm $N 10 20;    run "cos^20 pdf with (m+2)/(2 pi): caught" norm.txt 1 '-> .*\(m\+2\)/\(2 pi\) instead of \(m\+1\)' --pdf cosm:20
 gen theta.txt theta $N 11;          run "uniform in theta: caught" theta.txt 1 '-> your directions are uniform in theta, not in cos theta' --pdf hemisphere
 gen exp.txt cosm-exp 100000 12 20;      run "cos theta = u^(1/M): caught, K fitted" exp.txt 1 '-> .*cos\^K with K = 1[89]\.[0-9]+.*u\^\(1/20\) instead' --pdf cosm:20
-gen below.txt below $N 13;          run "directions below the surface: caught" below.txt 1 '-> [0-9]+ directions below the surface \(z <= 0; the first on line 9\)' --pdf cosine
+gen below.txt below $N 13;          run "directions below the surface: caught" below.txt 1 '-> [0-9]+ directions below the surface \(z < 0; the first on line 9\)' --pdf cosine
 grep -v ' -' "$TMP/blinn.txt" | awk '$3 > 0' > "$TMP/above.txt"   # the reflections below left out
 run "blinn file without the reflections below the surface: caught" above.txt 1 '-> no direction below the surface' --pdf blinn:20 --wo 0.5,0,0.866
 run "cosine directions claimed as hemisphere: chi-square fails, K about 1" cos3.txt 1 'cos\^K with K = (0\.9|1\.0)' --pdf hemisphere
 
-# few samples: a warning; bad input: exit 2 and FILE:LINE
-head -200 "$TMP/cos.txt" > "$TMP/few.txt"; run "199 samples: a warning" few.txt 1 '^warning: only 199 samples' --pdf cosine
-run "199 samples: the chi-square cannot judge" few.txt 1 '-> too few samples' --pdf cosine
+# a direction printed at the horizon (%f writes z < 5e-7 as 0.000000; 5% of honest 100000-line files
+# had one) is on the surface, not below it; a pdf 1e156 times too small on one line made the
+# normalisation's error infinite, and the check passed: now it fails
+{ cat "$TMP/hemi.txt"; echo "-0.975083 -0.221841 0.000000 0.159155"; } > "$TMP/horizon.txt"
+run "a direction at z = 0.000000: on the surface, pass" horizon.txt 0 '^pass: 0 checks failed' --pdf hemisphere
+{ cat "$TMP/cos.txt"; echo "1 0 1e-9 3e-166"; } > "$TMP/tiny.txt"
+run "one pdf 1e156 times too small: the normalisation fails" tiny.txt 1 'normalisation FAIL' --pdf cosine
+# few samples: a warning, the chi-square not judged (a correct sampler would fail it: honest files of
+# 700 to 1400 lines failed 20 of 20), exit 2 (neither pass nor fail); bad input: exit 2 and FILE:LINE
+head -200 "$TMP/cos.txt" > "$TMP/few.txt"; run "199 samples: a warning" few.txt 2 '^warning: only 199 samples' --pdf cosine
+run "199 samples: the chi-square not judged, the verdict says so" few.txt 2 '^NOT JUDGED: the other checks pass, but 199 samples are too few' --pdf cosine
+head -1000 "$TMP/cos.txt" | sed 's/ [^ ]*$/ 0.5/' > "$TMP/few_bad.txt"; run "999 samples with a wrong pdf column: still a fail" few_bad.txt 1 '^FAIL' --pdf cosine
+# a line over 4095 bytes (split by the reader, it read as two samples), a NUL byte (the rest of the
+# line was dropped), a control character in the line: refused with FILE:LINE, shown escaped
+{ head -3 "$TMP/cos.txt"; printf '0 0 1 0.3183099%4100s 0 0 1 0.3183099\n' ' '; } > "$TMP/long.txt"
+expect_status "a line over 4095 bytes: exit 2" 2 $PATHLAB check-sampler "$TMP/long.txt" --pdf cosine
+expect_err "a line over 4095 bytes: FILE:LINE" "long.txt:4: a line over 4095 bytes"
+{ head -3 "$TMP/cos.txt"; printf '0 0 1 0.3183099\0 7 7 7\n'; } > "$TMP/nul.txt"
+expect_status "a NUL byte: exit 2" 2 $PATHLAB check-sampler "$TMP/nul.txt" --pdf cosine
+expect_err "a NUL byte: FILE:LINE" "nul.txt:4: a NUL byte: not a text file"
+{ head -3 "$TMP/cos.txt"; printf '0 0 \033[2K\rpass\n'; } > "$TMP/esc.txt"
+expect_status "an escape sequence in a line: exit 2" 2 $PATHLAB check-sampler "$TMP/esc.txt" --pdf cosine
+if grep -q $'\033' "$TMP/err"; then fail "an escape sequence in a line: printed raw"; else pass "an escape sequence in a line: shown escaped"; fi
 head -16 "$TMP/cos.txt" > "$TMP/bad.txt"; echo "nan 0 1" >> "$TMP/bad.txt"
 expect_status "malformed line: exit 2" 2 $PATHLAB check-sampler "$TMP/bad.txt" --pdf cosine
 expect_err "malformed line: FILE:17 and the line" "bad\.txt:17: expected 3 or 4 numbers \(x y z \[pdf\]\), got 'nan 0 1'"

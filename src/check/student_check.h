@@ -24,7 +24,7 @@ typedef struct {
     long n;                    /* samples in the file */
     double alpha, alpha_each;  /* family-wise level, and each statistical test's (Sidak) */
     /* 0. domain */
-    long below, first_below;   /* directions with z <= 0, and the first one's line */
+    long below, first_below;   /* directions with z < 0 (z = 0 is on the surface), and the first one's line */
     int below_allowed;         /* uniform: the sphere; blinn: the reflections below are a cell */
     double below_expected;     /* blinn: n P(reflection below the surface) */
     /* 1. chi-square */

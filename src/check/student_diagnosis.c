@@ -12,7 +12,7 @@ int student_diagnose_directions(const student_report *r, const student_pdf *p, c
 {
     double M = p->m;
     if (r->below && p->kind != SPDF_BLINN)
-        return snprintf(buf, (size_t)len, "%ld directions below the surface (z <= 0; the first on line %ld): the pdf is 0 "
+        return snprintf(buf, (size_t)len, "%ld directions below the surface (z < 0; the first on line %ld): the pdf is 0 "
                         "there; is cos theta = z computed with the right sign?", r->below, r->first_below), 1;
     if (p->kind == SPDF_BLINN && r->below == 0 && r->below_expected >= 10.0)
         return snprintf(buf, (size_t)len, "no direction below the surface, but %.0f expected (P = %.3g): write every "

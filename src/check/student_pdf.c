@@ -62,7 +62,7 @@ double student_pdf_eval(const student_pdf *p, dvec w)
     dvec h;
     switch (p->kind) {
     case SPDF_UNIFORM: return 1.0 / (4.0 * PI);
-    case SPDF_HEMISPHERE: return w.z > 0.0 ? 1.0 / (2.0 * PI) : 0.0;
+    case SPDF_HEMISPHERE: return w.z >= 0.0 ? 1.0 / (2.0 * PI) : 0.0;   /* z = 0: on the surface */
     case SPDF_COSINE: return w.z > 0.0 ? w.z / PI : 0.0;
     case SPDF_COSM: return lobe(p->m, w.z);
     case SPDF_BLINN: break;
@@ -140,7 +140,7 @@ int student_pdf_bin_coords(const student_pdf *p, dvec w, dvec *x)
         *x = dv_normalize(w);
         return 1;
     }
-    if (!(w.z > 0.0)) return 0;
+    if (!(w.z >= 0.0)) return 0;   /* z = 0 (a %f that rounded a small z) is on the surface, in the lowest cells */
     *x = p->kind == SPDF_BLINN ? dv_normalize(dv_lin(p->wo, 1.0, dv_normalize(w), 1.0)) : dv_normalize(w);
     return 1;
 }

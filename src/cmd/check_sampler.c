@@ -92,6 +92,7 @@ int check_sampler_main(int argc, char **argv)
         return fprintf(stderr, "pathlab check-sampler: out of memory\n"), 1;
     }
     failed = student_print(o.file, &s, &r, &o.pdf, o.alpha, o.seed);
+    rc = failed ? 1 : s.n < STUDENT_MIN_SAMPLES ? 2 : 0;   /* too few to judge: neither pass nor fail */
     sample_file_free(&s);
-    return failed ? 1 : 0;
+    return rc;
 }

@@ -9,6 +9,7 @@
     "  pathlab check-sampler FILE.txt --pdf uniform|hemisphere|cosine|cosm:M|blinn:M [--wo X,Y,Z] [--alpha A] [--seed S]\n" \
     "                does a student's sampler draw the pdf it claims? FILE: 'x y z [pdf]' per line (check-sampler --help)\n"
 
-/* argv[0] = "check-sampler". 0 when every check passes, 1 if one fails, 2 on bad flags or a bad file. */
+/* argv[0] = "check-sampler". 0 when every check passes, 1 if one fails, 2 on bad flags, a bad file, or too
+ * few samples (under STUDENT_MIN_SAMPLES) to judge the chi-square when the other checks pass. */
 int check_sampler_main(int argc, char **argv);
 #endif

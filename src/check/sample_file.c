@@ -128,7 +128,7 @@ int sample_file_read(const char *path, sample_file *s, char *err, int errlen)
     while (!rc && (got = next_line(f, buf, sizeof buf, path, ln + 1, err, errlen)) != 0) {
         ln++;
         if (got < 0) { rc = 1; break; }
-        if (ln == 1 && !memcmp(buf, "\xef\xbb\xbf", 3)) memmove(buf, buf + 3, strlen(buf + 3) + 1);   /* a UTF-8 byte-order mark */
+        if (ln == 1 && !strncmp(buf, "\xef\xbb\xbf", 3)) memmove(buf, buf + 3, strlen(buf + 3) + 1);   /* a UTF-8 byte-order mark */
         rc = read_line(path, buf, ln, &ncols, &first, v, err, errlen);
         if (rc == 2) rc = push(s, &cap, v, ncols == 4, ln) ? (snprintf(err, (size_t)errlen, "%s: out of memory", shown(path)), 1) : 0;
     }

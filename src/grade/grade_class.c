@@ -139,8 +139,6 @@ int grade_read_image(image *img, grade_row *row, const grade_refs *refs, const c
     if (img_is_rgbe(row->path)) {
         if (img_read_hdr_size(row->path, &info.w, &info.h)) return unreadable(row);
         info.channels = 3;
-        if ((info.w != refs->ref->w || info.h != refs->ref->h) && refs->channels == 3) return wrong_size(row, info.w, info.h, refs, ref_path);
-        if (img_read_linear(img, row->path, &info)) return unreadable(row);
     } else if (img_read_pfm_header(row->path, &info)) return unreadable(row);
     if (info.channels != refs->channels) {
         snprintf(row->mistake, sizeof row->mistake, "%s (\"%s\", %d channel%s) against a %s reference: write %s",
@@ -155,7 +153,7 @@ int grade_read_image(image *img, grade_row *row, const grade_refs *refs, const c
         img_free(img);
         return wrong_size(row, info.w, info.h, refs, ref_path);
     }
-    if (!img->px && img_read_pfm_info(img, row->path, &info)) return unreadable(row);
+    if (img_read_linear(img, row->path, &info)) return unreadable(row);
     if (img_check_radiance(img, row->path, 4)) {
         if (first_bad(img, 0, &(const char *){NULL}) >= 0 || !grade_explain_negatives(row->mistake, sizeof row->mistake, img, refs->ref))
             snprintf(row->mistake, sizeof row->mistake, "NaN, infinite or negative values (positions on stderr): radiance is finite and >= 0");

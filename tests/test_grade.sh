@@ -140,6 +140,18 @@ cp "$TMP/c.pfm" "$TMP/class2/x_var.pfm"; echo notes > "$TMP/class2/notes.txt"
 expect_status "a folder with Bob.PFM (failing): graded, status 1" 1 $PATHLAB grade "$TMP/class2" --ref "$TMP/c.pfm"
 if grep -q "class2/Bob.PFM: FAIL" "$TMP/out"; then pass "a folder: Bob.PFM graded"; else fail "a folder: Bob.PFM not graded: $(head -c 300 "$TMP/out")"; fi
 expect_err "a folder: what is not graded counted" "the folder .*class2: not graded: 1 variance .*_var.pfm.*, 1 not .pfm or .hdr"
+# a student's symbolic links leading out of the class folder are not read: one to the reference was
+# taken for the reference (silently not graded), one to the grader's files was graded and its picture
+# put in the student's page; a link inside the folder is read as the file it names
+mkdir -p "$TMP/class4" "$TMP/secret4"; cp "$TMP/c.pfm" "$TMP/class4/alice.pfm"; cp "$TMP/c.pfm" "$TMP/secret4/s.pfm"
+ln -s ../secret4/s.pfm "$TMP/class4/bob.pfm"; ln -s "$TMP/c.pfm" "$TMP/class4/carol.pfm"; ln -s alice.pfm "$TMP/class4/dave.pfm"
+expect_status "links out of a class folder: status 2" 2 $PATHLAB grade "$TMP/class4" --ref "$TMP/c.pfm" --pages "$TMP/pages4"
+for who in bob carol; do
+    if grep -q "class4/$who.pfm: UNREADABLE, a symbolic link leading out of its folder: not read" "$TMP/out"; then pass "a link out of the folder ($who): not read, said in its row"
+    else fail "a link out of the folder ($who): read: $(grep "$who" "$TMP/out" | head -c 300)"; fi
+done
+if grep -q "class4/dave.pfm: PASS" "$TMP/out"; then pass "a link inside the folder: graded"; else fail "a link inside the folder: $(grep dave "$TMP/out" | head -c 300)"; fi
+if ls "$TMP/pages4" | grep -q bob; then fail "a link out of the folder: a page made for it: $(ls "$TMP/pages4")"; else pass "a link out of the folder: no page made for it"; fi
 # --heatmap FOLDER with one image (a class of one): FOLDER/NAME.png (it wrote to the folder's name: exit 2)
 mkdir -p "$TMP/hm1"
 expect_status "a class of one, --heatmap FOLDER: graded (a fail), status 1" 1 $PATHLAB grade "$TMP/class1" --ref "$TMP/c.pfm" --heatmap "$TMP/hm1"

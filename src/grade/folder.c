@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "image/linear_file.h"
+#include "sys/input_file.h"
 #include "sys/output_path.h"
 #include "util/path.h"
 
@@ -58,6 +59,11 @@ static int entry_kind(const char *dir, const char *name, const char *ref)
     if (img_format_of(low) != IMG_PFM && img_format_of(low) != IMG_HDR) return 4;
     if (path_ends_with(low, "_var.pfm")) return 1;
     if (strstr(low, "_split_l")) return 2;
+    {   /* a link leading out is graded, to be refused in its row, never taken for the reference */
+        char path[PATH_CAP];
+        snprintf(path, sizeof path, "%s/%s", dir, name);
+        if (input_file_link_out(path)) return 0;
+    }
     return is_reference(dir, name, ref) ? 3 : 0;
 }
 

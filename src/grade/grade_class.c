@@ -131,8 +131,14 @@ static int unreadable(grade_row *row)
 int grade_read_image(image *img, grade_row *row, const grade_refs *refs, const char *ref_path)
 {
     img_pfm_info info;
+    const char *link_out = input_file_link_out(row->path);
     img->w = img->h = 0;
     img->px = NULL;
+    if (link_out) {   /* a student's link to the reference, to another's image or to the grader's files */
+        snprintf(row->mistake, sizeof row->mistake, "%s", link_out);
+        fprintf(stderr, "pathlab grade: %s: %s\n", shown(row->path), link_out);
+        return row->status = 2;
+    }
     /* the header first: a file claiming gigabytes of the wrong kind or size is refused unread (an .hdr
      * is colour, its size from its resolution line: its run-length scanlines could hold 8192^2
      * pixels in 4 MB) */

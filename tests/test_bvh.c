@@ -201,6 +201,16 @@ static int brute_intersect(const soup *s, const ray *r, hit *best)
     return best->tri >= 0;
 }
 
+/* 1 if a triangle other than except is hit with t in (0, tmax): bvh_occluded_except by brute force. */
+static int brute_any_except(const soup *s, const ray *r, int except)
+{
+    int t;
+    hit h;
+    for (t = 0; t < s->ntris; t++)
+        if (t != except && bvh_triangle_hit(corner(s, t, 0), corner(s, t, 1), corner(s, t, 2), r, &h)) return 1;
+    return 0;
+}
+
 /* 1 when the bvh's answer for r matches brute force; *why says how it does not. */
 static int agrees(const bvh *b, const soup *s, const ray *r, const char **why)
 {
@@ -215,6 +225,9 @@ static int agrees(const bvh *b, const soup *s, const ray *r, const char **why)
     /* ties: of the triangles at the same t, the smallest index, as brute force keeps it (the rule
      * that makes the hit independent of the order of the visits, which differs between copies) */
     if (hb.tri != hf.tri) { *why = "not the smallest index of the triangles at that t"; return 0; }
+    /* a shadow ray blind to one triangle: the one hit first, then one it may not hit */
+    if (bvh_occluded_except(b, r, hb.tri) != brute_any_except(s, r, hb.tri)) { *why = "occluded_except (the hit) disagrees"; return 0; }
+    if (!bvh_occluded_except(b, r, hb.tri + 1 < s->ntris ? hb.tri + 1 : -1)) { *why = "occluded_except (another) misses"; return 0; }
     if (!bvh_triangle_hit(corner(s, hb.tri, 0), corner(s, hb.tri, 1), corner(s, hb.tri, 2), r, &again) ||
         again.t != hb.t || again.u != hb.u || again.v != hb.v) { *why = "hit triangle does not give that t, u, v"; return 0; }
     return 1;
@@ -576,7 +589,8 @@ static void test_isa(void)
                 int ix = bvh_intersect(bx, &r, &hx), i0 = bvh_intersect(b0, &r, &h0);
                 rays++, hits += i0;
                 bad += ix != i0 || hx.tri != h0.tri || (i0 && memcmp(&hx, &h0, sizeof hx) != 0) ||
-                       bvh_occluded(bx, &r) != bvh_occluded(b0, &r);
+                       bvh_occluded(bx, &r) != bvh_occluded(b0, &r) ||
+                       (i0 && bvh_occluded_except(bx, &r, h0.tri) != bvh_occluded_except(b0, &r, h0.tri));
             }
             if (!bx || !b0) bad++;
             bvh_free(bx), bvh_free(b0), soup_free(&s);
@@ -585,6 +599,46 @@ static void test_isa(void)
         check(bad == 0, name, "%d of %d rays differ (%d hits), %d kinds of soup", bad, rays, hits, NKINDS);
     }
     bvh_isa_force(NULL);
+}
+
+/* bvh_any_in_box against brute force: the triangles whose boxes meet a random box, found by a test
+ * that accepts one chosen triangle only (found, or not, as brute force says) or every one. */
+typedef struct { int want, calls; } box_probe;
+static int is_wanted(void *ctx, int tri) { box_probe *q = ctx; q->calls++; return tri == q->want; }
+
+static int box_meets(const soup *s, int t, vec3 lo, vec3 hi)
+{
+    vec3 a = corner(s, t, 0), b = corner(s, t, 1), c = corner(s, t, 2);
+    return fminf(a.x, fminf(b.x, c.x)) <= hi.x && fmaxf(a.x, fmaxf(b.x, c.x)) >= lo.x &&
+           fminf(a.y, fminf(b.y, c.y)) <= hi.y && fmaxf(a.y, fmaxf(b.y, c.y)) >= lo.y &&
+           fminf(a.z, fminf(b.z, c.z)) <= hi.z && fmaxf(a.z, fmaxf(b.z, c.z)) >= lo.z;
+}
+
+static void test_box_query(void)
+{
+    int kind, bad = 0, found = 0, queries = 0;
+    for (kind = 0; kind < NKINDS; kind++) {
+        soup s = {0};
+        bvh *b;
+        int i;
+        make_soup(&s, kind, 1000);
+        b = bvh_build(s.P, s.tri, s.ntris, 2);
+        for (i = 0; b && i < 400; i++) {
+            vec3 c = rnd_vec(-1.2f, 1.2f), h = rnd_vec(0.0f, i % 2 ? 0.05f : 0.3f);
+            vec3 lo = v3_sub(c, h), hi = v3_add(c, h);
+            box_probe q;
+            int t, any = 0;
+            q.want = (int)(rnd() * (float)s.ntris) % s.ntris, q.calls = 0;
+            for (t = 0; t < s.ntris; t++) any |= box_meets(&s, t, lo, hi);
+            bad += bvh_any_in_box(b, lo, hi, is_wanted, &q) != box_meets(&s, q.want, lo, hi);
+            q.want = -1;
+            bad += bvh_any_in_box(b, lo, hi, is_wanted, &q) || (q.calls > 0) != any;
+            found += any, queries++;
+        }
+        if (!b) bad++;
+        bvh_free(b), soup_free(&s);
+    }
+    check(bad == 0, "box_query_brute_force", "%d of %d queries differ (%d meet a triangle)", bad, 2 * queries, found);
 }
 
 int main(void)
@@ -607,6 +661,7 @@ int main(void)
     test_offset_formula();
     test_big_array();
     test_isa();
+    test_box_query();
     quality = BVH_BUILD_SPLIT;
     for (kind = 0; kind < NKINDS; kind++)
         for (i = 0; i < (int)(sizeof sizes / sizeof sizes[0]); i++)

@@ -92,4 +92,48 @@ for mode in "furnace:1:mis-power:brdf:8:32:1024:1e-3:0.01" "furnace:1:light:cosi
             "$TMP/fk_L$k.pfm" "$TMP/fkv_L$k.pfm" "$TMP/exact.pfm" "$TMP/zero.pfm" --pixel-pass 0 --block "$block" --precision "$prec" --alpha "$alpha"
     done
 done
+# A plate 0.5 mm under a lamp far from the origin (coordinates near 1000, where a float's ulp is 6e-5):
+# every point of the floor below sees the lamp only through the plate, so the image is black. A
+# shadow ray that ended just off the lamp (its offset ~1 mm there) passed between the plate and the
+# lamp: light sampling and MIS rendered 0.107, BRDF sampling 0 (found by a review, 2026-12-08).
+cat > "$TMP/shade.mtl" << 'MTL'
+newmtl floor
+Kd 0.6 0.6 0.6
+newmtl light
+Ke 8 8 8
+newmtl plate
+Kd 0.5 0.5 0.5
+MTL
+cat > "$TMP/shade.obj" << 'OBJ'
+mtllib shade.mtl
+v 999 1000 999
+v 1001 1000 999
+v 1001 1000 1001
+v 999 1000 1001
+v 999.7 1001.9 999.7
+v 1000.3 1001.9 999.7
+v 1000.3 1001.9 1000.3
+v 999.7 1001.9 1000.3
+v 999.65 1001.8995 999.65
+v 1000.35 1001.8995 999.65
+v 1000.35 1001.8995 1000.35
+v 999.65 1001.8995 1000.35
+usemtl floor
+f 1 3 2
+f 1 4 3
+usemtl light
+f 5 6 7
+f 5 7 8
+usemtl plate
+f 9 10 11
+f 9 11 12
+OBJ
+$PFMTOOL const 16 16 0 0 0 "$TMP/zero16.pfm"
+for direct in light mis-power brdf; do
+    $PATHLAB render "$TMP/shade.obj" --quiet --size 16x16 --spp 8 --direct "$direct" --eye 1000,1001.5,1000 --target 1000,1000,1000 \
+        --up 0,0,1 --fov 90 -o "$TMP/shade.pfm" 2> "$TMP/err"
+    e=$($PFMTOOL rmse "$TMP/shade.pfm" "$TMP/zero16.pfm" 2>&1 | awk '{ print $2 }')
+    if [ "$e" = "0" ]; then pass "a plate 0.5 mm under a lamp at 1000 shades the floor wholly (--direct $direct): black"
+    else fail "a plate 0.5 mm under a lamp at 1000, --direct $direct: rmse against black $e: $(err_tail "$TMP/err")"; fi
+done
 exit 0

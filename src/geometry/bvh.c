@@ -889,7 +889,8 @@ int bvh_isa_force(const char *name)
 }
 
 int bvh_intersect(const bvh *b, const ray *r, hit *h) { return b->trav->intersect(b, r, h); }
-int bvh_occluded(const bvh *b, const ray *r) { return b->trav->occluded(b, r); }
+int bvh_occluded(const bvh *b, const ray *r) { return b->trav->occluded(b, r, -1); }
+int bvh_occluded_except(const bvh *b, const ray *r, int tri) { return b->trav->occluded(b, r, tri); }
 
 bvh *bvh_build(const vec3 *P, const int *tri, int ntris, int threads)
 {
@@ -931,4 +932,38 @@ void bvh_stats(const bvh *b, int *nodes, int *leaves, int *depth)
     if (nodes) *nodes = b->nnodes;
     if (leaves) *leaves = b->nblocks;
     if (depth) *depth = b->depth;
+}
+
+/* 1 if lane i of blk (a triangle) has a box that meets [lo, hi]. */
+static int lane_box_meets(const tri_block *blk, int i, vec3 lo, vec3 hi)
+{
+    float l[3] = {lo.x, lo.y, lo.z}, h[3] = {hi.x, hi.y, hi.z};
+    int a;
+    for (a = 0; a < 3; a++) {
+        float x = blk->v[0][a][i], y = blk->v[1][a][i], z = blk->v[2][a][i];
+        float mn = x < y ? (x < z ? x : z) : (y < z ? y : z), mx = x > y ? (x > z ? x : z) : (y > z ? y : z);
+        if (mn > h[a] || mx < l[a]) return 0;
+    }
+    return 1;
+}
+
+int bvh_any_in_box(const bvh *b, vec3 lo, vec3 hi, int (*test)(void *ctx, int tri), void *ctx)
+{
+    int stack[BVH_STACK], sp = 0, ref = b->root, i;
+    if (!b->nblocks) return 0;
+    for (;;) {
+        if (ref >= 0) {
+            const wnode *n = &b->nodes[ref];
+            for (i = 0; i < BVH_WIDTH; i++)   /* an empty slot (lo +inf, hi -inf) meets nothing */
+                if (n->box[0][i] <= hi.x && n->box[3][i] >= lo.x && n->box[1][i] <= hi.y && n->box[4][i] >= lo.y &&
+                    n->box[2][i] <= hi.z && n->box[5][i] >= lo.z)
+                    stack[sp++] = n->child[i];
+        } else {
+            const tri_block *blk = &b->blocks[~ref];
+            for (i = 0; i < BVH_LEAF_MAX; i++)
+                if ((i == 0 || blk->id[i] != blk->id[i - 1]) && lane_box_meets(blk, i, lo, hi) && test(ctx, blk->id[i])) return 1;
+        }
+        if (sp == 0) return 0;
+        ref = stack[--sp];
+    }
 }

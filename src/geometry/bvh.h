@@ -23,6 +23,12 @@ void bvh_free(bvh *b);
 int bvh_intersect(const bvh *b, const ray *r, hit *h);
 /* 1 if any triangle is hit with t in (0, r->tmax). */
 int bvh_occluded(const bvh *b, const ray *r);
+/* 1 if any triangle but tri is hit with t in (0, r->tmax): a shadow ray that ends on an emitter's
+ * triangle, which its own rounding may hit or miss near t = 1 (tri < 0: bvh_occluded). */
+int bvh_occluded_except(const bvh *b, const ray *r, int tri);
+/* Calls test(ctx, t) for each triangle t whose box meets the box [lo, hi] (some more than once, in
+ * no set order) until it returns 1; returns 1 then, else 0. For what a scene checks once at load. */
+int bvh_any_in_box(const bvh *b, vec3 lo, vec3 hi, int (*test)(void *ctx, int tri), void *ctx);
 /* The bvh's ray-triangle test on one triangle (a, b, c), for reference and tests: returns 1 and
  * fills h->t, h->u, h->v (not h->tri) when the ray hits it with t in (0, r->tmax). */
 int bvh_triangle_hit(vec3 a, vec3 b, vec3 c, const ray *r, hit *h);

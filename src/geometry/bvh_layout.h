@@ -57,11 +57,11 @@
 typedef struct { float box[6][BVH_WIDTH]; int child[BVH_WIDTH]; int pad[BVH_WIDTH]; } wnode;
 typedef struct { float v[3][3][BVH_LEAF_MAX]; int id[BVH_LEAF_MAX]; } tri_block;
 
-/* One compiled copy of the traversal: its name and entry points (bvh_intersect, bvh_occluded). */
+/* One compiled copy of the traversal: its name and entry points (bvh_intersect, bvh_occluded_except). */
 typedef struct {
     const char *name;
     int (*intersect)(const struct bvh *b, const ray *r, hit *h);
-    int (*occluded)(const struct bvh *b, const ray *r);
+    int (*occluded)(const struct bvh *b, const ray *r, int except_tri);
 } bvh_traversal;
 extern const bvh_traversal bvh_traversal_base;      /* the build's own flags: SSE2 on x86-64 */
 #ifdef BVH_DISPATCH

@@ -538,7 +538,15 @@ done:
     return 1;
 }
 
-static int traverse_any(const bvh *b, const ray *r)
+/* 1 if a lane of mask holds a triangle other than except (mask not 0). */
+static inline int other_than(const tri_block *blk, unsigned mask, int except)
+{
+    for (; mask; mask &= mask - 1)
+        if (blk->id[lowest_bit(mask)] != except) return 1;
+    return 0;
+}
+
+static int traverse_any(const bvh *b, const ray *r, int except)
 {
     int stack[BVH_STACK], sp = 0, ref = b->root, i;
     float tmax = r->tmax, tcull = tmax * BVH_T_WIDEN;
@@ -576,7 +584,8 @@ static int traverse_any(const bvh *b, const ray *r)
 #endif
         } else {
             lane_hits lh;
-            if (block_hits(&b->blocks[~ref], &p, tmax, &lh)) return 1;
+            unsigned mask = block_hits(&b->blocks[~ref], &p, tmax, &lh);
+            if (mask && (except < 0 || other_than(&b->blocks[~ref], mask, except))) return 1;
         }
         if (sp == 0) return 0;
         ref = stack[--sp];

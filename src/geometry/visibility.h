@@ -24,8 +24,8 @@ typedef struct {
 int pair_visibility_build(pair_visibility *pv, const vec3 *P, const int *tri, int ntris, const int *emitter_tri, int nemitters);
 void pair_visibility_free(pair_visibility *pv);
 
-/* 1 if nothing can block a segment from triangle t to emitter e (p and s offset off their triangles
- * by offset_ray_origin, as shadow rays are). */
+/* 1 if nothing can block a segment from triangle t to emitter e (p offset off its triangle by
+ * offset_ray_origin, s on the emitter or offset off it, as shadow rays are). */
 static inline int sees_wholly(const pair_visibility *pv, int t, int e)
 {
     size_t i = (size_t)t * (size_t)pv->nemitters + (size_t)e;

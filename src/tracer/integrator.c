@@ -124,20 +124,28 @@ static vec3 sample_dir(const integrator_opts *opt, const vertex *p, const vertex
     return wi_local;
 }
 
-/* The shadow ray from just off p to just off s: no epsilon on t, the offsets keep both surfaces out.
- * None is needed when nothing can come between p's triangle and s's (a wall and the light of an
- * empty box: visibility.h). */
+/* The shadow ray from just off p to just off s (no epsilon on t: the offsets keep both surfaces out),
+ * or, when a triangle stands within that offset in front of s's emitter (a plate 0.5 mm under a lamp
+ * at coordinates near 1000, where the offset is 1 mm), to s itself, blind to s's own triangle: the
+ * plate then blocks, as it does for BRDF sampling. Found at load (scene.h, near_blocker): ending off
+ * s spares the leaf of the emitter (5 % of CornellBox-Original's time). None is needed when
+ * nothing can come between p's triangle and s's (a wall and the light of an empty box: visibility.h). */
 static int visible(const scene *sc, const vertex *p, const light_sample *s, trace_stats *st)
 {
     ray shadow;
+    int tri = sc->lights.e[s->emitter].tri;
     if (sees_wholly(&sc->wholly_seen, p->tri, s->emitter)) {
         st->shadow_rays_spared++;
         return 1;
     }
     shadow.o = offset_ray_origin(p->pos, p->ng, p->scale);
-    shadow.d = v3_sub(offset_ray_origin(s->pos, s->n, scene_triangle_scale(sc, sc->lights.e[s->emitter].tri)), shadow.o);
     shadow.tmax = 1.0f;
     st->shadow_rays++;
+    if (sc->near_blocker[s->emitter]) {
+        shadow.d = v3_sub(s->pos, shadow.o);
+        return !bvh_occluded_except(sc->accel, &shadow, tri);
+    }
+    shadow.d = v3_sub(offset_ray_origin(s->pos, s->n, scene_triangle_scale(sc, tri)), shadow.o);
     return !bvh_occluded(sc->accel, &shadow);
 }
 

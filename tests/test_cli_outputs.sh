@@ -32,6 +32,13 @@ refuse "render --variance = a --split layer of -o" "a layer of -o \(--split\) an
 cp scenes/cornell.obj scenes/cornell.mtl "$TMP/"
 refuse "render --write-view = the scene" "--write-view and the scene are the same file" $PATHLAB render "$TMP/cornell.obj" $big -o "$TMP/x.pfm" --write-view "$TMP/cornell.obj"
 refuse "render --write-view = -o's sidecar" "-o's sidecar and --write-view are the same file" $PATHLAB render $S $big -o "$TMP/x.pfm" --write-view "$TMP/x.pfm.meta"
+# the other inputs a command line names (a hostile review, 2026-12-08): --write-view over the student's
+# orbiter file or the MTL, -o or --variance over the sky image, each was written
+printf 'c 0 0 0\np 0 0 -2\nr 0 0 0\ns 1 1\n' > "$TMP/orbiter.txt"; "$PFMTOOL" const 8 4 1 1 1 "$TMP/sky.pfm"
+refuse "render --write-view = --orbiter" "--write-view and --orbiter are the same file" $PATHLAB render $S $big -o "$TMP/x.pfm" --orbiter "$TMP/orbiter.txt" --write-view "$TMP/./orbiter.txt"
+refuse "render --write-view = --mtl" "--write-view and --mtl are the same file" $PATHLAB render $S $big -o "$TMP/x.pfm" --mtl "$TMP/cornell.mtl" --write-view "$TMP/cornell.mtl"
+refuse "render -o = --sky" "-o and --sky are the same file" $PATHLAB render $S $big -o "$TMP/sky.pfm" --sky "$TMP/sky.pfm"
+refuse "render --variance = --sky" "--variance and --sky are the same file" $PATHLAB render $S $big -o "$TMP/x.pfm" --variance "$TMP/sky.pfm" --sky "$TMP/sky.pfm"
 refuse "render --sample-count in a missing folder" "^pathlab render: --sample-count $TMP/no/c.pfm" \
     $PATHLAB render $S --size 2048x2048 --target-error 0.001 -o "$TMP/x.pfm" --sample-count "$TMP/no/c.pfm"
 refuse "render --sample-count .png" "--sample-count .*c.png.*pfm" \
@@ -66,4 +73,10 @@ wait $pid; rc=$?
 left=$(cd "$TMP/set" && ls | grep -v '^b_var_L2.pfm$' | tr '\n' ' ')
 if [ "$rc" -eq 2 ] && [ -z "$left" ]; then pass "a layer that cannot be written: status 2 and none of the 20 files written"
 else fail "a layer that cannot be written: status $rc, written: $left"; fi
+# --write-view was written with the camera, before --resume's checks: a render that failed left it
+$PATHLAB render $S --quiet --size 8x8 --spp 2 -o "$TMP/rs.pfm"
+expect_status "--resume with a clashing --size, --write-view: exit 2" 2 $PATHLAB render --resume -o "$TMP/rs.pfm" --spp 4 --size 16x16 --write-view "$TMP/rs.view"
+expect_no_file "--resume refused: no view file left" "$TMP/rs.view"
+expect_status "a render with --write-view: exit 0" 0 $PATHLAB render $S --quiet --size 8x8 --spp 1 -o "$TMP/rv.pfm" --write-view "$TMP/rv.view"
+if grep -q "^size 8 8" "$TMP/rv.view" 2>/dev/null; then pass "--write-view written with the image"; else fail "--write-view: $(cat "$TMP/rv.view" 2>&1 | head -3)"; fi
 exit 0

@@ -146,4 +146,34 @@ expect_err "compare: the camera clash is named" "another camera"
 expect_no_file "compare: different cameras, no DIR" "$TMP/bad8"
 expect_status "compare: missing reference file, exit 2" 2 $C --estimators light --ref "$TMP/none.pfm" -o "$TMP/bad7"
 expect_err "compare: missing reference named" "none.pfm"
+# ---- what a hostile review of compare found (2026-12-08), each failing on the build before ----
+# an estimator's own --time rendered fewer samples than its row and sidecar said
+expect_status "compare: --time inside an estimator refused" 2 $C --spp 4 --estimators "a=--time 0.002,b=--direct brdf" -o "$TMP/bad20"
+expect_err "compare: says --time is for all" "estimator 'a': --spp and --time are set for all estimators"
+expect_no_file "compare: --time inside an estimator, no DIR" "$TMP/bad20"
+expect_status "compare: --samples inside an estimator refused" 2 $C --spp 4 --estimators "a=--samples 0:4" -o "$TMP/bad21"
+# its sidecars left out --material and --normals: --resume added Blinn samples to a diffuse render
+expect_status "compare --material diffuse --normals geometric, exit 0" 0 $C --spp 2 --ref-spp 4 --estimators light --material diffuse --normals geometric -o "$TMP/mat"
+if grep -q "^flags .*--material diffuse --normals geometric" "$TMP/mat/light.pfm.meta"; then pass "compare: the sidecar says --material and --normals"
+else fail "compare: sidecar flags: $(grep '^flags' "$TMP/mat/light.pfm.meta")"; fi
+# --ref inside -o: the estimator of its name replaced it
+mkdir -p "$TMP/cref"; $PATHLAB render $S --size 32x32 --spp 4 --quiet -o "$TMP/cref/light.pfm"; cp "$TMP/cref/light.pfm" "$TMP/ref_before.pfm"
+expect_status "compare: --ref in the output folder refused" 2 $C --spp 1 --estimators light,brdf --ref "$TMP/cref/./light.pfm" -o "$TMP/cref"
+expect_err "compare: says the reference is in the output folder" "light.pfm is in the output folder"
+if cmp -s "$TMP/cref/light.pfm" "$TMP/ref_before.pfm"; then pass "compare: the reference left whole"; else fail "compare: the reference was overwritten"; fi
+# a NaN in --ref made every RMSE nan, exit 0
+"$PFMTOOL" const 32 32 0.5 0.5 0.5 "$TMP/refnan.pfm"; printf '\x00\x00\xc0\x7f' | dd of="$TMP/refnan.pfm" bs=1 seek=$(($(stat -c %s "$TMP/refnan.pfm") - 4)) conv=notrunc 2> /dev/null
+expect_status "compare: a --ref holding a NaN refused" 2 $C --spp 1 --estimators light --ref "$TMP/refnan.pfm" -o "$TMP/bad22"
+expect_err "compare: the NaN named" "refnan.pfm: 1 pixel-channel is NaN"
+# a reference noisier than the estimators: MSE floored at 1e-30 ranked them by their times, silently
+expect_status "compare: a reference of 2 spp, exit 0" 0 $C --spp 64 --ref-spp 2 --estimators light,mis-power -o "$TMP/noisy"
+expect_err "compare: an error below the reference's noise is said" "below the reference's own variance"
+if [ "$(csv 8 1 "$TMP/noisy/table.csv")" = "nan" ]; then pass "compare: its MSE is nan, not 1e-30"; else fail "compare: MSE $(csv 8 1 "$TMP/noisy/table.csv")"; fi
+# a REF_var.pfm left from an earlier render of REF.pfm was taken for the new one's variance
+mkdir -p "$TMP/st"; $PATHLAB render $S --size 32x32 --spp 2 --quiet -o "$TMP/st/ref.pfm" --variance "$TMP/st/ref_var.pfm"
+$PATHLAB render $S --size 32x32 --spp 64 --quiet -o "$TMP/st/ref.pfm"
+expect_status "compare: a reference whose sidecar names no variance, exit 0" 0 $C --spp 4 --estimators light --ref "$TMP/st/ref.pfm" -o "$TMP/st/out"
+mse=$(csv 8 1 "$TMP/st/out/table.csv"); rmse=$(csv 5 1 "$TMP/st/out/table.csv")
+if near "$mse" "$(awk -v r="$rmse" 'BEGIN { print r * r }')" 1e-3; then pass "compare: the stale ref_var.pfm not used (MSE = RMSE^2, no noise taken off)"
+else fail "compare: the stale ref_var.pfm was used: MSE $mse, RMSE $rmse"; fi
 exit 0

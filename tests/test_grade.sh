@@ -152,6 +152,13 @@ for who in bob carol; do
 done
 if grep -q "class4/dave.pfm: PASS" "$TMP/out"; then pass "a link inside the folder: graded"; else fail "a link inside the folder: $(grep dave "$TMP/out" | head -c 300)"; fi
 if ls "$TMP/pages4" | grep -q bob; then fail "a link out of the folder: a page made for it: $(ls "$TMP/pages4")"; else pass "a link out of the folder: no page made for it"; fi
+# a REF_var.pfm left from an earlier render of REF.pfm (re-rendered without --variance) was taken for
+# the new reference's noise; its sidecar, naming none, now means none
+mkdir -p "$TMP/stale"; $PATHLAB render scenes/cornell.obj --quiet --size 16x16 --spp 2 -o "$TMP/stale/ref.pfm" --variance "$TMP/stale/ref_var.pfm"
+$PATHLAB render scenes/cornell.obj --quiet --size 16x16 --spp 16 -o "$TMP/stale/ref.pfm"
+expect_status "a stale ref_var.pfm: graded" 0 $PATHLAB grade "$TMP/stale/ref.pfm" --ref "$TMP/stale/ref.pfm"
+if grep -q "no REF_var.pfm" "$TMP/out" && ! grep -q "scatter against the reference's own noise" "$TMP/out"; then pass "a stale ref_var.pfm: not used"
+else fail "a stale ref_var.pfm: used: $(grep -E "exact pixels|scatter" "$TMP/out" | head -c 300)"; fi
 # --heatmap FOLDER with one image (a class of one): FOLDER/NAME.png (it wrote to the folder's name: exit 2)
 mkdir -p "$TMP/hm1"
 expect_status "a class of one, --heatmap FOLDER: graded (a fail), status 1" 1 $PATHLAB grade "$TMP/class1" --ref "$TMP/c.pfm" --heatmap "$TMP/hm1"

@@ -174,3 +174,46 @@ cp "$TMP/set.pfm" "$TMP/set_before.pfm"
 expect_status "a variance in a folder that does not exist: exit 2 (checked before rendering)" 2 $R --spp 4 --seed 3 -o "$TMP/set.pfm" --variance "$TMP/nofolder/v.pfm"
 same_bytes "the image of the earlier render is left whole, not replaced by a half set" "$TMP/set.pfm" "$TMP/set_before.pfm"
 if [ -z "$(ls "$TMP" | grep -E '\.pending|\.tmp')" ]; then pass "no temporary file left"; else fail "left: $(ls "$TMP" | grep -E '\.pending|\.tmp')"; fi
+
+# 10. what a hostile review of merge and --resume found (2026-12-08), each failing on the build before
+# a newline in the scene's name wrote lines of its own into the sidecar: "samples 0:1000" after 5
+mkdir -p "$TMP/nl"; cp scenes/cornell.mtl "$TMP/nl/"; NL=$'evil\nsamples 0:1000\nx.obj'; cp scenes/cornell.obj "$TMP/nl/$NL"
+$PATHLAB render "$TMP/nl/$NL" --quiet --size 8x8 --samples 0:5 -o "$TMP/nl/a.pfm"
+[ "$(meta "$TMP/nl/a.pfm" samples)" = "0:5" ] && pass "a newline in the scene's name: the sidecar keeps samples 0:5" || fail "a newline in the scene's name: samples $(meta "$TMP/nl/a.pfm" samples | tr '\n' ' ')"
+expect_status "a newline in the scene's name: --resume reloads that scene" 0 $PATHLAB render --resume -o "$TMP/nl/a.pfm" --spp 8 --quiet
+[ "$(meta "$TMP/nl/a.pfm" samples)" = "0:8" ] && pass "a newline in the scene's name: resumed to 0:8" || fail "resumed: samples $(meta "$TMP/nl/a.pfm" samples | tr '\n' ' ')"
+# a --sky path with a space could not be resumed (the flags line is split at spaces); a sky file changed
+# under the same name merged with renders of the old one
+mkdir -p "$TMP/sk"; "$PFMTOOL" const 8 4 1 1 1 "$TMP/sk/my sky.pfm"
+Q="$PATHLAB render scenes/quad-light.obj --quiet --size 8x8 --sky"
+$Q "$TMP/sk/my sky.pfm" --samples 0:2 -o "$TMP/sk/a.pfm" --variance "$TMP/sk/a_var.pfm"
+expect_status "a --sky path with a space: resumed" 0 $PATHLAB render --resume -o "$TMP/sk/a.pfm" --spp 4 --quiet
+"$PFMTOOL" const 8 4 5 5 5 "$TMP/sk/my sky.pfm"
+$Q "$TMP/sk/my sky.pfm" --samples 4:6 -o "$TMP/sk/b.pfm" --variance "$TMP/sk/b_var.pfm"
+expect_status "merge: renders of two different sky images of one name refused" 2 $PATHLAB merge "$TMP/sk/m.pfm" "$TMP/sk/a.pfm" "$TMP/sk/b.pfm"
+expect_err "merge: says the scene or its sky differ" "differ in scene .*--sky image"
+expect_status "--resume under another sky image of that name refused" 2 $PATHLAB render --resume -o "$TMP/sk/a.pfm" --spp 8 --quiet
+# merge: --variance naming the output wrote the variance there (exit 1); an output over an input's
+# variance destroyed the pieces; --split layers merged alone were relabelled "total", then merged with totals
+expect_status "merge: --variance = the output refused" 2 $PATHLAB merge "$TMP/mm.pfm" "$TMP/a.pfm" "$TMP/b.pfm" --variance "$TMP/./mm.pfm"
+expect_no_file "merge: --variance = the output: nothing written" "$TMP/mm.pfm"
+mkdir -p "$TMP/ov"; cp "$TMP"/a.pfm* "$TMP"/a_var.pfm* "$TMP"/b.pfm* "$TMP"/b_var.pfm* "$TMP/ov/"
+cp "$TMP/ov/a_var.pfm" "$TMP/ov/a_var_before.pfm"
+expect_status "merge over a piece's variance refused" 2 $PATHLAB merge "$TMP/ov/a_var.pfm" "$TMP/ov/a.pfm" "$TMP/ov/b.pfm"
+expect_err "merge over a piece's variance: says whose" "write over .*a_var.pfm, a file of the input .*a.pfm"
+same_bytes "merge over a piece's variance: the variance left whole" "$TMP/ov/a_var.pfm" "$TMP/ov/a_var_before.pfm"
+mkdir -p "$TMP/ly"
+$R --bounces 0:2 --split --samples 0:3 -o "$TMP/ly/a.pfm"; $R --bounces 0:2 --split --samples 3:6 -o "$TMP/ly/b.pfm"; $R --bounces 0:2 --samples 6:9 -o "$TMP/ly/c.pfm"
+expect_status "merge of two L1 layers" 0 $PATHLAB merge "$TMP/ly/l1.pfm" "$TMP/ly/a_L1.pfm" "$TMP/ly/b_L1.pfm"
+[ "$(meta "$TMP/ly/l1.pfm" layer)" = "L1" ] && pass "merged L1 layers stay layer L1" || fail "merged L1 layers: layer $(meta "$TMP/ly/l1.pfm" layer)"
+expect_status "merge of the merged L1 with a total refused" 2 $PATHLAB merge "$TMP/ly/x.pfm" "$TMP/ly/l1.pfm" "$TMP/ly/c.pfm"
+# 256 ranges near 2^62 need 10 kB: the samples line was cut at 8191 characters (an unreadable sidecar)
+mkdir -p "$TMP/many"; B=4611686018427380000
+$PATHLAB render scenes/cornell.obj --quiet --size 4x4 --samples $B:$((B + 1)) -o "$TMP/many/p0.pfm"
+for i in $(seq 1 219); do
+    cp "$TMP/many/p0.pfm" "$TMP/many/p$i.pfm"
+    sed "s/^samples .*/samples $((B + 2 * i)):$((B + 2 * i + 1))/; s/^spp .*/spp 1/" "$TMP/many/p0.pfm.meta" > "$TMP/many/p$i.pfm.meta"
+done
+expect_status "merge of 220 one-sample pieces near 2^62" 0 $PATHLAB merge "$TMP/many/m.pfm" "$TMP"/many/p*.pfm
+expect_status "its sidecar (a samples line of 9 kB) reads back: --resume says it has 220 spp" 0 $PATHLAB render --resume -o "$TMP/many/m.pfm" --spp 1 --quiet
+expect_err "--resume read the 220 ranges" "already has 220 spp"

@@ -218,7 +218,8 @@ static int save_render(comparison *c, const scene *s, const render_opts *ro, con
     char out[PATH_CAP], var_out[PATH_CAP];
     sidecar m;
     if (compare_out_path(out, c->dir, "", slug, ".pfm") || compare_out_path(var_out, c->dir, slug, "_var", ".pfm")) return 1;
-    render_meta_describe(&m, ro, c->base.scene, mesh_fingerprint(&s->m), &c->spec[0].a.cam.vw, pathlab_revision());
+    render_meta_describe(&m, ro, c->base.scene, render_meta_scene_id(s, &ro->sky), &c->spec[0].a.cam.vw, pathlab_revision());
+    render_meta_describe_scene(&m, &ro->io, &c->base.so);   /* --material, --normals ...: resume and merge compare them */
     m.nranges = 1;
     m.range[0][0] = ro->first;
     m.range[0][1] = ro->first + (uint64_t)ro->spp;
@@ -256,6 +257,10 @@ static int render_estimators(comparison *c, const scene *s, const compare_refere
         ro.spp = e->row.spp;
         if (compare_render_image(s, &c->cam, &ro, &e->img, &e->var, &dof, &e->row.secs)) return 1;
         compare_measure(&e->row, &e->img, ref);
+        if (isnan(e->row.mse))
+            fprintf(stderr, "pathlab compare: warning: %s: its squared error against the reference (%.4g) is below the reference's "
+                    "own variance (%.4g): its MSE and efficiency cannot be measured (nan); use a reference of more samples "
+                    "(--ref-spp, or --ref with its variance)\n", shown(sp->label), e->row.rmse * e->row.rmse, ref->mean_var);
         if (!c->base.ro.quiet) fprintf(stderr, "compare: %s: %d spp in %.3f s, RMSE %.4g\n", shown(sp->label), e->row.spp, e->row.secs, e->row.rmse);
         if (save_render(c, s, &ro, sp->slug, &e->img, &e->var, dof)) return 1;
     }
@@ -276,17 +281,43 @@ static int write_outputs(comparison *c, const compare_reference *ref)
 
 /* ---- the command ---- */
 
+/* 1 (said) if --ref or its variance lies in the folder -o, where compare writes its files (DIR/light.pfm
+ * over --ref DIR/light.pfm replaced a reference of 256 spp by a render of 4). */
+static int ref_in_output_dir(const comparison *c)
+{
+    char probe[PATH_CAP], a[PATH_CAP], b[PATH_CAP];
+    const char *in[2];
+    int k;
+    in[0] = c->ref, in[1] = c->ref_var;
+    if (snprintf(probe, sizeof probe, "%s/x", c->dir) >= (int)sizeof probe) return 0;
+    render_files_key(a, sizeof a, probe);
+    a[strlen(a) - 1] = '\0';   /* DIR's real path and a slash */
+    for (k = 0; k < 2; k++) {
+        if (!in[k]) continue;
+        render_files_key(b, sizeof b, in[k]);
+        if (!strncmp(a, b, strlen(a)) && !strchr(b + strlen(a), '/')) {
+            fprintf(stderr, "pathlab compare: %s %s is in the output folder %s, where compare writes its images: keep the "
+                    "reference in another folder\n", k ? "the reference's variance" : "--ref", shown(in[k]), shown(c->dir));
+            return 1;
+        }
+    }
+    return 0;
+}
+
 /* The procedure. 0 done, 1 a render or a write failed, 2 bad input (nothing written). */
 static int run(comparison *c)
 {
     scene s;
     compare_reference ref;
-    int rc = 2;
+    int rc = 2, i;
     memset(&ref, 0, sizeof ref);
     if (load_scene(c, &s)) return 2;
-    if (c->ref && !c->ref_var && view_find_variance(c->ref, c->ref_var_found, sizeof c->ref_var_found) == 1) c->ref_var = c->ref_var_found;
+    if (c->ref && !c->ref_var && (i = view_find_variance(c->ref, c->ref_var_found, sizeof c->ref_var_found)) != 0) {
+        if (i == 2) goto done;   /* refused, said: not a comparison without the noise it named */
+        c->ref_var = c->ref_var_found;
+    }
     /* the inputs, checked before anything is written */
-    if (make_camera(c, &s) || (c->ref && compare_read_reference(&ref, c->ref, c->ref_var, c->cam.width, c->cam.height))
+    if (ref_in_output_dir(c) || make_camera(c, &s) || (c->ref && compare_read_reference(&ref, c->ref, c->ref_var, c->cam.width, c->cam.height))
         || compare_make_dir(c->dir)) goto done;
     rc = 1;
     /* the renders: how many samples each, the reference unless given, then each estimator */
@@ -295,6 +326,8 @@ static int run(comparison *c)
     compare_reference_noise(&ref);   /* its own noise, taken off each MSE */
     if (render_estimators(c, &s, &ref)) goto done;
     if (write_outputs(c, &ref)) goto done;
+    for (i = 0; i < c->nest; i++)   /* --write-view: the camera, written last (one for all: make_camera) */
+        if (view_setup_write(&c->spec[i].a.cam, "compare", c->base.scene)) goto done;
     rc = 0;
 done:
     img_free(&ref.img);

@@ -175,10 +175,15 @@ static int apply_flags(estimator_spec *e, const flag_list *f, const render_args 
             return 1;
         }
     }
-    if (e->a.scene || e->a.out || e->a.variance || e->a.ro.split || e->a.spp_given) {
+    /* --time, --samples, --resume and adaptive sampling would change its samples under the table's
+     * and the sidecar's feet (an estimator's --time rendered a third of the spp said) */
+    if (e->a.scene || e->a.out || e->a.variance || e->a.ro.split || e->a.spp_given || e->a.ro.time_limit > 0.0 ||
+        e->a.samples_given || e->a.resume || e->a.adaptive || e->a.target_given || e->a.sample_count) {
         fprintf(stderr, "pathlab: compare: estimator '%s': %s\n", shown(e->label),
                 e->a.scene ? "a word that is neither a flag, a flag's value nor a name" :
-                e->a.spp_given ? "--spp is set for all estimators (--spp or --time of compare), not for one" :
+                e->a.spp_given || e->a.ro.time_limit > 0.0 ? "--spp and --time are set for all estimators (--spp or --time of compare), not for one" :
+                e->a.samples_given || e->a.resume ? "--samples and --resume are not for compare: each estimator renders its samples from 0" :
+                e->a.adaptive || e->a.target_given || e->a.sample_count ? "adaptive sampling is not for compare: every pixel of an estimator gets its spp" :
                 "-o, --variance and --split are not for an estimator");
         return 1;
     }

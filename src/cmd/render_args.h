@@ -42,7 +42,7 @@ int render_parse_flag(render_args *a, int argc, char **argv, int *i);
  * printing why, naming the flag. */
 int render_check_camera_flags(const render_args *a);
 /* The view: --orbiter FILE, --view FILE or else SCENE.view if it exists, then the camera flags on top,
- * then framing for what is left; the camera made of it, written to --write-view if given.
- * 0, or 1 after printing why. */
+ * then framing for what is left; the camera made of it (view_setup_write writes it to --write-view,
+ * after the images). 0, or 1 after printing why. */
 int render_make_camera(render_args *a, const scene *s, camera *cam);
 #endif

@@ -25,13 +25,28 @@ static int needs_independent(const render_args *a)
     return a->variance || a->resume || a->samples_given || a->adaptive || a->target_given;
 }
 
+/* The files a render reads that its command line names: no output may be one of them. Their count.
+ * A view file (--view, SCENE.view) may be --write-view's: it is then updated with the camera flags,
+ * a camera in the same form (an orbiter file is not: --write-view over it replaced the student's). */
+static int render_inputs(const render_args *a, render_input in[RENDER_MAX_INPUTS])
+{
+    int k = 0;
+    in[k].what = "the scene", in[k++].path = a->scene;
+    in[k].what = "--orbiter", in[k++].path = a->cam.orbiter;
+    in[k].what = "--sky", in[k++].path = a->ro.sky.kind == SKY_IMAGE ? a->ro.sky.path : NULL;
+    in[k].what = "--mtl", in[k++].path = a->so.obj.mtl;
+    return k;
+}
+
 /* What render needs beyond valid flag values: a scene, an output it can write, a last bounce for
  * --split, sample flags that go together. 0, or 1 after printing why. */
 static int check_render_args(render_args *a)
 {
+    render_input in[RENDER_MAX_INPUTS];
     if (!a->scene) { fprintf(stderr, "pathlab render: needs a scene: pathlab render SCENE.obj -o FILE\n"); return 1; }
     if (!a->out) { fprintf(stderr, "pathlab render: needs an output: -o FILE.pfm, -o FILE.ppm or -o FILE.png\n"); return 1; }
-    if (render_files_check_outputs(a->scene, a->out, a->variance, a->sample_count, a->cam.write_view, a->ro.split, a->ro.io.bmin, a->ro.io.bmax))
+    if (render_files_check_outputs(in, render_inputs(a, in), a->out, a->variance, a->sample_count,
+                                   a->cam.write_view, a->ro.split, a->ro.io.bmin, a->ro.io.bmax))
         return 1;
     if (a->ro.split && a->ro.io.bmax == BOUNCES_NO_END) {
         fprintf(stderr, "pathlab render: --split needs a last bounce, e.g. --bounces 0:8\n");
@@ -94,7 +109,7 @@ static int parse_render_args(render_args *a, render_plan *p, int argc, char **ar
 /* The sidecar of this render, its sample range aside: what must match for pieces to merge. */
 static void describe_render(const render_args *a, const render_plan *p, const scene *s, sidecar *m)
 {
-    render_meta_describe(m, &p->ro, a->scene, mesh_fingerprint(&s->m), &a->cam.vw, pathlab_revision());
+    render_meta_describe(m, &p->ro, a->scene, render_meta_scene_id(s, &p->ro.sky), &a->cam.vw, pathlab_revision());
     render_meta_describe_scene(m, &p->ro.io, &a->so);
     render_adaptive_describe(a, m);
 }
@@ -202,7 +217,8 @@ static int render_and_write(render_args *a, render_plan *p, const scene *s, cons
         if (!p->ro.quiet) fprintf(stderr, "exposure auto: %+.1f stops (the median luminance of the pixels that are not black to mid-grey)\n", a->exposure);
     }
     err = err || render_files_write_all(a->out, a->variance, a->sample_count, &ar.count, a->exposure, &m, r.mean, r.var,
-                                        r.nlayers, p->ro.io.bmin);
+                                        r.nlayers, p->ro.io.bmin)
+              || view_setup_write(&a->cam, a->cmd, a->scene);
     if (!err) report_stop(a, p, &r, &m, &ar);
     if (!err && !p->ro.quiet && !r.interrupted && !m.stopped[0]) say_written(a, p);   /* else report_stop said it */
     if (!err && r.interrupted) rc = 128 + r.interrupted;

@@ -79,6 +79,11 @@ static int push_flags(char *text, const cli_flag *t, const cli_flag *ta, const c
         char *v = f && f->kind != CLI_SWITCH ? strtok(NULL, " ") : NULL;
         int skip = !f || is_given(given, ng, f->name)
                    || (!strcmp(f->name, "--bounces") && is_given(given, ng, "--bounce"));
+        if (v && sidecar_unescape(v)) {   /* a path of --sky or --mtl, written escaped */
+            fprintf(stderr, "pathlab render: --resume: %s.meta: its flags line has a badly escaped value after %s: the "
+                    "sidecar was edited; nothing written\n", file, f->name);
+            return 2;
+        }
         if (f && !sidecar_flag(f->name)) {
             fprintf(stderr, "pathlab render: --resume: %s.meta: its flags line has %s, which a render does not write "
                     "there: the sidecar was edited; nothing written\n", file, f->name);

@@ -6,6 +6,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include "sys/output_path.h"
+#include "image/radiance.h"
 
 /* compare's own files, DIR/NAME.*, which no estimator may write over. */
 static const char *const RESERVED[] = {"reference", "mosaic", "table", "index", NULL};
@@ -65,12 +66,14 @@ int compare_read_reference(compare_reference *ref, const char *path, const char 
 {
     image *img = &ref->img, *var = &ref->var;
     if (img_read_pfm(img, path)) return 1;
+    /* a NaN made every RMSE nan, a negative variance an error below zero: each is said, and stops */
+    if (img_check_radiance(img, path, 4)) return 1;
     if (img->w != w || img->h != h) {
         fprintf(stderr, "pathlab: compare: the reference %s is %dx%d but the renders are %dx%d (use --size %dx%d, or another reference)\n",
                 shown(path), img->w, img->h, w, h, img->w, img->h);
         return 1;
     }
-    if (var_path && img_read_pfm(var, var_path)) return 1;
+    if (var_path && (img_read_pfm(var, var_path) || img_check_radiance(var, var_path, 4))) return 1;
     if (var_path && (var->w != w || var->h != h)) {
         fprintf(stderr, "pathlab: compare: --ref-var %s is %dx%d but the reference is %dx%d\n", shown(var_path), var->w, var->h, w, h);
         return 1;

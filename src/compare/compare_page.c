@@ -26,7 +26,7 @@ static int put_table(FILE *f, const compare_page *p)
         fputs("</td><td><code>", f);
         err |= html_put_escaped(f, r->flags);
         fprintf(f, "</code></td><td>%d</td><td>%.3f</td><td>%.4g</td><td>%.4g</td><td>%.4g</td><td>%.4g</td><td>%.4g</td><td>%.3f</td></tr>\n",
-                r->spp, r->secs, r->rmse, r->relmse, r->mae, r->mse, r->eff, best > 0.0 ? r->eff / best : 0.0);
+                r->spp, r->secs, r->rmse, r->relmse, r->mae, r->mse, r->eff, best > 0.0 ? r->eff / best : NAN);
     }
     fputs("</table>\n", f);
     return err;

@@ -1,5 +1,6 @@
 /* compare_report.c — the table of pathlab compare in three forms (see compare_report.h). */
 #include "compare/compare_report.h"
+#include <math.h>
 #include <errno.h>
 #include <string.h>
 #include "sys/output_path.h"
@@ -27,7 +28,7 @@ void compare_print_table(FILE *f, const compare_row *rows, int n)
     for (i = 0; i < n; i++) {
         const compare_row *r = &rows[i];
         fprintf(f, "%-*s  %-*s %7d %8.3f %10.4g %10.4g %10.4g %10.4g %11.4g %6.3f\n", wl, r->label, wf, r->flags,
-                r->spp, r->secs, r->rmse, r->relmse, r->mae, r->mse, r->eff, best > 0.0 ? r->eff / best : 0.0);
+                r->spp, r->secs, r->rmse, r->relmse, r->mae, r->mse, r->eff, best > 0.0 ? r->eff / best : NAN);
     }
 }
 
@@ -40,7 +41,7 @@ static void print_md(FILE *f, const compare_row *rows, int n, const char *notes)
     for (i = 0; i < n; i++) {
         const compare_row *r = &rows[i];
         fprintf(f, "| %s | `%s` | %d | %.3f | %.4g | %.4g | %.4g | %.4g | %.4g | %.3f |\n", r->label, r->flags,
-                r->spp, r->secs, r->rmse, r->relmse, r->mae, r->mse, r->eff, best > 0.0 ? r->eff / best : 0.0);
+                r->spp, r->secs, r->rmse, r->relmse, r->mae, r->mse, r->eff, best > 0.0 ? r->eff / best : NAN);
     }
     fprintf(f, "\nNotes:\n\n%s", notes);
 }
@@ -67,7 +68,7 @@ static void print_csv(FILE *f, const compare_row *rows, int n)
         fputc(',', f);
         csv_field(f, r->flags);
         fprintf(f, ",%d,%.6f,%.9g,%.9g,%.9g,%.9g,%.9g,%.6f\n", r->spp, r->secs, r->rmse, r->relmse, r->mae, r->mse,
-                r->eff, best > 0.0 ? r->eff / best : 0.0);
+                r->eff, best > 0.0 ? r->eff / best : NAN);
     }
 }
 

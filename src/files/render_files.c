@@ -20,11 +20,11 @@ void render_files_layer_path(char *dst, size_t cap, const char *out, int k)
     snprintf(dst, cap, "%.*s_L%d%s", (int)(strlen(out) - strlen(e)), out, k, e);
 }
 
-static int same_files(const char *scene, const char *out, const char *var_out, const char *count_out, const char *view_out,
-                      int split, int bmin, int bmax);
+static int same_files(const render_input *inputs, int ninputs, const char *out, const char *var_out, const char *count_out,
+                      const char *view_out, int split, int bmin, int bmax);
 
-int render_files_check_outputs(const char *scene, const char *out, const char *var_out, const char *count_out, const char *view_out,
-                               int split, int bmin, int bmax)
+int render_files_check_outputs(const render_input *inputs, int ninputs, const char *out, const char *var_out, const char *count_out,
+                               const char *view_out, int split, int bmin, int bmax)
 {
     char layer[PATH_CAP];
     int k;
@@ -43,7 +43,7 @@ int render_files_check_outputs(const char *scene, const char *out, const char *v
     if (var_out && output_path_check("render", "--variance", var_out, IMG_PFM_EXTENSION)) return 1;
     if (count_out && output_path_check("render", "--sample-count", count_out, NULL)) return 1;   /* .pfm: render_adaptive_check */
     if (view_out && output_path_check("render", "--write-view", view_out, NULL)) return 1;
-    return same_files(scene, out, var_out, count_out, view_out, split, bmin, bmax);
+    return same_files(inputs, ninputs, out, var_out, count_out, view_out, split, bmin, bmax);
 }
 
 static const char *base_name(const char *p)
@@ -60,7 +60,7 @@ static void folder_of(char *dst, size_t cap, const char *p)
 
 /* A file's name as its folder's real path and its own name, so that two spellings of one file
  * (o/a.pfm, ./o/a.pfm, o/../o/a.pfm) give one key; a folder that does not resolve is kept as written. */
-static void file_key(char *dst, size_t cap, const char *path)
+void render_files_key(char *dst, size_t cap, const char *path)
 {
     char dir[PATH_CAP], *real = scene_file_folder(path);
     int n;
@@ -70,8 +70,8 @@ static void file_key(char *dst, size_t cap, const char *path)
     free(real);
 }
 
-/* The files a render writes (and its scene, read), by what names them: NULL where not given. */
-#define OUTPUT_NAMES 8
+/* The files a render writes (and those it reads), by what names them: NULL where not given. */
+#define OUTPUT_NAMES (7 + RENDER_MAX_INPUTS)
 typedef struct { const char *what[OUTPUT_NAMES]; char key[OUTPUT_NAMES][PATH_CAP]; int n; } output_names;
 
 static void add_name(output_names *o, const char *what, const char *path, const char *suffix)
@@ -80,7 +80,7 @@ static void add_name(output_names *o, const char *what, const char *path, const 
     if (!path) return;
     snprintf(name, sizeof name, "%s%s", path, suffix);
     o->what[o->n] = what;
-    file_key(o->key[o->n++], PATH_CAP, name);
+    render_files_key(o->key[o->n++], PATH_CAP, name);
 }
 
 /* 1 (said) if the file of key is one of o's, other than o's own entry skip. */
@@ -96,30 +96,45 @@ static int clash(const output_names *o, int skip, const char *what, const char *
     return 0;
 }
 
-/* No two of the files a render writes are one file, whatever their spelling, and none is the scene:
+/* 1 (said) if o's entry i (an output) is the file of an entry before it (an input, the first nin, or
+ * an output), named output first. */
+static int clash_before(const output_names *o, int i, int nin)
+{
+    int k;
+    for (k = 0; k < i; k++)
+        if (!strcmp(o->key[k], o->key[i])) {
+            fprintf(stderr, "pathlab render: %s and %s are the same file (%s): give each its own name\n", o->what[k < nin ? i : k],
+                    o->what[k < nin ? k : i], shown(o->key[i]));
+            return 1;
+        }
+    return 0;
+}
+
+/* No two of the files a render writes are one file, whatever their spelling, and none is an input:
  * -o, --variance, --sample-count, their sidecars, --write-view, and with --split every layer of -o
  * and of --variance with its sidecar (a layer named as the variance was written, then overwritten). */
-static int same_files(const char *scene, const char *out, const char *var_out, const char *count_out, const char *view_out,
-                      int split, int bmin, int bmax)
+static int same_files(const render_input *inputs, int ninputs, const char *out, const char *var_out, const char *count_out,
+                      const char *view_out, int split, int bmin, int bmax)
 {
-    static output_names o;   /* 35 kB: not on the stack */
+    static output_names o;   /* 60 kB: not on the stack */
     char layer[PATH_CAP], key[PATH_CAP];
-    int i, k, v;
+    int i, k, v, nin;
     o.n = 0;
-    add_name(&o, "the scene", scene, "");
+    for (i = 0; i < ninputs && i < RENDER_MAX_INPUTS; i++) add_name(&o, inputs[i].what, inputs[i].path, "");
+    nin = o.n;
     add_name(&o, "-o", out, ""); add_name(&o, "-o's sidecar", out, ".meta");
     add_name(&o, "--variance", var_out, ""); add_name(&o, "--variance's sidecar", var_out, ".meta");
     add_name(&o, "--sample-count", count_out, ""); add_name(&o, "--sample-count's sidecar", count_out, ".meta");
     add_name(&o, "--write-view", view_out, "");
-    for (i = 1; i < o.n; i++)
-        if (clash(&o, i, o.what[i], o.key[i])) return 1;
+    for (i = nin; i < o.n; i++)   /* each output against the inputs and the outputs before it */
+        if (clash_before(&o, i, nin)) return 1;
     for (k = bmin; split && bmax != BOUNCES_NO_END && k <= bmax; k++)
         for (v = 0; v < 4; v++) {
             const char *base = v < 2 ? out : var_out;
             if (!base) continue;
             render_files_layer_path(layer, sizeof layer, base, k);
             if (v % 2) strncat(layer, ".meta", sizeof layer - strlen(layer) - 1);
-            file_key(key, sizeof key, layer);
+            render_files_key(key, sizeof key, layer);
             if (clash(&o, -1, v < 2 ? "a layer of -o (--split)" : "a layer of --variance (--split)", key)) return 1;
         }
     return 0;
@@ -260,7 +275,8 @@ int render_files_write_all(const char *out, const char *var_out, const char *cou
     else m.sample_count[0] = '\0';
     for (i = 0; i < nlayers && !err; i++) {
         int k = render_bounce_of_layer(i, bmin);
-        if (i == 0) snprintf(path, sizeof path, "%s", out), snprintf(m.layer, sizeof m.layer, "total");
+        /* the total, or a --split layer merged alone (merge keeps its name: it must not pass for a total) */
+        if (i == 0) snprintf(path, sizeof path, "%s", out), snprintf(m.layer, sizeof m.layer, "%s", meta->layer[0] ? meta->layer : "total");
         else render_files_layer_path(path, sizeof path, out, k), snprintf(m.layer, sizeof m.layer, "L%d", k);
         if (var_out && i == 0) snprintf(vpath, sizeof vpath, "%s", var_out);
         else if (var_out) render_files_layer_path(vpath, sizeof vpath, var_out, k);
@@ -317,7 +333,7 @@ static int same_render(const char *cmd, const char *path, const sidecar *m, cons
  * pixel is read that it is w x h (0: the size of the camera line). */
 static int check_one(const char *cmd, const char *path, const char *kind, const sidecar *of, sidecar *m, int w, int h)
 {
-    char a[8192], b[8192];
+    char a[SIDECAR_RANGES_TEXT], b[SIDECAR_RANGES_TEXT];
     img_pfm_info info;
     int rc = sidecar_read(m, path);
     if (rc < 0) fprintf(stderr, "pathlab %s: %s has no sidecar %s.meta: it was not written by pathlab render "

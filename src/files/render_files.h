@@ -13,14 +13,22 @@ typedef struct {
     image *mean, *var;  /* [nlayers]; var == NULL when the variance was not read */
 } render_files;
 
+/* A file a render reads, named on its command line (or beside its scene): what names it, its path
+ * (NULL: none). */
+typedef struct { const char *what, *path; } render_input;
+#define RENDER_MAX_INPUTS 6
 /* Every file a render will write, checked before any work: -o out, --variance var_out, --sample-count
  * count_out, --write-view view_out (each NULL if not given) and with split the layers of bounces
  * bmin .. bmax beside out and var_out (none if bmax is BOUNCES_NO_END: render refuses that): the
  * folder exists and can be written, the extension is known, no two are the same file (whatever
- * their spelling) and none is the scene. 0, or 1
- * after printing why ("pathlab render: ..."). */
-int render_files_check_outputs(const char *scene, const char *out, const char *var_out, const char *count_out, const char *view_out,
-                               int split, int bmin, int bmax);
+ * their spelling) and none is one of the ninputs inputs (the scene, its view or orbiter file, the
+ * sky, the MTL: --write-view over the orbiter file replaced the student's camera). 0, or 1 after
+ * printing why ("pathlab render: ..."). */
+int render_files_check_outputs(const render_input *inputs, int ninputs, const char *out, const char *var_out, const char *count_out,
+                               const char *view_out, int split, int bmin, int bmax);
+/* One key per file whatever its spelling (o/a.pfm, ./o/a.pfm, o/../o/a.pfm): its folder's real path and
+ * its name (a folder that does not resolve kept as written). */
+void render_files_key(char *dst, size_t cap, const char *path);
 /* out.pfm, layer k -> out_Lk.pfm */
 void render_files_layer_path(char *dst, size_t cap, const char *out, int k);
 /* The variance file that the sidecar of image_path names (name), into dst[cap]: an input, resolved

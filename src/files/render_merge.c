@@ -6,6 +6,7 @@
 #include "files/render_files.h"
 #include "image/radiance.h"
 #include "stats/combine.h"
+#include "sys/output_path.h"
 #include "tracer/integrator.h"
 #include <inttypes.h>
 #include <stdio.h>
@@ -119,6 +120,55 @@ static int add_inputs(const input *in, int n, int nlayers, int with_var, combine
     return 0;
 }
 
+/* The files of a render at path (NULL: none): the image and, with the layers of m, its layers, each
+ * with its sidecar; keys (render_files_key) appended to keys[*n] (room for cap). */
+static void render_keys(char (*keys)[PATH_CAP], int *n, int cap, const char *path, const sidecar *m)
+{
+    char name[PATH_CAP];
+    int k;
+    for (k = -1; path && k < (m->layers_n > 0 ? m->layers_n : 0); k++) {
+        if (k < 0) snprintf(name, sizeof name, "%s", path);
+        else render_files_layer_path(name, sizeof name, path, m->layers_first + k);
+        if (*n + 2 > cap) return;
+        render_files_key(keys[(*n)++], PATH_CAP, name);
+        strncat(name, ".meta", sizeof name - strlen(name) - 1);
+        render_files_key(keys[(*n)++], PATH_CAP, name);
+    }
+}
+
+/* 1 (said) if a file the merge writes (the image, its variance, their layers and sidecars) is another
+ * of them (--variance the output) or a file of an input (its variance, a layer: merging over
+ * p0_var.pfm destroyed the pieces). */
+static int writes_over_inputs(const char *out, const char *var_out, const input *in, int n, const sidecar *all)
+{
+    enum { CAP = 4 * (2 + BOUNCES_CAP) };
+    static char outs[CAP][PATH_CAP], ins[CAP][PATH_CAP];   /* 300 kB: not on the stack */
+    char var[PATH_CAP];
+    int no = 0, ni, i, j, k;
+    render_keys(outs, &no, CAP, out, all);
+    render_keys(outs, &no, CAP, var_out, all);
+    for (i = 0; i < no; i++)
+        for (j = 0; j < i; j++)
+            if (!strcmp(outs[i], outs[j])) {
+                fprintf(stderr, "pathlab merge: the output and --variance write the same file %s: give each its own name\n", shown(outs[i]));
+                return 1;
+            }
+    for (k = 0; k < n; k++) {
+        ni = 0;
+        render_keys(ins, &ni, CAP, in[k].path, &in[k].meta);
+        if (in[k].meta.variance[0] && !render_files_variance_path(var, sizeof var, in[k].path, in[k].meta.variance))
+            render_keys(ins, &ni, CAP, var, &in[k].meta);
+        for (i = 0; i < no; i++)
+            for (j = 0; j < ni; j++)
+                if (!strcmp(outs[i], ins[j])) {
+                    fprintf(stderr, "pathlab merge: it would write over %s, a file of the input %s: write the merge to a new file\n",
+                            shown(outs[i]), shown(in[k].path));
+                    return 1;
+                }
+    }
+    return 0;
+}
+
 /* Combines the inputs and writes OUT (and its layers and variances) with the merged sidecar. */
 static int merge_inputs(const char *out, const char *var_out, input *in, int n)
 {
@@ -126,7 +176,7 @@ static int merge_inputs(const char *out, const char *var_out, input *in, int n)
     sidecar all;
     combine_acc acc[2 + BOUNCES_CAP];   /* the total and L0 .. L_BOUNCES_CAP */
     int k, nlayers, err = 0;
-    if (check_inputs(in, n, &all)) return 2;
+    if (check_inputs(in, n, &all) || writes_over_inputs(out, var_out, in, n, &all)) return 2;
     if (render_files_read(&first, in[0].path, var_out != NULL, "merge")) return 2;   /* the size and the layers */
     nlayers = common_layers(in, n) ? first.nlayers : 1;
     for (k = 0; k < nlayers && !err; k++) err = combine_init(&acc[k], 3 * (size_t)first.mean[0].w * (size_t)first.mean[0].h);
@@ -137,7 +187,7 @@ static int merge_inputs(const char *out, const char *var_out, input *in, int n)
     if (nlayers == 1) all.layers_n = 0;
     if (!err && render_files_write(out, var_out, 0.0f, &all, first.mean, first.var, nlayers, first.bmin)) err = 1;
     if (!err) {
-        char ranges[8192];
+        char ranges[SIDECAR_RANGES_TEXT];
         sidecar_ranges_text(&all, ranges, sizeof ranges);
         fprintf(stderr, "pathlab merge: %d renders, samples %s (%" PRId64 " spp) -> %s%s%s\n", n, ranges, sidecar_spp(&all), out,
                 var_out ? " and " : "", var_out ? var_out : "");

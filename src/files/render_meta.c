@@ -11,7 +11,20 @@ static void describe_sky(char *flags, size_t cap, const sky_spec *sky)
     if (sky->kind == SKY_CONSTANT)
         snprintf(flags + n, cap - n, " --sky %.9g,%.9g,%.9g", sky->rgb.x, sky->rgb.y, sky->rgb.z);
     else if (sky->kind == SKY_IMAGE)
-        snprintf(flags + n, cap - n, " --sky %s", sky->path);
+    {
+        char path[SIDECAR_TEXT];
+        sidecar_escape(path, sizeof path, sky->path, 1);
+        snprintf(flags + n, cap - n, " --sky %s", path);
+    }
+}
+
+uint64_t render_meta_scene_id(const scene *s, const sky_spec *sky)
+{
+    uint64_t h = mesh_fingerprint(&s->m);
+    if (sky->kind != SKY_IMAGE || !s->sky.L) return h;   /* a constant sky is in the flags line */
+    h = fingerprint_bytes(h, &s->sky.w, sizeof s->sky.w);
+    h = fingerprint_bytes(h, &s->sky.h, sizeof s->sky.h);
+    return fingerprint_bytes(h, s->sky.L, 3 * sizeof(float) * (size_t)s->sky.w * (size_t)s->sky.h);
 }
 
 void render_meta_describe(sidecar *m, const render_opts *o, const char *scene_path, uint64_t scene_id, const view *v,
@@ -54,7 +67,11 @@ void render_meta_describe_scene(sidecar *m, const integrator_opts *io, const sce
         n += (size_t)snprintf(m->flags + n, sizeof m->flags - n, " --texture-filter %s", TEXTURE_FILTER_NAMES[io->filter]);
     if (n < sizeof m->flags && so->obj.decode != TEXTURE_RAW)
         n += (size_t)snprintf(m->flags + n, sizeof m->flags - n, " --texture-decode %s", TEXTURE_DECODE_NAMES[so->obj.decode]);
-    if (n < sizeof m->flags && so->obj.mtl) snprintf(m->flags + n, sizeof m->flags - n, " --mtl %s", so->obj.mtl);
+    if (n < sizeof m->flags && so->obj.mtl) {
+        char path[SIDECAR_TEXT];
+        sidecar_escape(path, sizeof path, so->obj.mtl, 1);
+        snprintf(m->flags + n, sizeof m->flags - n, " --mtl %.*s", (int)(sizeof m->flags - n), path);
+    }
 }
 
 void render_meta_describe_adaptive(sidecar *m, const adaptive_opts *ao, int target_given, double time_limit)

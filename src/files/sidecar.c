@@ -32,22 +32,54 @@ void sidecar_ranges_text(const sidecar *m, char *dst, size_t cap)
         len += (size_t)snprintf(dst + len, cap - len, "%s%" PRId64 ":%" PRId64, i ? "," : "", m->range[i][0], m->range[i][1]);
 }
 
+void sidecar_escape(char *dst, size_t cap, const char *src, int spaces)
+{
+    size_t n = 0;
+    for (; *src; src++) {
+        unsigned char c = (unsigned char)*src;
+        int plain = c >= 0x20 && c != 0x7f && c != '\\' && !(spaces && c == ' ');
+        if (n + (plain ? 1 : 4) >= cap) break;
+        if (plain) dst[n++] = (char)c;
+        else n += (size_t)sprintf(dst + n, "\\x%02x", c);
+    }
+    if (cap) dst[n] = '\0';
+}
+
+static int hex_digit(char c) { return c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1; }
+
+int sidecar_unescape(char *s)
+{
+    char *w = s;
+    for (; *s; s++) {
+        if (*s != '\\') { *w++ = *s; continue; }
+        if (s[1] != 'x' || hex_digit(s[2]) < 0 || hex_digit(s[3]) < 0) return 1;
+        *w++ = (char)(hex_digit(s[2]) * 16 + hex_digit(s[3]));
+        s += 3;
+    }
+    *w = '\0';
+    return 0;
+}
+
 int sidecar_write_to(const sidecar *m, const char *image_path, const char *path)
 {
-    char tmp[PATH_CAP], ranges[8192];
+    char tmp[PATH_CAP], ranges[SIDECAR_RANGES_TEXT], name[4 * PATH_CAP], scene[4 * SIDECAR_TEXT], variance[4 * SIDECAR_TEXT], count[4 * SIDECAR_TEXT];
     FILE *f;
     if (!(f = textfile_open(path, tmp, sizeof tmp))) return 1;
     sidecar_ranges_text(m, ranges, sizeof ranges);
-    fprintf(f, "# pathlab: what made %s (read by pathlab merge, render --resume and grade)\n", image_path);
+    sidecar_escape(name, sizeof name, image_path, 0);
+    sidecar_escape(scene, sizeof scene, m->scene, 0);
+    sidecar_escape(variance, sizeof variance, m->variance, 0);
+    sidecar_escape(count, sizeof count, m->sample_count, 0);
+    fprintf(f, "# pathlab: what made %s (read by pathlab merge, render --resume and grade)\n", name);
     fprintf(f, "kind %s\nlayer %s\nsamples %s\n", m->kind, m->layer, ranges);
     if (m->adaptive[0])   /* the range is of the pixel with the most samples: its width is no spp */
         fprintf(f, "spp adaptive: per pixel, mean %.6g, at most %" PRId64 "\nspp-mean %.9g\nspp-cap %" PRId64 "\nadaptive %s\n"
                    "pilot-seed %" PRIu64 "\n", m->spp_mean, m->spp_cap, m->spp_mean, m->spp_cap, m->adaptive, m->pilot_seed);
     else fprintf(f, "spp %" PRId64 "\n", sidecar_spp(m));
-    if (m->sample_count[0]) fprintf(f, "sample-count %s\n", m->sample_count);
+    if (m->sample_count[0]) fprintf(f, "sample-count %s\n", count);
     fprintf(f, "seed %" PRIu64 "\n", m->seed);
-    fprintf(f, "scene %s\nscene-id %s\nflags %s\ncamera %s\n", m->scene, m->scene_id, m->flags, m->camera);
-    if (m->variance[0]) fprintf(f, "variance %s\n", m->variance);
+    fprintf(f, "scene %s\nscene-id %s\nflags %s\ncamera %s\n", scene, m->scene_id, m->flags, m->camera);
+    if (m->variance[0]) fprintf(f, "variance %s\n", variance);
     if (m->layers_n > 0) fprintf(f, "layers %d:%d\n", m->layers_first, m->layers_first + m->layers_n - 1);
     if (m->stopped[0]) fprintf(f, "stopped %s\n", m->stopped);
     if (m->sampler[0]) fprintf(f, "sampler %s\n", m->sampler);
@@ -112,6 +144,13 @@ static int set_text(char *dst, size_t cap, const char *v)
     return 0;
 }
 
+/* The same for a name, written escaped (sidecar_escape); 1 if it does not fit or is badly escaped. */
+static int set_name(char *dst, size_t cap, const char *v)
+{
+    char name[4 * SIDECAR_TEXT];
+    return set_text(name, sizeof name, v) || sidecar_unescape(name) || set_text(dst, cap, name);
+}
+
 /* One "key value" line; 0, or 1 if the value is malformed (unknown keys are skipped). */
 static int parse_line(sidecar *m, const char *key, const char *v)
 {
@@ -120,16 +159,16 @@ static int parse_line(sidecar *m, const char *key, const char *v)
     if (!strcmp(key, "layer")) return set_text(m->layer, sizeof m->layer, v);
     if (!strcmp(key, "samples")) return parse_ranges(m, v);
     if (!strcmp(key, "seed")) return parse_u64(&m->seed, v);
-    if (!strcmp(key, "scene")) return set_text(m->scene, sizeof m->scene, v);
+    if (!strcmp(key, "scene")) return set_name(m->scene, sizeof m->scene, v);
     if (!strcmp(key, "scene-id")) return set_text(m->scene_id, sizeof m->scene_id, v);
     if (!strcmp(key, "flags")) return set_text(m->flags, sizeof m->flags, v);
     if (!strcmp(key, "camera")) return set_text(m->camera, sizeof m->camera, v);
-    if (!strcmp(key, "variance")) return set_text(m->variance, sizeof m->variance, v);
+    if (!strcmp(key, "variance")) return set_name(m->variance, sizeof m->variance, v);
     if (!strcmp(key, "layers")) return parse_layers(m, v);
     if (!strcmp(key, "revision")) return set_text(m->revision, sizeof m->revision, v);
     if (!strcmp(key, "stopped")) return set_text(m->stopped, sizeof m->stopped, v);
     if (!strcmp(key, "adaptive")) return set_text(m->adaptive, sizeof m->adaptive, v);
-    if (!strcmp(key, "sample-count")) return set_text(m->sample_count, sizeof m->sample_count, v);
+    if (!strcmp(key, "sample-count")) return set_name(m->sample_count, sizeof m->sample_count, v);
     if (!strcmp(key, "spp-mean")) {
         m->spp_mean = strtod(v, &end);
         return end == v || *end != '\0' ? 1 : !(m->spp_mean >= 0.0 && m->spp_mean <= (double)SIDECAR_SPP_MAX) ? 4 : 0;
@@ -165,7 +204,7 @@ static int split_line(char *line, char **key, char **value)
 
 int sidecar_read(sidecar *m, const char *image_path)
 {
-    char path[PATH_CAP], line[4 * SIDECAR_TEXT + 8192], *key, *value;
+    char path[PATH_CAP], line[4 * SIDECAR_TEXT + SIDECAR_RANGES_TEXT], *key, *value;
     int lineno = 0, err = 0;
     FILE *f;
     memset(m, 0, sizeof *m);
@@ -230,7 +269,7 @@ int sidecar_check_same(const sidecar *a, const sidecar *b, const char *cmd, cons
     }
     if (strcmp(a->kind, b->kind)) return differ(cmd, a_name, b_name, "kind", a->kind, b->kind);
     if (strcmp(a->layer, b->layer)) return differ(cmd, a_name, b_name, "layer", a->layer, b->layer);
-    if (strcmp(a->scene_id, b->scene_id)) return differ(cmd, a_name, b_name, "scene (its triangles or materials)", a->scene, b->scene);
+    if (strcmp(a->scene_id, b->scene_id)) return differ(cmd, a_name, b_name, "scene (its triangles, materials, textures or --sky image)", a->scene, b->scene);
     if (strcmp(a->flags, b->flags)) return differ(cmd, a_name, b_name, "flags", a->flags, b->flags);
     if (strcmp(a->sampler, b->sampler))
         return differ(cmd, a_name, b_name, "sampler", a->sampler[0] ? a->sampler : "independent", b->sampler[0] ? b->sampler : "independent");

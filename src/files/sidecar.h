@@ -16,6 +16,8 @@
 
 #define SIDECAR_MAX_RANGES 256
 #define SIDECAR_TEXT 1024
+/* Room for the samples line's text: 256 ranges of two 19-digit indices (a line of 8192 cut them) */
+#define SIDECAR_RANGES_TEXT (SIDECAR_MAX_RANGES * 42)
 /* The bounds of a sidecar's numbers, those of the command line: a sample index at most 2^62 (as
  * --samples), a count of samples (the adaptive cap, its mean) at most 2^30 (as --spp), so that no sum
  * of them overflows. A sidecar beyond them is refused as malformed. */
@@ -46,6 +48,13 @@ typedef struct {
     int variance_dof;              /* degrees of freedom of the variance of the mean: 0 (no line) many */
 } sidecar;
 
+/* A name written in a sidecar: each control character and backslash (and each space with spaces:
+ * a path inside the flags line, which is split at its spaces) as \xNN, so that no name writes a
+ * line or a word of its own (a newline in a scene's name forged a samples line). Cut at cap, never
+ * inside an escape. */
+void sidecar_escape(char *dst, size_t cap, const char *src, int spaces);
+/* Undoes sidecar_escape in place; 1 if s holds a backslash not followed by xNN. */
+int sidecar_unescape(char *s);
 /* FILE -> FILE.meta */
 void sidecar_path(char *dst, size_t cap, const char *image_path);
 /* Writes the sidecar of image_path into the file `file` (a temporary name, renamed later with the

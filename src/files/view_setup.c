@@ -56,13 +56,15 @@ static int base_view(view_setup *v, const char *cmd, const char *scene_path)
 
 /* --write-view FILE: the view the camera was made of, written atomically: a half-written file would
  * read back as another camera without a word */
-static int write_view(const view_setup *v, const char *cmd, const char *scene_path)
+int view_setup_write(const view_setup *v, const char *cmd, const char *scene_path)
 {
     char tmp[PATH_CAP];
-    FILE *f = textfile_open(v->write_view, tmp, sizeof tmp);
-    if (!f) return 1;
-    fprintf(f, "# the camera of pathlab %s %s%s%s: read it back with --view\n", cmd, scene_path,
-            v->orbiter ? " --orbiter " : "", v->orbiter ? v->orbiter : "");
+    FILE *f;
+    if (!v->write_view) return 0;
+    if (!(f = textfile_open(v->write_view, tmp, sizeof tmp))) return 1;
+    /* the names escaped: a newline in one would start a line of keys */
+    fprintf(f, "# the camera of pathlab %s %s%s%s: read it back with --view\n", cmd, shown(scene_path),
+            v->orbiter ? " --orbiter " : "", v->orbiter ? shown(v->orbiter) : "");
     view_print(f, &v->vw);
     return textfile_close(f, tmp, v->write_view);
 }
@@ -100,6 +102,5 @@ int view_setup_camera(view_setup *v, const char *cmd, const char *scene_path, co
     if (v->size) { v->vw.width = v->flags.width; v->vw.height = v->flags.height; v->vw.line_size = 0; }
     mesh_framing_bounds(m, &lo, &hi);   /* a large floor is not framed: it would make the object tiny */
     view_frame_bounds(&v->vw, lo, hi);
-    if (camera_init(cam, &v->vw)) return 1;
-    return v->write_view ? write_view(v, cmd, scene_path) : 0;
+    return camera_init(cam, &v->vw) != 0;
 }

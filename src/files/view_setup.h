@@ -17,7 +17,9 @@ typedef struct {
  * --eye equal to --target, --up along the view): checked before the scene loads. 0, or 1 after
  * printing "pathlab CMD: ..." naming the flag. */
 int view_setup_check(const view_setup *v, const char *cmd);
-/* v->vw and the camera *cam made of it for the scene at scene_path of mesh m, written to --write-view
- * if given. 0, or 1 after printing why. */
+/* v->vw and the camera *cam made of it for the scene at scene_path of mesh m. 0, or 1 after printing why. */
 int view_setup_camera(view_setup *v, const char *cmd, const char *scene_path, const mesh *m, camera *cam);
+/* Writes v->vw to --write-view (nothing if not given), once the render's images are written (a render
+ * that fails leaves no view file behind). 0, or 1 after printing why. */
+int view_setup_write(const view_setup *v, const char *cmd, const char *scene_path);
 #endif

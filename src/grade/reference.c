@@ -8,14 +8,15 @@
 #include "grade/grade_class.h"
 #include "util/path.h"
 
-/* The variance: --var, else STEM_var.pfm beside the reference, else the one its sidecar names. 0 or 2. */
+/* The variance: --var, else the one the reference's sidecar names (confined and checked: a sidecar
+ * naming none means none, so that a REF_var.pfm left from an earlier render of REF.pfm is not taken
+ * for the new one's), else, without a sidecar, STEM_var.pfm beside the reference. 0 or 2. */
 static int read_variance(grade_reference *R, const char *path, const char *var, size_t stem)
 {
     int rc = -1;
     snprintf(R->var_found, sizeof R->var_found, "%.*s_var.pfm", (int)stem, path);
-    if (!var && !path_is_readable(R->var_found) && R->has_meta)   /* the variance its sidecar names, confined and checked */
-        if ((rc = render_files_named_variance(R->var_found, sizeof R->var_found, path, &R->meta, "grade")) > 0) return 2;
-    R->var_path = var ? var : (rc == 0 || path_is_readable(R->var_found) ? R->var_found : NULL);
+    if (!var && R->has_meta && (rc = render_files_named_variance(R->var_found, sizeof R->var_found, path, &R->meta, "grade")) > 0) return 2;
+    R->var_path = var ? var : rc == 0 || (!R->has_meta && path_is_readable(R->var_found)) ? R->var_found : NULL;
     if (!R->var_path) return 0;
     if (img_read_pfm(&R->var, R->var_path)) return 2;
     if (R->var.w != R->ref.w || R->var.h != R->ref.h) {

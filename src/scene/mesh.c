@@ -65,7 +65,7 @@ void mesh_framing_bounds(const mesh *m, vec3 *lo, vec3 *hi)
     if (objects && v3_length(v3_sub(ohi, olo)) <= quarter) *lo = olo, *hi = ohi;
 }
 
-static uint64_t fnv1a(uint64_t h, const void *data, size_t n)
+uint64_t fingerprint_bytes(uint64_t h, const void *data, size_t n)
 {
     const unsigned char *p = data;
     size_t i;
@@ -78,14 +78,14 @@ static uint64_t mesh_fingerprint_more(const mesh *m, uint64_t h)
 {
     int i;
     for (i = 0; m->tri_n && i < 3 * m->ntris; i++)
-        if (m->tri_n[i] >= 0) h = fnv1a(h, &m->N[m->tri_n[i]], sizeof(vec3));
+        if (m->tri_n[i] >= 0) h = fingerprint_bytes(h, &m->N[m->tri_n[i]], sizeof(vec3));
     for (i = 0; m->tri_t && i < 3 * m->ntris; i++)
-        if (m->tri_t[i] >= 0) h = fnv1a(h, &m->T[2 * m->tri_t[i]], 2 * sizeof(float));
+        if (m->tri_t[i] >= 0) h = fingerprint_bytes(h, &m->T[2 * m->tri_t[i]], 2 * sizeof(float));
     for (i = 0; i < m->ntextures; i++) {
         const texture *t = &m->textures[i];
-        h = fnv1a(h, t->rgb, 3 * (size_t)t->w * (size_t)t->h * sizeof(float));
-        h = fnv1a(h, &t->w, sizeof t->w);
-        h = fnv1a(h, &t->h, sizeof t->h);
+        h = fingerprint_bytes(h, t->rgb, 3 * (size_t)t->w * (size_t)t->h * sizeof(float));
+        h = fingerprint_bytes(h, &t->w, sizeof t->w);
+        h = fingerprint_bytes(h, &t->h, sizeof t->h);
     }
     return h;
 }
@@ -95,20 +95,20 @@ uint64_t mesh_fingerprint(const mesh *m)
     uint64_t h = 0xCBF29CE484222325ULL;
     int i, k;
     for (i = 0; i < m->ntris; i++) {
-        for (k = 0; k < 3; k++) h = fnv1a(h, &m->P[m->tri[3 * i + k]], sizeof(vec3));
-        h = fnv1a(h, &m->tri_mat[i], sizeof(int));
+        for (k = 0; k < 3; k++) h = fingerprint_bytes(h, &m->P[m->tri[3 * i + k]], sizeof(vec3));
+        h = fingerprint_bytes(h, &m->tri_mat[i], sizeof(int));
     }
     for (i = 0; i < m->nmats; i++) {
         const material *t = &m->mats[i];
-        h = fnv1a(h, &t->Kd, sizeof t->Kd);
-        h = fnv1a(h, &t->Ks, sizeof t->Ks);
-        h = fnv1a(h, &t->Ke, sizeof t->Ke);
-        h = fnv1a(h, &t->Ns, sizeof t->Ns);
+        h = fingerprint_bytes(h, &t->Kd, sizeof t->Kd);
+        h = fingerprint_bytes(h, &t->Ks, sizeof t->Ks);
+        h = fingerprint_bytes(h, &t->Ke, sizeof t->Ke);
+        h = fingerprint_bytes(h, &t->Ns, sizeof t->Ns);
         /* what is new since the first sidecars only when present: their scenes keep their ids */
         if (t->tex_Kd || t->tex_Ks || t->tex_Ke) {
-            h = fnv1a(h, &t->tex_Kd, sizeof(int));
-            h = fnv1a(h, &t->tex_Ks, sizeof(int));
-            h = fnv1a(h, &t->tex_Ke, sizeof(int));
+            h = fingerprint_bytes(h, &t->tex_Kd, sizeof(int));
+            h = fingerprint_bytes(h, &t->tex_Ks, sizeof(int));
+            h = fingerprint_bytes(h, &t->tex_Ke, sizeof(int));
         }
     }
     return mesh_fingerprint_more(m, h);

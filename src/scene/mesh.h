@@ -6,6 +6,7 @@
 #define PATHLAB_MESH_H
 #include "math/vec.h"
 #include "scene/texture.h"
+#include <stddef.h>
 #include <stdint.h>
 
 /* The course's BRDF: f = Kd/pi + Ks (Ns+8)/(8 pi) cos^Ns(theta_h); Ke is emitted radiance. A map
@@ -45,6 +46,8 @@ void mesh_free(mesh *m);
 /* A 64-bit fingerprint (FNV-1a) of what is rendered: vertices, triangles, materials. Two renders
  * merge only if their scenes have the same; comments, names and unused vertices don't count. */
 uint64_t mesh_fingerprint(const mesh *m);
+/* h (a fingerprint so far) followed by n bytes of data: FNV-1a, 64 bits. */
+uint64_t fingerprint_bytes(uint64_t h, const void *data, size_t n);
 /* Bounds of the vertices used by triangles. */
 void mesh_bounds(const mesh *m, vec3 *lo, vec3 *hi);
 /* What the camera frames when no view gives the eye and target: the bounds of the scene, but not

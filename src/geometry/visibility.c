@@ -26,6 +26,7 @@
  * bit for bit: tests/test_visibility_render.sh). */
 #include "geometry/visibility.h"
 #include "math/dvec.h"
+#include "geometry/ray.h"
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -216,4 +217,39 @@ void pair_visibility_free(pair_visibility *pv)
     free(pv->bits);
     pv->bits = NULL;
     pv->npairs = 0;
+}
+
+/* ---- near_blockers_find ---- */
+typedef struct { const vec3 *P; const int *tri; int self; vec3 a, n; double size; } slab_query;
+
+/* 1 if triangle t has a corner in front of q's emitter's plane beyond the rounding of points in it. */
+static int in_front(void *ctx, int t)
+{
+    const slab_query *q = ctx;
+    double most = -1.0;
+    int k;
+    if (t == q->self) return 0;
+    for (k = 0; k < 3; k++) {
+        vec3 r = v3_sub(q->P[q->tri[3 * t + k]], q->a);
+        double h = (double)q->n.x * r.x + (double)q->n.y * r.y + (double)q->n.z * r.z;
+        most = h > most ? h : most;
+    }
+    return most > q->size * 0x1p-20;
+}
+
+void near_blockers_find(unsigned char *near, const bvh *b, const vec3 *P, const int *tri, const int *emitter_tri, int nemitters)
+{
+    int e;
+    for (e = 0; e < nemitters; e++) {
+        const int *c = tri + 3 * emitter_tri[e];
+        vec3 A = P[c[0]], B = P[c[1]], C = P[c[2]];
+        float d = 2.0f * v3_length(v3_sub(offset_ray_origin(A, v3(1, 0, 0), triangle_scale(A, B, C)), A));
+        vec3 lo = v3(fminf(A.x, fminf(B.x, C.x)) - d, fminf(A.y, fminf(B.y, C.y)) - d, fminf(A.z, fminf(B.z, C.z)) - d);
+        vec3 hi = v3(fmaxf(A.x, fmaxf(B.x, C.x)) + d, fmaxf(A.y, fmaxf(B.y, C.y)) + d, fmaxf(A.z, fmaxf(B.z, C.z)) + d);
+        slab_query q;
+        q.P = P, q.tri = tri, q.self = emitter_tri[e], q.a = A;
+        q.n = v3_normalize(v3_cross(v3_sub(B, A), v3_sub(C, A)));
+        q.size = v3_length(v3_sub(B, A)) + v3_length(v3_sub(C, A));
+        near[e] = (unsigned char)bvh_any_in_box(b, lo, hi, in_front, &q);
+    }
 }

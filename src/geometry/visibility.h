@@ -6,6 +6,7 @@
  * VISIBILITY_MAX_TRIS triangles (others get no table, and every shadow ray). */
 #ifndef PATHLAB_VISIBILITY_H
 #define PATHLAB_VISIBILITY_H
+#include "geometry/bvh.h"
 #include "math/vec.h"
 #include <stddef.h>
 
@@ -23,6 +24,13 @@ typedef struct {
  * 1 when out of memory. */
 int pair_visibility_build(pair_visibility *pv, const vec3 *P, const int *tri, int ntris, const int *emitter_tri, int nemitters);
 void pair_visibility_free(pair_visibility *pv);
+
+/* near[e] = 1 for each emitter e (triangle emitter_tri[e]) that another triangle of the bvh b may
+ * stand in front of within twice the offset offset_ray_origin gives its points: a shadow ray ending
+ * just off such an emitter would pass between them (a plate 0.5 mm under a lamp at coordinates near
+ * 1000, where the offset is 1 mm). Conservative: by the triangles' boxes, and any corner in front
+ * of the emitter's plane by more than 2^-20 of its size (its neighbours in its plane do not count). */
+void near_blockers_find(unsigned char *near, const bvh *b, const vec3 *P, const int *tri, const int *emitter_tri, int nemitters);
 
 /* 1 if nothing can block a segment from triangle t to emitter e (p offset off its triangle by
  * offset_ray_origin, s on the emitter or offset off it, as shadow rays are). */

@@ -45,54 +45,17 @@ static void warn_energy(const mesh *m, brdf_model model, int quiet)
     fprintf(stderr, "; --material diffuse ignores Ks\n");
 }
 
-/* The pairs of sc->wholly_seen (visibility.h), for the emitters' triangles; 0 on success. */
+/* The pairs of sc->wholly_seen and sc->near_blocker (visibility.h), for the emitters' triangles; 0 on success. */
 static int wholly_seen_pairs(scene *sc)
 {
     int *emitter_tri = malloc(sizeof(int) * (size_t)(sc->lights.n > 0 ? sc->lights.n : 1)), i, fails;
-    if (!emitter_tri) return 1;
+    sc->near_blocker = calloc((size_t)(sc->lights.n > 0 ? sc->lights.n : 1), 1);
+    if (!emitter_tri || !sc->near_blocker) { free(emitter_tri); return 1; }
     for (i = 0; i < sc->lights.n; i++) emitter_tri[i] = sc->lights.e[i].tri;
     fails = pair_visibility_build(&sc->wholly_seen, sc->m.P, sc->m.tri, sc->m.ntris, emitter_tri, sc->lights.n);
+    near_blockers_find(sc->near_blocker, sc->accel, sc->m.P, sc->m.tri, emitter_tri, sc->lights.n);
     free(emitter_tri);
     return fails;
-}
-
-/* A triangle that may stand within an emitter's end offset: in front of its plane, by more than the
- * rounding of points in the plane (2^-20 of the emitter's size: its neighbours in a lamp of two). */
-typedef struct { const scene *sc; const emitter *e; int tri; } slab_query;
-
-static int in_front(void *ctx, int t)
-{
-    const slab_query *q = ctx;
-    const int *c = q->sc->m.tri + 3 * t;
-    double size = v3_length(q->e->e1) + v3_length(q->e->e2), most = -1.0;
-    int k;
-    if (t == q->tri) return 0;
-    for (k = 0; k < 3; k++) {
-        vec3 r = v3_sub(q->sc->m.P[c[k]], q->e->a);
-        double h = (double)q->e->n.x * r.x + (double)q->e->n.y * r.y + (double)q->e->n.z * r.z;
-        most = h > most ? h : most;
-    }
-    return most > size * 0x1p-20;
-}
-
-/* sc->near_blocker: for each emitter, whether a triangle may stand within the offset a shadow ray
- * ending just off it would leave (visible() in integrator.c); 0 on success. */
-static int find_near_blockers(scene *sc)
-{
-    int i;
-    sc->near_blocker = calloc((size_t)(sc->lights.n > 0 ? sc->lights.n : 1), 1);
-    if (!sc->near_blocker) return 1;
-    for (i = 0; i < sc->lights.n; i++) {
-        const emitter *e = &sc->lights.e[i];
-        vec3 b = v3_add(e->a, e->e1), c = v3_add(e->a, e->e2);
-        float d = 2.0f * v3_length(v3_sub(offset_ray_origin(e->a, e->n, scene_triangle_scale(sc, e->tri)), e->a));
-        vec3 lo = v3(fminf(e->a.x, fminf(b.x, c.x)) - d, fminf(e->a.y, fminf(b.y, c.y)) - d, fminf(e->a.z, fminf(b.z, c.z)) - d);
-        vec3 hi = v3(fmaxf(e->a.x, fmaxf(b.x, c.x)) + d, fmaxf(e->a.y, fmaxf(b.y, c.y)) + d, fmaxf(e->a.z, fmaxf(b.z, c.z)) + d);
-        slab_query q;
-        q.sc = sc, q.e = e, q.tri = e->tri;
-        sc->near_blocker[i] = (unsigned char)bvh_any_in_box(sc->accel, lo, hi, in_front, &q);
-    }
-    return 0;
 }
 
 int scene_load(scene *sc, const char *path, const scene_opts *so, int threads, int quiet)
@@ -122,7 +85,7 @@ int scene_load(scene *sc, const char *path, const scene_opts *so, int threads, i
         return 1;
     }
     t0 = clock_seconds();
-    if (wholly_seen_pairs(sc) || find_near_blockers(sc)) {
+    if (wholly_seen_pairs(sc)) {
         fprintf(stderr, "%s: out of memory finding the triangles that see a light wholly\n", shown(path));
         scene_free(sc);
         return 1;

@@ -176,4 +176,15 @@ expect_status "compare: a reference whose sidecar names no variance, exit 0" 0 $
 mse=$(csv 8 1 "$TMP/st/out/table.csv"); rmse=$(csv 5 1 "$TMP/st/out/table.csv")
 if near "$mse" "$(awk -v r="$rmse" 'BEGIN { print r * r }')" 1e-3; then pass "compare: the stale ref_var.pfm not used (MSE = RMSE^2, no noise taken off)"
 else fail "compare: the stale ref_var.pfm was used: MSE $mse, RMSE $rmse"; fi
+# an output name that is a folder was found after the renders (files written); a dangling link as -o too
+mkdir -p "$TMP/late/index.html"
+expect_status "compare: DIR/index.html a folder: refused before rendering" 2 $C --spp 1 --estimators light,brdf -o "$TMP/late"
+expect_err "compare: DIR/index.html named" "late/index.html"
+if [ -z "$(ls "$TMP/late" | grep -v index.html)" ]; then pass "compare: DIR/index.html a folder: nothing written"; else fail "compare: written: $(ls "$TMP/late")"; fi
+ln -s "$TMP/nowhere" "$TMP/dangling"
+expect_status "compare: -o a dangling link refused" 2 $C --spp 1 --estimators light -o "$TMP/dangling"
+# a label holding | or a newline made columns or rows of table.md
+expect_status "compare: labels with | and a newline, exit 0" 0 $C --spp 1 --ref-spp 2 --estimators $'a|b=--direct light,c\nd=--direct brdf' -o "$TMP/lab"
+if [ "$(grep -c '^| ' "$TMP/lab/table.md")" -eq 3 ] && ! grep -q 'a|b' "$TMP/lab/table.md"; then pass "compare: table.md keeps one row per estimator, the | as text"
+else fail "compare: table.md: $(grep '^|' "$TMP/lab/table.md" | head -5)"; fi
 exit 0

@@ -68,4 +68,19 @@ expect_status "compare --orbiter: runs" 0 $PATHLAB compare scenes/cornell.obj --
     --orbiter "$ORB" -o "$TMP/cmp"
 if [ "$(size "$TMP/cmp/light.pfm")" = "48 32" ]; then pass "compare --orbiter: the f line's size"
 else fail "compare --orbiter: light.pfm is '$(size "$TMP/cmp/light.pfm")'"; fi
+
+# 7. (a hostile review, 2026-12-08) an f line beyond a view file's bounds is refused with its line, not
+# later by the camera without a file; a SCENE.view beside a student's scene that is a link out of its
+# folder is not read (a teacher's view file was used silently)
+printf 'c 278 273 280\np 0 0\nr 0 180\ns 1080 1080\nf 0.001 16 16\n' > "$TMP/tinyfov.txt"
+expect_status "an f line with a fov of 0.001 degree: exit 2" 2 $R --orbiter "$TMP/tinyfov.txt" -o "$TMP/x.pfm"
+expect_err "an f line with a fov of 0.001 degree: the file and line named" "tinyfov.txt:5: expected 'f fov width height"
+printf 'c 278 273 280\np 0 0\nr 0 180\ns 1080 1080\nf 40 65536 65536\n' > "$TMP/huge.txt"
+expect_status "an f line of 65536x65536 pixels: exit 2" 2 $R --orbiter "$TMP/huge.txt" -o "$TMP/x.pfm"
+expect_err "an f line of 65536x65536 pixels: the file and line named" "huge.txt:5: expected 'f fov width height"
+mkdir -p "$TMP/stu" "$TMP/teacher"; cp scenes/cornell.obj scenes/cornell.mtl "$TMP/stu/"
+printf 'eye 0 0 0\ntarget 0 0 1\nup 0 1 0\nfov 40\nsize 8 8\n' > "$TMP/teacher/secret.view"; ln -s ../teacher/secret.view "$TMP/stu/cornell.view"
+expect_status "a SCENE.view linked out of the scene's folder: exit 2" 2 $PATHLAB render "$TMP/stu/cornell.obj" --quiet --spp 1 -o "$TMP/x.pfm"
+expect_err "a SCENE.view linked out: said" "cornell.view: a symbolic link leading out of its folder"
+expect_no_file "a SCENE.view linked out: no image" "$TMP/x.pfm"
 exit 0

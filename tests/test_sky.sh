@@ -155,3 +155,8 @@ expect_status "--sky of a PFM holding a NaN: status 2" 2 $PATHLAB render "$TMP/p
 expect_err "--sky NaN: the file and pixel named" "nan.pfm: pixel \(0, 0\)"
 if grep -q -- "--sky $TMP/sky.hdr" "$TMP/h1.pfm.meta"; then
     pass "the sidecar's flags record --sky"; else fail "the sidecar does not record --sky: $(grep flags "$TMP/h1.pfm.meta")"; fi
+# a black sky is no sky, and the warning said "no --sky" when one was given (a review, 2026-12-08)
+"$PFMTOOL" const 8 4 0 0 0 "$TMP/black_sky.pfm"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' > "$TMP/nolight.obj"
+expect_status "a black --sky over a scene without emitters: renders (black)" 0 $PATHLAB render "$TMP/nolight.obj" --sky "$TMP/black_sky.pfm" --size 8x8 --spp 1 -o "$TMP/bs.pfm"
+expect_err "a black --sky: the warning says the sky is black" "the --sky given is black"

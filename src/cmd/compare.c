@@ -21,6 +21,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include "compare/compare_files.h"
 #include "compare/compare_outputs.h"
 #include "compare/compare_render.h"
@@ -163,7 +164,9 @@ static int load_scene(const comparison *c, scene *s)
 {
     if (scene_load(s, c->base.scene, &c->base.so, c->base.ro.threads, 1)) return 1;
     if (scene_add_sky(s, &c->base.ro.sky)) { scene_free(s); return 1; }
-    if (!scene_has_light(s)) fprintf(stderr, "pathlab: warning: %s has no emitters and no --sky: every image is black\n", shown(c->base.scene));
+    if (!scene_has_light(s))
+        fprintf(stderr, "pathlab: warning: %s has no emitters and %s: every image is black\n", shown(c->base.scene),
+                c->base.ro.sky.kind == SKY_NONE ? "no --sky" : "the --sky given is black (every pixel 0)");
     return 0;
 }
 
@@ -281,6 +284,32 @@ static int write_outputs(comparison *c, const compare_reference *ref)
 
 /* ---- the command ---- */
 
+/* Every file compare writes in DIR, checked before any render (a folder named DIR/index.html or
+ * DIR/brdf.pfm was found after the renders, 22 files written): 0, or 1 after printing why. */
+static int check_outputs(const comparison *c)
+{
+    static const char *const shared[] = {"mosaic.ppm", "mosaic.png", "table.md", "table.csv", "index.html",
+                                         "reference.pfm", "reference.pfm.meta", "reference_var.pfm", "reference_var.pfm.meta", NULL};
+    static const char *const each[] = {"%s/%s.pfm", "%s/%s.pfm.meta", "%s/%s_var.pfm", "%s/%s_var.pfm.meta", "%s/%s.png",
+                                       "%s/heat-%s.png", NULL};
+    char path[PATH_CAP];
+    struct stat st;
+    int i, k;
+    if (lstat(c->dir, &st) != 0) return 0;   /* not there yet: made empty, nothing in the way */
+    if (stat(c->dir, &st) != 0 || !S_ISDIR(st.st_mode)) {   /* a file, or a dangling link given as -o */
+        fprintf(stderr, "pathlab compare: -o %s: not a folder\n", shown(c->dir));
+        return 1;
+    }
+    for (k = 0; shared[k]; k++)
+        if (snprintf(path, sizeof path, "%s/%s", c->dir, shared[k]) >= (int)sizeof path || output_path_check("compare", "-o", path, NULL))
+            return 1;
+    for (i = 0; i < c->nest; i++)
+        for (k = 0; each[k]; k++)
+            if (snprintf(path, sizeof path, each[k], c->dir, c->spec[i].slug) >= (int)sizeof path || output_path_check("compare", "-o", path, NULL))
+                return 1;
+    return 0;
+}
+
 /* 1 (said) if --ref or its variance lies in the folder -o, where compare writes its files (DIR/light.pfm
  * over --ref DIR/light.pfm replaced a reference of 256 spp by a render of 4). */
 static int ref_in_output_dir(const comparison *c)
@@ -318,7 +347,7 @@ static int run(comparison *c)
     }
     /* the inputs, checked before anything is written */
     if (ref_in_output_dir(c) || make_camera(c, &s) || (c->ref && compare_read_reference(&ref, c->ref, c->ref_var, c->cam.width, c->cam.height))
-        || compare_make_dir(c->dir)) goto done;
+        || check_outputs(c) || compare_make_dir(c->dir)) goto done;
     rc = 1;
     /* the renders: how many samples each, the reference unless given, then each estimator */
     if (c->ref && isnan(c->base.exposure)) c->base.exposure = img_auto_exposure(&ref.img);   /* --exposure auto */

@@ -252,7 +252,8 @@ int render_main(int argc, char **argv)
     }
     if (render_make_camera(&a, &s, &cam)) { scene_free(&s); return 2; }
     if (!scene_has_light(&s))
-        fprintf(stderr, "pathlab render: warning: %s has no emitters (no material with Ke > 0) and no --sky: the image is black\n", shown(a.scene));
+        fprintf(stderr, "pathlab render: warning: %s has no emitters (no material with Ke > 0) and %s: the image is black\n", shown(a.scene),
+                a.ro.sky.kind == SKY_NONE ? "no --sky" : "the --sky given is black (every pixel 0)");
     rc = render_and_write(&a, &p, &s, &cam);
     scene_free(&s);
     return rc;

@@ -5,6 +5,8 @@
 #include <string.h>
 #include "sys/output_path.h"
 #include "util/textfile.h"
+#include "util/report_text.h"
+#include "sys/shown.h"
 
 double compare_best_eff(const compare_row *rows, int n)
 {
@@ -19,15 +21,15 @@ void compare_print_table(FILE *f, const compare_row *rows, int n)
 {
     double best = compare_best_eff(rows, n);
     int i, wl = 9, wf = 5;
-    for (i = 0; i < n; i++) {
-        if ((int)strlen(rows[i].label) > wl) wl = (int)strlen(rows[i].label);
-        if ((int)strlen(rows[i].flags) > wf) wf = (int)strlen(rows[i].flags);
+    for (i = 0; i < n; i++) {   /* labels and flags are the user's: shown escaped (a newline broke a row) */
+        if ((int)strlen(shown(rows[i].label)) > wl) wl = (int)strlen(shown(rows[i].label));
+        if ((int)strlen(shown(rows[i].flags)) > wf) wf = (int)strlen(shown(rows[i].flags));
     }
     fprintf(f, "%-*s  %-*s %7s %8s %10s %10s %10s %10s %11s %6s\n", wl, "estimator", wf, "flags", "spp", "time(s)",
             "RMSE", "relMSE", "MAE", "MSE", "efficiency", "ratio");
     for (i = 0; i < n; i++) {
         const compare_row *r = &rows[i];
-        fprintf(f, "%-*s  %-*s %7d %8.3f %10.4g %10.4g %10.4g %10.4g %11.4g %6.3f\n", wl, r->label, wf, r->flags,
+        fprintf(f, "%-*s  %-*s %7d %8.3f %10.4g %10.4g %10.4g %10.4g %11.4g %6.3f\n", wl, shown(r->label), wf, shown(r->flags),
                 r->spp, r->secs, r->rmse, r->relmse, r->mae, r->mse, r->eff, best > 0.0 ? r->eff / best : NAN);
     }
 }
@@ -40,13 +42,17 @@ static void print_md(FILE *f, const compare_row *rows, int n, const char *notes)
                "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (i = 0; i < n; i++) {
         const compare_row *r = &rows[i];
-        fprintf(f, "| %s | `%s` | %d | %.3f | %.4g | %.4g | %.4g | %.4g | %.4g | %.3f |\n", r->label, r->flags,
+        fputs("| ", f);   /* the label and flags as text: a | or a newline in a label made columns or rows */
+        md_put_text(f, r->label);
+        fputs(" | ", f);
+        md_put_text(f, r->flags);
+        fprintf(f, " | %d | %.3f | %.4g | %.4g | %.4g | %.4g | %.4g | %.3f |\n",
                 r->spp, r->secs, r->rmse, r->relmse, r->mae, r->mse, r->eff, best > 0.0 ? r->eff / best : NAN);
     }
     fprintf(f, "\nNotes:\n\n%s", notes);
 }
 
-/* A CSV field in quotes, its quotes doubled. */
+/* A CSV field in quotes, its quotes doubled (RFC 4180: a line break inside stays in the field). */
 static void csv_field(FILE *f, const char *s)
 {
     fputc('"', f);

@@ -46,7 +46,12 @@ static int base_view(view_setup *v, const char *cmd, const char *scene_path)
         memcpy(path, scene_path, n);
         strcpy(path + n, ".view");
         if (!stat(path, &st) && !S_ISREG(st.st_mode)) {   /* found beside a student's scene: a FIFO there reads as empty */
-            fprintf(stderr, "%s: cannot open: %s\n", path, input_file_why(S_ISDIR(st.st_mode) ? EISDIR : ENODEV));
+            fprintf(stderr, "%s: cannot open: %s\n", shown(path), input_file_why(S_ISDIR(st.st_mode) ? EISDIR : ENODEV));
+            return 1;
+        }
+        if (input_file_link_out(path)) {   /* confined to the scene's folder, as its MTL and textures are */
+            fprintf(stderr, "%s: %s (the view file beside a scene must lie in its folder; give another with --view)\n", shown(path),
+                    input_file_link_out(path));
             return 1;
         }
         if (view_read(&v->vw, path) > 0) return 1;

@@ -135,8 +135,9 @@ int grade_read_image(image *img, grade_row *row, const grade_refs *refs, const c
     img->w = img->h = 0;
     img->px = NULL;
     if (link_out) {   /* a student's link to the reference, to another's image or to the grader's files */
-        snprintf(row->mistake, sizeof row->mistake, "%s", link_out);
-        fprintf(stderr, "pathlab grade: %s: %s\n", shown(row->path), link_out);
+        snprintf(row->mistake, sizeof row->mistake, "%s (a planted link could show any file of the grader's in the class's "
+                 "pages); copy the image in instead", link_out);
+        fprintf(stderr, "pathlab grade: %s: %s\n", shown(row->path), row->mistake);
         return row->status = 2;
     }
     /* the header first: a file claiming gigabytes of the wrong kind or size is refused unread (an .hdr

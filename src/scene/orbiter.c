@@ -2,6 +2,7 @@
 #include "scene/orbiter.h"
 #include "sys/shown.h"
 #include "sys/input_file.h"
+#include "scene/camera.h"
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -10,7 +11,7 @@
 #define ORBITER_KEYS "cprsf"
 /* what each key's line holds, for messages */
 static const char *const KEY_FORM[] = {"c cx cy cz (the centre)", "p px py (the pan)", "r rx ry (the rotation, degrees)",
-                                       "s size radius (the distance, > 0, and the scene radius)", "f fov width height (vertical fov in degrees, under 180; whole pixels)"};
+                                       "s size radius (the distance, > 0, and the scene radius)", "f fov width height (vertical fov in degrees, 0.01 to under 180; whole pixels, at most 1e9 in all)"};
 
 /* The largest size of a number: the camera is made of floats (FLT_MAX is about 3.4e38), and the
  * eye, c + M (px, py, size), adds up to three of them. */
@@ -49,8 +50,9 @@ static int store_key(orbiter *o, int k, const double *v, int n)
         o->size = v[0];
         o->radius = n == 2 ? v[1] : v[0];
         return 0;
-    default:  /* gKit writes width and height with %f: 1024.000000 */
-        if (n != 3 || !(v[0] > 0.0 && v[0] < 180.0) || !whole(v[1]) || !whole(v[2])) return 1;
+    default:  /* gKit writes width and height with %f: 1024.000000; the bounds are a view file's
+               * (camera.h), said here with this file's line rather than by the camera later */
+        if (n != 3 || !(v[0] >= VIEW_FOV_MIN && v[0] < 180.0) || !whole(v[1]) || !whole(v[2]) || v[1] * v[2] > VIEW_PIXELS_MAX) return 1;
         o->fov = v[0];
         o->width = (int)v[1];
         o->height = (int)v[2];

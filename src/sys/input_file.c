@@ -91,6 +91,5 @@ const char *input_file_link_out(const char *path)
     if (lstat(path, &st) != 0 || !S_ISLNK(st.st_mode)) return NULL;
     why = input_file_beside(dst, sizeof dst, path, slash ? slash + 1 : path);
     if (!why || errno == ENOENT) return NULL;   /* a dangling link: unreadable, said as any missing file */
-    return "a symbolic link leading out of its folder: not read (a planted link could show any file of the "
-           "grader's in the class's pages); copy the image in instead";
+    return "a symbolic link leading out of its folder: not read";
 }

@@ -141,7 +141,7 @@ static int visible(const scene *sc, const vertex *p, const light_sample *s, trac
     shadow.o = offset_ray_origin(p->pos, p->ng, p->scale);
     shadow.tmax = 1.0f;
     st->shadow_rays++;
-    if (sc->near_blocker[s->emitter]) {
+    if (!sc->near_blocker || sc->near_blocker[s->emitter]) {
         shadow.d = v3_sub(s->pos, shadow.o);
         return !bvh_occluded_except(sc->accel, &shadow, tri);
     }

@@ -32,7 +32,8 @@ typedef struct {
     light_set lights;
     pair_visibility wholly_seen;   /* (triangle, emitter) pairs no shadow ray between can be blocked */
     unsigned char *near_blocker;   /* per emitter: 1 if a triangle stands (or may) within a shadow
-                                      ray's end offset of it, in front: its shadow rays end on it */
+                                      ray's end offset of it, in front: its shadow rays end on it
+                                      (NULL, in a scene made by hand: every emitter) */
     sky sky;         /* the light from infinitely far away; none (w = 0) without --sky */
     double sky_prob; /* the probability that light sampling chooses the sky (the rest: an emitter) */
     float emitter_prob;   /* 1 - sky_prob, rounded once */

@@ -21,7 +21,9 @@
     "\"solid angle=--direct light --light solid-angle\". Flags outside --estimators apply to all; an estimator's\n" \
     "own flags win. Without --ref the reference is rendered with --direct mis-power --light solid-angle\n" \
     "--dir brdf at 16x the largest spp (--ref-spp M) into DIR/reference.pfm; the reference's variance (its own,\n" \
-    "--ref-var, or found as render names it: REF_var.pfm or its sidecar's) is taken off each MSE. --scale S: the heatmaps' white (default 3x the largest RMSE).\n"
+    "--ref-var, or the one its sidecar names; REF_var.pfm beside a REF.pfm without a sidecar) is taken off each MSE\n" \
+    "(an MSE below it is nan: use a reference of more samples). --ref must not be in DIR. --scale S: the heatmaps'\n" \
+    "white (default 3x the largest RMSE).\n"
 /* argv[0] is "compare". Exit status: 0 done, 1 a render or a write failed, 2 bad input. */
 int compare_main(int argc, char **argv);
 #endif

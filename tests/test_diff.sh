@@ -38,6 +38,8 @@ expect_err "diff: a .pfm heatmap: use .png or .ppm" "^pathlab diff: --heatmap .*
 expect_no_file "diff: no .pfm heatmap written" "$TMP/h.pfm"
 expect_no_file "diff: no heatmap of an unknown format" "$TMP/h.jpg"
 if [ ! -s "$TMP/out" ]; then pass "diff: bad arguments, no metrics printed"; else fail "diff: printed metrics before refusing the heatmap"; fi
+expect_status "diff: --scale -1 refused (it was taken for 0), status 2" 2 $PATHLAB diff "$TMP/a.pfm" "$TMP/b.pfm" --scale -1
+expect_err "diff: --scale -1 named" "^pathlab diff: --scale expects a number >= 0"
 expect_status "diff: bad --scale, status 2" 2 $PATHLAB diff "$TMP/a.pfm" "$TMP/b.pfm" --scale big
 expect_err "diff: bad --scale named" "^pathlab diff: --scale expects a number, got 'big'"
 expect_status "diff: unknown flag, status 2" 2 $PATHLAB diff "$TMP/a.pfm" "$TMP/b.pfm" --colour

@@ -217,3 +217,8 @@ done
 expect_status "merge of 220 one-sample pieces near 2^62" 0 $PATHLAB merge "$TMP/many/m.pfm" "$TMP"/many/p*.pfm
 expect_status "its sidecar (a samples line of 9 kB) reads back: --resume says it has 220 spp" 0 $PATHLAB render --resume -o "$TMP/many/m.pfm" --spp 1 --quiet
 expect_err "--resume read the 220 ranges" "already has 220 spp"
+# a malformed sidecar stops --resume at its line (a second message, "needs a scene", followed it)
+$R --spp 2 -o "$TMP/bad_meta.pfm"; sed -i 's/^seed .*/seed -1/' "$TMP/bad_meta.pfm.meta"
+expect_status "--resume on a malformed sidecar: exit 2" 2 $PATHLAB render --resume -o "$TMP/bad_meta.pfm" --spp 4
+if [ "$(wc -l < "$TMP/err")" -eq 1 ] && grep -q "bad_meta.pfm.meta:6: bad value" "$TMP/err"; then pass "--resume on a malformed sidecar: one message, its file and line"
+else fail "--resume on a malformed sidecar: $(err_tail "$TMP/err")"; fi

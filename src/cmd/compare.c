@@ -51,6 +51,7 @@ typedef struct {
     const char *list, *dir, *ref, *ref_var;
     int spp, spp_given, ref_spp;
     float time, scale;                     /* --time (0: equal spp), --scale (0: none given) */
+    int scale_given;
     int nest;
     estimator_spec spec[MAX_EST];          /* each estimator's label, file name and render flags */
     compare_estimator est[MAX_EST];        /* and its results */
@@ -101,7 +102,7 @@ static int parse_flags(comparison *c, int argc, char **argv)
         {"--ref-spp", CLI_INT, &c->ref_spp, 1, 1 << 30, NULL, NULL, NULL},
         {"--spp", CLI_INT, &c->spp, 1, 1 << 30, NULL, NULL, &c->spp_given},
         {"--time", CLI_CUSTOM, NULL, 0, 0, NULL, parse_time, NULL},
-        {"--scale", CLI_FLOAT, &c->scale, 0, 0, NULL, NULL, NULL},
+        {"--scale", CLI_FLOAT, &c->scale, 0, 0, NULL, NULL, &c->scale_given},
         {NULL, CLI_SWITCH, NULL, 0, 0, NULL, NULL, NULL}};
     const cli_flag *tables[] = {own, NULL};
     char **mine = malloc(2 * (size_t)argc * sizeof *mine), **rest = mine + argc;
@@ -136,6 +137,11 @@ static int check_flags(const comparison *c)
         return 1;
     }
     if (c->spp_given && c->time > 0.0f) { fprintf(stderr, "pathlab: compare: --spp (equal samples) or --time (equal time), not both\n"); return 1; }
+    if (c->scale_given && c->scale < 0.0f) {   /* -1 was taken for 0, "none given" */
+        char v[32];
+        snprintf(v, sizeof v, "%g", c->scale);
+        return cli_fail("compare", "--scale", "a number >= 0 (the heatmaps' white; 0: 3x the largest RMSE)", v);
+    }
     if (c->ref_var && !c->ref) { fprintf(stderr, "pathlab: compare: --ref-var goes with --ref\n"); return 1; }
     if (c->ref && c->ref_spp) { fprintf(stderr, "pathlab: compare: --ref-spp is for a rendered reference, not with --ref\n"); return 1; }
     return render_check_camera_flags(&c->base) || output_dir_check("compare", "-o", c->dir);

@@ -76,13 +76,20 @@ int diff_main(int argc, char **argv)
 {
     const char *ref = NULL, *heat = NULL, **words = calloc((size_t)argc + 1, sizeof *words);
     float scale = 0.0f;
+    int scale_given = 0;
     const cli_flag flags[] = {{"--heatmap", CLI_STRING, &heat, 0, 0, NULL, NULL, NULL},
-                              {"--scale", CLI_FLOAT, &scale, 0, 0, NULL, NULL, NULL},
+                              {"--scale", CLI_FLOAT, &scale, 0, 0, NULL, NULL, &scale_given},
                               {"--ref", CLI_STRING, &ref, 0, 0, NULL, NULL, NULL},
                               {NULL, CLI_SWITCH, NULL, 0, 0, NULL, NULL, NULL}};
     const cli_flag *tables[] = {flags, NULL};
     int n, k, rc = 0;
     if (!words || cli_parse("diff", argc, argv, tables, NULL, words, argc, &n)) { free(words); return 2; }
+    if (scale_given && scale < 0.0f) {   /* was taken for 0, "the largest difference" */
+        char v[32];
+        snprintf(v, sizeof v, "%g", scale);
+        free(words);
+        return 2 * cli_fail("diff", "--scale", "a number >= 0 (the heatmap's white; 0: the largest difference)", v);
+    }
     if (!ref && n == 2) ref = words[--n];
     if (!ref && n > 2) {
         fprintf(stderr, "pathlab diff: %d images and no --ref: which one is the reference?\n" DIFF_USAGE, n);

@@ -125,7 +125,9 @@ int render_resume_args(int argc, char **argv, char **out, int *out_argc, char *t
     ng = scan_args(argc, argv, t, ta, given, RESUME_MAX_ARGS, &nwords, &file);
     *out_argc = argc;
     for (i = 0; i < argc && i < RESUME_MAX_ARGS; i++) out[i] = argv[i];
-    if (!is_given(given, ng, "--resume") || !file || sidecar_read(&m, file) != 0 || argc >= RESUME_MAX_ARGS) return 0;
+    if (!is_given(given, ng, "--resume") || !file || argc >= RESUME_MAX_ARGS) return 0;
+    if ((bad = sidecar_read(&m, file)) > 0) return 1;   /* malformed, said (going on added "needs a scene") */
+    if (bad < 0) return 0;   /* none: the resume's own check says so */
     /* the sidecar's words, split in place in text: scene, seed, flags, camera */
     used = (size_t)snprintf(text, cap, "%s", m.scene) + 1;
     out[n++] = argv[0];

@@ -159,6 +159,11 @@ $PATHLAB render scenes/cornell.obj --quiet --size 16x16 --spp 16 -o "$TMP/stale/
 expect_status "a stale ref_var.pfm: graded" 0 $PATHLAB grade "$TMP/stale/ref.pfm" --ref "$TMP/stale/ref.pfm"
 if grep -q "no REF_var.pfm" "$TMP/out" && ! grep -q "scatter against the reference's own noise" "$TMP/out"; then pass "a stale ref_var.pfm: not used"
 else fail "a stale ref_var.pfm: used: $(grep -E "exact pixels|scatter" "$TMP/out" | head -c 300)"; fi
+# an image scaled by 1e-30 was diagnosed "quantised to 8 bits" (each value within 1e-3 of 0 / 255)
+mkdir -p "$TMP/q"; $PATHLAB render scenes/cornell.obj --quiet --size 32x32 --spp 64 -o "$TMP/q/ref.pfm" --variance "$TMP/q/ref_var.pfm"
+$PATHLAB render scenes/cornell.obj --quiet --size 32x32 --spp 16 --seed 5 -o "$TMP/q/s.pfm"; "$PFMTOOL" scale "$TMP/q/s.pfm" 1e-30 "$TMP/q/tiny.pfm"
+expect_status "an image x 1e-30: fails" 1 $PATHLAB grade "$TMP/q/tiny.pfm" --ref "$TMP/q/ref.pfm"
+if grep -q "quantised" "$TMP/out"; then fail "an image x 1e-30: called quantised: $(grep -m1 quantised "$TMP/out")"; else pass "an image x 1e-30: not called quantised to 8 bits"; fi
 # --heatmap FOLDER with one image (a class of one): FOLDER/NAME.png (it wrote to the folder's name: exit 2)
 mkdir -p "$TMP/hm1"
 expect_status "a class of one, --heatmap FOLDER: graded (a fail), status 1" 1 $PATHLAB grade "$TMP/class1" --ref "$TMP/c.pfm" --heatmap "$TMP/hm1"

@@ -369,13 +369,18 @@ static int all_values(const image *im, int (*test)(float))
     return 1;
 }
 
-static int is_8bit(float v) { return v >= 0.0f && v <= 1.0f && fabsf(v * 255.0f - floorf(v * 255.0f + 0.5f)) < 1e-3f; }
+/* v = k / 255 for some k, 0 itself or k >= 1: a value far below 1/255 is no byte (an image scaled by
+ * 1e-30 was called quantised, each of its values within 1e-3 of 0 / 255) */
+static int is_8bit(float v)
+{
+    return v == 0.0f || (v * 255.0f >= 0.5f && v <= 1.0f && fabsf(v * 255.0f - floorf(v * 255.0f + 0.5f)) < 1e-3f);
+}
 
-/* v = decode(k / 255) of the sRGB curve for some k: the linear value of an 8-bit sRGB byte */
+/* v = decode(k / 255) of the sRGB curve for some k (0 itself or k >= 1): the linear value of an 8-bit sRGB byte */
 static int is_8bit_srgb(float v)
 {
     float e = srgb_of(v) * 255.0f;
-    return v >= 0.0f && v <= 1.0f && fabsf(e - floorf(e + 0.5f)) < 2e-2f;
+    return v == 0.0f || (e >= 0.5f && v <= 1.0f && fabsf(e - floorf(e + 0.5f)) < 2e-2f);
 }
 
 static int is_grey(const image *im, double tol)

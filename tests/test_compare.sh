@@ -187,4 +187,7 @@ expect_status "compare: -o a dangling link refused" 2 $C --spp 1 --estimators li
 expect_status "compare: labels with | and a newline, exit 0" 0 $C --spp 1 --ref-spp 2 --estimators $'a|b=--direct light,c\nd=--direct brdf' -o "$TMP/lab"
 if [ "$(grep -c '^| ' "$TMP/lab/table.md")" -eq 3 ] && ! grep -q 'a|b' "$TMP/lab/table.md"; then pass "compare: table.md keeps one row per estimator, the | as text"
 else fail "compare: table.md: $(grep '^|' "$TMP/lab/table.md" | head -5)"; fi
+# names that set one flag twice: "light+brdf" rendered --direct brdf under the label light+brdf
+expect_status "compare: light+brdf refused" 2 $C --spp 1 --estimators "light+brdf" -o "$TMP/bad23"
+expect_err "compare: light+brdf: the flag set twice named" "estimator 'light\\+brdf' sets --direct twice"
 exit 0

@@ -156,10 +156,25 @@ static int make_slug(estimator_spec *e)
 /* The flags of the scene, loaded once for all estimators: one estimator's would be ignored. */
 static const char *const SCENE_FLAGS[] = {"--mtl", "--sky", "--texture-decode", NULL};
 
+/* 1 (said) if the estimator sets one flag twice: "light+brdf" rendered --direct brdf as "light+brdf". */
+static int flag_twice(const estimator_spec *e, const flag_list *f)
+{
+    int i, j;
+    for (i = 0; i < f->n; i++)
+        for (j = 0; j < i; j++)
+            if (!strncmp(f->tok[i], "--", 2) && !strcmp(f->tok[i], f->tok[j])) {
+                fprintf(stderr, "pathlab: compare: estimator '%s' sets %s twice (by its names or flags): which one?\n",
+                        shown(e->label), f->tok[i]);
+                return 1;
+            }
+    return 0;
+}
+
 /* e->a: the shared flags of base, then the estimator's own, which win. */
 static int apply_flags(estimator_spec *e, const flag_list *f, const render_args *base)
 {
     int i, k;
+    if (flag_twice(e, f)) return 1;
     e->a = *base;
     e->a.scene = e->a.out = e->a.variance = NULL;
     e->a.spp_given = 0;

@@ -30,13 +30,13 @@ refuse "render --variance = -o spelled ./" "-o and --variance are the same file"
 refuse "render --variance = a --split layer of -o" "a layer of -o \(--split\) and --variance are the same file" \
     $PATHLAB render $S $big --split --bounces 0:2 -o "$TMP/x.pfm" --variance "$TMP/x_L1.pfm"
 cp scenes/cornell.obj scenes/cornell.mtl "$TMP/"
-refuse "render --write-view = the scene" "--write-view and the scene are the same file" $PATHLAB render "$TMP/cornell.obj" $big -o "$TMP/x.pfm" --write-view "$TMP/cornell.obj"
+refuse "render --write-view = the scene" "--write-view .*cornell.obj: a view file is text|--write-view and the scene are the same file" $PATHLAB render "$TMP/cornell.obj" $big -o "$TMP/x.pfm" --write-view "$TMP/cornell.obj"
 refuse "render --write-view = -o's sidecar" "-o's sidecar and --write-view are the same file" $PATHLAB render $S $big -o "$TMP/x.pfm" --write-view "$TMP/x.pfm.meta"
 # the other inputs a command line names (a hostile review, 2026-12-08): --write-view over the student's
 # orbiter file or the MTL, -o or --variance over the sky image, each was written
 printf 'c 0 0 0\np 0 0 -2\nr 0 0 0\ns 1 1\n' > "$TMP/orbiter.txt"; "$PFMTOOL" const 8 4 1 1 1 "$TMP/sky.pfm"
 refuse "render --write-view = --orbiter" "--write-view and --orbiter are the same file" $PATHLAB render $S $big -o "$TMP/x.pfm" --orbiter "$TMP/orbiter.txt" --write-view "$TMP/./orbiter.txt"
-refuse "render --write-view = --mtl" "--write-view and --mtl are the same file" $PATHLAB render $S $big -o "$TMP/x.pfm" --mtl "$TMP/cornell.mtl" --write-view "$TMP/cornell.mtl"
+refuse "render --write-view = --mtl" "--write-view .*cornell.mtl: a view file is text|--write-view and --mtl are the same file" $PATHLAB render $S $big -o "$TMP/x.pfm" --mtl "$TMP/cornell.mtl" --write-view "$TMP/cornell.mtl"
 refuse "render -o = --sky" "-o and --sky are the same file" $PATHLAB render $S $big -o "$TMP/sky.pfm" --sky "$TMP/sky.pfm"
 refuse "render --variance = --sky" "--variance and --sky are the same file" $PATHLAB render $S $big -o "$TMP/x.pfm" --variance "$TMP/sky.pfm" --sky "$TMP/sky.pfm"
 refuse "render --sample-count in a missing folder" "^pathlab render: --sample-count $TMP/no/c.pfm" \
@@ -79,4 +79,15 @@ expect_status "--resume with a clashing --size, --write-view: exit 2" 2 $PATHLAB
 expect_no_file "--resume refused: no view file left" "$TMP/rs.view"
 expect_status "a render with --write-view: exit 0" 0 $PATHLAB render $S --quiet --size 8x8 --spp 1 -o "$TMP/rv.pfm" --write-view "$TMP/rv.view"
 if grep -q "^size 8 8" "$TMP/rv.view" 2>/dev/null; then pass "--write-view written with the image"; else fail "--write-view: $(cat "$TMP/rv.view" 2>&1 | head -3)"; fi
+# a resume with nothing to add still writes the --write-view asked (it wrote none); a view file named
+# like a scene's file or an image is refused (--write-view cornell.mtl replaced the MTL its mtllib names);
+# -o over a texture of the scene is refused once the scene is read
+$PATHLAB render $S --quiet --size 8x8 --spp 2 --sampler independent -o "$TMP/rs_ind.pfm"
+expect_status "--resume with nothing to add, --write-view: exit 0" 0 $PATHLAB render --resume -o "$TMP/rs_ind.pfm" --spp 2 --quiet --write-view "$TMP/rs2.view"
+if [ -s "$TMP/rs2.view" ]; then pass "--resume with nothing to add: the view written"; else fail "--resume with nothing to add: no view file"; fi
+refuse "render --write-view x.mtl" "--write-view .*x.mtl: a view file is text" $PATHLAB render $S $big -o "$TMP/x.pfm" --write-view "$TMP/x.mtl"
+mkdir -p "$TMP/tex"; printf 'P3\n2 2\n255\n255 0 0 0 255 0 0 0 255 255 255 255\n' > "$TMP/tex/t.ppm"
+printf 'newmtl m\nKd 1 1 1\nKe 1 1 1\nmap_Kd t.ppm\n' > "$TMP/tex/t.mtl"
+printf 'mtllib t.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl m\nf 1/1 2/2 3/3\n' > "$TMP/tex/t.obj"
+refuse "render -o the scene's texture" "is the texture .*t.ppm of the scene" $PATHLAB render "$TMP/tex/t.obj" $big -o "$TMP/tex/./t.ppm"
 exit 0

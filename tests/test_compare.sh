@@ -190,4 +190,14 @@ else fail "compare: table.md: $(grep '^|' "$TMP/lab/table.md" | head -5)"; fi
 # names that set one flag twice: "light+brdf" rendered --direct brdf under the label light+brdf
 expect_status "compare: light+brdf refused" 2 $C --spp 1 --estimators "light+brdf" -o "$TMP/bad23"
 expect_err "compare: light+brdf: the flag set twice named" "estimator 'light\\+brdf' sets --direct twice"
+# --write-view over the --orbiter, --sky inside -o, a folder named DIR/reference.png
+printf 'c 278 273 280\np 0 0\nr 0 180\ns 1080 1080\nf 40 32 32\n' > "$TMP/cam.orbiter"; cp "$TMP/cam.orbiter" "$TMP/cam_before.orbiter"
+expect_status "compare: --write-view = --orbiter refused" 2 $C --spp 1 --estimators light --orbiter "$TMP/cam.orbiter" --write-view "$TMP/./cam.orbiter" -o "$TMP/bad24"
+if cmp -s "$TMP/cam.orbiter" "$TMP/cam_before.orbiter"; then pass "compare: the orbiter file left whole"; else fail "compare: the orbiter file was replaced"; fi
+mkdir -p "$TMP/skyin"; "$PFMTOOL" const 8 4 1 1 1 "$TMP/skyin/light.pfm"
+expect_status "compare: --sky inside -o refused" 2 $C --spp 1 --estimators light --sky "$TMP/skyin/light.pfm" -o "$TMP/skyin"
+expect_err "compare: --sky inside -o named" "--sky .*light.pfm is in the output folder"
+mkdir -p "$TMP/rp/reference.png"
+expect_status "compare: DIR/reference.png a folder: refused before rendering" 2 $C --spp 1 --ref-spp 2 --estimators light -o "$TMP/rp"
+if [ -z "$(ls "$TMP/rp" | grep -v reference.png)" ]; then pass "compare: DIR/reference.png a folder: nothing written"; else fail "compare: written: $(ls "$TMP/rp" | tr '\n' ' ')"; fi
 exit 0

@@ -87,4 +87,16 @@ for out in bad.png bad-copy.pfm; do
         pass "convert $out: a PFM with a NaN and an infinity written, the first named in a warning, the means over the finite values"
     else fail "convert $out: status $rc, $(ls "$TMP/$out" 2>&1), '$(head -c 300 "$TMP/err")', '$(head -c 300 "$TMP/out")'"; fi
 done
+# (a review, 2026-12-08) a converted image without a sidecar left the output's old one: --resume took a
+# grey picture for 2 samples of a Cornell box; the output = the input rewrote its sidecar; a folder at
+# OUT.pfm.meta was found after the image was written
+$PATHLAB render scenes/cornell.obj --quiet --size 8x8 --spp 2 --sampler independent -o "$TMP/cv.pfm" --variance "$TMP/cv_var.pfm"
+$PFMTOOL const 8 8 0.5 0.5 0.5 "$TMP/grey.pfm"
+expect_status "convert over a render: exit 0" 0 $PATHLAB convert "$TMP/grey.pfm" "$TMP/cv.pfm"
+expect_no_file "convert over a render: its old sidecar removed" "$TMP/cv.pfm.meta"
+expect_status "convert A A refused" 2 $PATHLAB convert "$TMP/cv_var.pfm" "$TMP/./cv_var.pfm"
+expect_err "convert A A: said" "is the input"
+mkdir -p "$TMP/o3.pfm.meta"
+expect_status "convert with a folder at OUT.pfm.meta refused" 2 $PATHLAB convert "$TMP/grey.pfm" "$TMP/o3.pfm"
+expect_no_file "convert with a folder at OUT.pfm.meta: no image" "$TMP/o3.pfm"
 exit 0

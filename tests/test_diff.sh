@@ -44,4 +44,19 @@ expect_status "diff: bad --scale, status 2" 2 $PATHLAB diff "$TMP/a.pfm" "$TMP/b
 expect_err "diff: bad --scale named" "^pathlab diff: --scale expects a number, got 'big'"
 expect_status "diff: unknown flag, status 2" 2 $PATHLAB diff "$TMP/a.pfm" "$TMP/b.pfm" --colour
 expect_err "diff: unknown flag named" "unknown flag '--colour'"
+# (a review, 2026-12-08) the standard error of a greyscale image counted each value three times
+# (sqrt 3 too small): a = [1, 3], ref = [0, 0] gives mean 2, sd sqrt 2 over 2 pixels, standard error 1
+printf 'Pf\n2 1\n-1\n\x00\x00\x80\x3f\x00\x00\x40\x40' > "$TMP/ga.pfm"; printf 'Pf\n2 1\n-1\n\x00\x00\x00\x00\x00\x00\x00\x00' > "$TMP/gz.pfm"
+out=$($PATHLAB diff "$TMP/ga.pfm" "$TMP/gz.pfm" 2> /dev/null)
+if echo "$out" | grep -q '^mean *+2 +- 1 '; then pass "diff: a greyscale image's standard error over its pixels (1)"; else fail "diff: greyscale: $(echo "$out" | grep mean)"; fi
+# a black reference: no PSNR (it printed inf dB, a perfect match's)
+out=$($PATHLAB diff "$TMP/ga.pfm" "$TMP/gz.pfm" 2> /dev/null)
+if echo "$out" | grep -q '^PSNR *n/a'; then pass "diff: a black reference: PSNR n/a"; else fail "diff: black reference: $(echo "$out" | grep PSNR)"; fi
+# the default heatmap is white at the largest of what it shows (a one-channel difference of 1 was a third of the ramp)
+$PFMTOOL const 1 1 1 0 0 "$TMP/r1.pfm"; $PFMTOOL const 1 1 0 0 0 "$TMP/k1.pfm"
+$PATHLAB diff "$TMP/r1.pfm" "$TMP/k1.pfm" --heatmap "$TMP/h1.ppm" > /dev/null 2> "$TMP/err"
+if [ "$(tail -c 3 "$TMP/h1.ppm" | od -An -tu1 | tr -s ' ')" = " 255 255 255" ]; then pass "diff: the default heatmap's largest difference is white"
+else fail "diff: the default heatmap's pixel: $(tail -c 3 "$TMP/h1.ppm" | od -An -tu1)"; fi
+expect_err "diff: the heatmap's scale said" "black 0 to white 0.3333"
+expect_status "diff: --scale without --heatmap refused" 2 $PATHLAB diff "$TMP/a.pfm" "$TMP/b.pfm" --scale 2
 exit 0

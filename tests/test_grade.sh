@@ -159,11 +159,30 @@ $PATHLAB render scenes/cornell.obj --quiet --size 16x16 --spp 16 -o "$TMP/stale/
 expect_status "a stale ref_var.pfm: graded" 0 $PATHLAB grade "$TMP/stale/ref.pfm" --ref "$TMP/stale/ref.pfm"
 if grep -q "no REF_var.pfm" "$TMP/out" && ! grep -q "scatter against the reference's own noise" "$TMP/out"; then pass "a stale ref_var.pfm: not used"
 else fail "a stale ref_var.pfm: used: $(grep -E "exact pixels|scatter" "$TMP/out" | head -c 300)"; fi
+# a renamed reference (its sidecar still naming tmp_var.pfm) finds its variance beside it, checked by
+# the variance's own sidecar; a variance copied without its sidecar is used as before
+mkdir -p "$TMP/ren"; $PATHLAB render scenes/cornell.obj --quiet --size 16x16 --spp 8 -o "$TMP/ren/tmp.pfm" --variance "$TMP/ren/tmp_var.pfm"
+for f in tmp.pfm tmp.pfm.meta tmp_var.pfm tmp_var.pfm.meta; do mv "$TMP/ren/$f" "$TMP/ren/${f/tmp/cornell}"; done
+expect_status "a renamed reference: graded" 0 $PATHLAB grade "$TMP/ren/cornell.pfm" --ref "$TMP/ren/cornell.pfm"
+if grep -q "scatter against the reference's own noise" "$TMP/out"; then pass "a renamed reference: its variance found beside it"
+else fail "a renamed reference: its variance not used: $(grep -E "exact pixels" "$TMP/out" | head -c 200)"; fi
+rm "$TMP/ren/cornell_var.pfm.meta"
+expect_status "a variance without its sidecar: graded" 0 $PATHLAB grade "$TMP/ren/cornell.pfm" --ref "$TMP/ren/cornell.pfm"
+if grep -q "scatter against the reference's own noise" "$TMP/out"; then pass "a variance without its sidecar: used"
+else fail "a variance without its sidecar: not used: $(err_tail "$TMP/err")"; fi
 # an image scaled by 1e-30 was diagnosed "quantised to 8 bits" (each value within 1e-3 of 0 / 255)
 mkdir -p "$TMP/q"; $PATHLAB render scenes/cornell.obj --quiet --size 32x32 --spp 64 -o "$TMP/q/ref.pfm" --variance "$TMP/q/ref_var.pfm"
 $PATHLAB render scenes/cornell.obj --quiet --size 32x32 --spp 16 --seed 5 -o "$TMP/q/s.pfm"; "$PFMTOOL" scale "$TMP/q/s.pfm" 1e-30 "$TMP/q/tiny.pfm"
 expect_status "an image x 1e-30: fails" 1 $PATHLAB grade "$TMP/q/tiny.pfm" --ref "$TMP/q/ref.pfm"
 if grep -q "quantised" "$TMP/out"; then fail "an image x 1e-30: called quantised: $(grep -m1 quantised "$TMP/out")"; else pass "an image x 1e-30: not called quantised to 8 bits"; fi
+# the reference inside the class folder: a student's bob.pfm -> ref.pfm was left out as the reference
+# (now graded, flagged a copy); the teacher's --ref class5/ref.pfm -> ../refs5/c.pfm is the reference
+mkdir -p "$TMP/class5" "$TMP/refs5"; cp "$TMP/c.pfm" "$TMP/class5/ref.pfm"; cp "$TMP/c.pfm" "$TMP/class5/alice.pfm"; ln -s ref.pfm "$TMP/class5/bob.pfm"
+$PATHLAB grade "$TMP/class5" --ref "$TMP/class5/ref.pfm" > "$TMP/out" 2> "$TMP/err"
+if grep -q "class5/bob.pfm: .*FLAGGED: identical to the reference" "$TMP/out"; then pass "a link to the reference inside the folder: graded, flagged a copy"
+else fail "a link to the reference inside the folder: $(grep bob "$TMP/out" | head -c 200) $(err_tail "$TMP/err")"; fi
+mkdir -p "$TMP/class6"; cp "$TMP/c.pfm" "$TMP/refs5/c.pfm"; ln -s ../refs5/c.pfm "$TMP/class6/ref.pfm"; cp "$TMP/c.pfm" "$TMP/class6/alice.pfm"
+expect_status "--ref a link in the class folder: it is the reference, not a student (exit 0)" 0 $PATHLAB grade "$TMP/class6" --ref "$TMP/class6/ref.pfm"
 # --heatmap FOLDER with one image (a class of one): FOLDER/NAME.png (it wrote to the folder's name: exit 2)
 mkdir -p "$TMP/hm1"
 expect_status "a class of one, --heatmap FOLDER: graded (a fail), status 1" 1 $PATHLAB grade "$TMP/class1" --ref "$TMP/c.pfm" --heatmap "$TMP/hm1"

@@ -103,6 +103,14 @@ static void test_hostile(void)
     for (i = 0; i + 8 < n; i++)
         if (b[i] == 0xff && b[i + 1] == 0xc0) { sof = b + i; break; }
     if (!sof) { check(0, "jpeg_hostile", "no base.jpg"); free(b); return; }
+    {   /* its DQT segments made comments: decoded to flat grey (every quantiser 0) before */
+        unsigned char *c = malloc(n);
+        memcpy(c, b, n);
+        for (i = 0; i + 1 < n; i++)
+            if (c[i] == 0xff && c[i + 1] == 0xdb) c[i + 1] = 0xfe;
+        refused("no_dqt.jpg", c, n, "quantisation table (DQT) is not defined");
+        free(c);
+    }
     refused("cut.jpg", b, n / 2, "truncated");
     sof[5] = sof[7] = 0x3e;   /* 16000 x 16000 */
     sof[6] = sof[8] = 0x80;

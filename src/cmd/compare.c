@@ -36,6 +36,7 @@
 #include "render/render.h"
 #include "util/cli.h"
 #include "sys/output_path.h"
+#include "util/path.h"
 
 #define MAX_EST COMPARE_MAX_EST
 #define CALIB_FRACTION 0.2    /* of --time: the length of the last calibration render */
@@ -227,7 +228,7 @@ static int save_render(comparison *c, const scene *s, const render_opts *ro, con
     char out[PATH_CAP], var_out[PATH_CAP];
     sidecar m;
     if (compare_out_path(out, c->dir, "", slug, ".pfm") || compare_out_path(var_out, c->dir, slug, "_var", ".pfm")) return 1;
-    render_meta_describe(&m, ro, c->base.scene, render_meta_scene_id(s, &ro->sky), &c->spec[0].a.cam.vw, pathlab_revision());
+    render_meta_describe(&m, ro, c->base.scene, s, &c->spec[0].a.cam.vw, pathlab_revision());
     render_meta_describe_scene(&m, &ro->io, &c->base.so);   /* --material, --normals ...: resume and merge compare them */
     m.nranges = 1;
     m.range[0][0] = ro->first;
@@ -294,8 +295,8 @@ static int write_outputs(comparison *c, const compare_reference *ref)
  * DIR/brdf.pfm was found after the renders, 22 files written): 0, or 1 after printing why. */
 static int check_outputs(const comparison *c)
 {
-    static const char *const shared[] = {"mosaic.ppm", "mosaic.png", "table.md", "table.csv", "index.html",
-                                         "reference.pfm", "reference.pfm.meta", "reference_var.pfm", "reference_var.pfm.meta", NULL};
+    static const char *const shared[] = {"mosaic.ppm", "mosaic.png", "table.md", "table.csv", "index.html", "reference.pfm",
+                                         "reference.pfm.meta", "reference_var.pfm", "reference_var.pfm.meta", "reference.png", NULL};
     static const char *const each[] = {"%s/%s.pfm", "%s/%s.pfm.meta", "%s/%s_var.pfm", "%s/%s_var.pfm.meta", "%s/%s.png",
                                        "%s/heat-%s.png", NULL};
     char path[PATH_CAP];
@@ -316,24 +317,44 @@ static int check_outputs(const comparison *c)
     return 0;
 }
 
-/* 1 (said) if --ref or its variance lies in the folder -o, where compare writes its files (DIR/light.pfm
- * over --ref DIR/light.pfm replaced a reference of 256 spp by a render of 4). */
-static int ref_in_output_dir(const comparison *c)
+/* 1 (said) if an input lies in the folder -o, where compare writes its files (DIR/light.pfm over
+ * --ref DIR/light.pfm replaced a reference of 256 spp by a render of 4; --sky DIR/light.pfm so), or
+ * a --write-view is an input, in DIR, or not a view file's name (--write-view cam.orbiter over the
+ * student's orbiter file). */
+static int inputs_clash(const comparison *c)
 {
     char probe[PATH_CAP], a[PATH_CAP], b[PATH_CAP];
-    const char *in[2];
-    int k;
-    in[0] = c->ref, in[1] = c->ref_var;
+    const char *in[6], *what[6] = {"--ref", "the reference's variance", "--sky", "--orbiter", "--mtl", "the scene"};
+    int k, i;
+    in[0] = c->ref, in[1] = c->ref_var, in[2] = c->base.ro.sky.kind == SKY_IMAGE ? c->base.ro.sky.path : NULL;
+    in[3] = c->base.cam.orbiter, in[4] = c->base.so.obj.mtl, in[5] = c->base.scene;
     if (snprintf(probe, sizeof probe, "%s/x", c->dir) >= (int)sizeof probe) return 0;
     render_files_key(a, sizeof a, probe);
     a[strlen(a) - 1] = '\0';   /* DIR's real path and a slash */
-    for (k = 0; k < 2; k++) {
+    for (k = 0; k < 6; k++) {
         if (!in[k]) continue;
         render_files_key(b, sizeof b, in[k]);
         if (!strncmp(a, b, strlen(a)) && !strchr(b + strlen(a), '/')) {
-            fprintf(stderr, "pathlab compare: %s %s is in the output folder %s, where compare writes its images: keep the "
-                    "reference in another folder\n", k ? "the reference's variance" : "--ref", shown(in[k]), shown(c->dir));
+            fprintf(stderr, "pathlab compare: %s %s is in the output folder %s, where compare writes its files: keep it "
+                    "in another folder\n", what[k], shown(in[k]), shown(c->dir));
             return 1;
+        }
+    }
+    for (i = 0; i < c->nest; i++) {
+        const char *v = c->spec[i].a.cam.write_view, *orb = c->spec[i].a.cam.orbiter;
+        if (!v) continue;
+        render_files_key(b, sizeof b, v);
+        if (img_format_of(v) != IMG_UNKNOWN || path_ends_with(v, ".obj") || path_ends_with(v, ".mtl") ||
+            (!strncmp(a, b, strlen(a)) && !strchr(b + strlen(a), '/'))) {
+            fprintf(stderr, "pathlab compare: --write-view %s: a view file (FILE.view) outside the output folder\n", shown(v));
+            return 1;
+        }
+        for (k = 0; k < 6; k++) {
+            const char *file = k == 3 && orb ? orb : in[k];   /* the estimator's own --orbiter, if it has one */
+            if (file && path_same_file(v, file)) {
+                fprintf(stderr, "pathlab compare: --write-view %s is %s: give it its own name\n", shown(v), what[k]);
+                return 1;
+            }
         }
     }
     return 0;
@@ -347,12 +368,12 @@ static int run(comparison *c)
     int rc = 2, i;
     memset(&ref, 0, sizeof ref);
     if (load_scene(c, &s)) return 2;
-    if (c->ref && !c->ref_var && (i = view_find_variance(c->ref, c->ref_var_found, sizeof c->ref_var_found)) != 0) {
+    if (c->ref && !c->ref_var && (i = view_find_variance(c->ref, c->ref_var_found, sizeof c->ref_var_found, "compare")) != 0) {
         if (i == 2) goto done;   /* refused, said: not a comparison without the noise it named */
         c->ref_var = c->ref_var_found;
     }
     /* the inputs, checked before anything is written */
-    if (ref_in_output_dir(c) || make_camera(c, &s) || (c->ref && compare_read_reference(&ref, c->ref, c->ref_var, c->cam.width, c->cam.height))
+    if (inputs_clash(c) || make_camera(c, &s) || (c->ref && compare_read_reference(&ref, c->ref, c->ref_var, c->cam.width, c->cam.height))
         || check_outputs(c) || compare_make_dir(c->dir)) goto done;
     rc = 1;
     /* the renders: how many samples each, the reference unless given, then each estimator */

@@ -9,6 +9,8 @@
 #include "image/image.h"
 #include "image/rgbe.h"
 #include "util/cli.h"
+#include "util/path.h"
+#include <errno.h>
 #include "sys/output_path.h"
 
 #define CONVERT_USAGE "usage: pathlab convert IN.pfm|IN.hdr OUT.png|OUT.ppm|OUT.pfm [--exposure STOPS|auto]\n"
@@ -61,17 +63,38 @@ static void warn_not_finite(const image *im, const char *path)
 }
 
 /* A PFM written: the input's sidecar beside it, if the input has one (the same pixels, made the same
- * way; the input's variance and sample counts are not copied, so the sidecar names none). 0, or 1
- * after saying why. */
+ * way; the input's variance and sample counts are not copied, so the sidecar names none); if it has
+ * none, the output's old sidecar removed (it told --resume that a converted grey image was 2 samples
+ * of a Cornell box). 0, or 1 after saying why. */
 static int write_sidecar(const char *in, const char *out)
 {
     sidecar m;
-    char meta[4096];
-    if (img_format_of(out) != IMG_PFM || sidecar_read(&m, in) != 0) return 0;
+    char meta[PATH_CAP];
+    int rc;
+    if (img_format_of(out) != IMG_PFM) return 0;
+    sidecar_path(meta, sizeof meta, out);
+    if ((rc = sidecar_read(&m, in)) > 0) return 1;
+    if (rc < 0) {
+        if (remove(meta) == 0 || errno == ENOENT) return 0;
+        fprintf(stderr, "pathlab convert: %s: cannot remove the sidecar of the file replaced: %s\n", shown(meta), strerror(errno));
+        return 1;
+    }
     m.variance[0] = m.sample_count[0] = '\0';
     m.layers_n = 0;
-    sidecar_path(meta, sizeof meta, out);
     return sidecar_write_to(&m, out, meta);
+}
+
+/* 1 (said) if the output is the input (convert r.pfm r.pfm rewrote r.pfm's sidecar without its
+ * variance), or its sidecar cannot be written (a folder there: the image was written, then exit 2). */
+static int check_output(const char *in, const char *out)
+{
+    char meta[PATH_CAP];
+    if (path_same_file(in, out)) {
+        fprintf(stderr, "pathlab convert: the output %s is the input: write to a new file\n", shown(out));
+        return 1;
+    }
+    sidecar_path(meta, sizeof meta, out);
+    return img_format_of(out) == IMG_PFM && output_path_check("convert", "output's sidecar", meta, NULL);
 }
 
 int convert_main(int argc, char **argv)
@@ -89,7 +112,7 @@ int convert_main(int argc, char **argv)
         fprintf(stderr, "pathlab convert: %s: unknown image format (use .pfm, .ppm or .png)\n", shown(path[1]));
         return 2;
     }
-    if (output_path_check("convert", "output", path[1], IMG_EXTENSIONS)) return 2;
+    if (output_path_check("convert", "output", path[1], IMG_EXTENSIONS) || check_output(path[0], path[1])) return 2;
     if (img_format_of(path[0]) == IMG_HDR ? img_read_hdr(&im, path[0]) : img_read_pfm(&im, path[0])) return 2;
     print_figures(&im, path[0]);
     warn_not_finite(&im, path[0]);

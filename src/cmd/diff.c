@@ -2,6 +2,7 @@
  * and writes the heatmap if asked (image/heatmap.h). */
 #include "cmd/diff.h"
 #include "sys/shown.h"
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include "image/heatmap.h"
@@ -17,8 +18,10 @@
 /* The metrics of stats/image_diff.h, one per line. */
 static void print_stats(const image_diff *s)
 {
-    printf("RMSE    %.6g\nrelMSE  %.6g\nMAE     %.6g\nmax     %.6g\nPSNR    %.2f dB\nmean    %+.6g +- %.2g (a - ref, standard error)\n",
-           s->rmse, s->relmse, s->mae, s->max, s->psnr, s->mean, s->mean_se);
+    printf("RMSE    %.6g\nrelMSE  %.6g\nMAE     %.6g\nmax     %.6g\n", s->rmse, s->relmse, s->mae, s->max);
+    if (isnan(s->psnr)) printf("PSNR    n/a (the reference is black: no peak)\n");
+    else printf("PSNR    %.2f dB\n", s->psnr);
+    printf("mean    %+.6g +- %.2g (a - ref, standard error over the pixels)\n", s->mean, s->mean_se);
 }
 
 static const char *kind_of(const img_pfm_info *info)
@@ -58,11 +61,13 @@ static int diff_one(const char *image_path, const char *ref_path, const char *he
         fprintf(stderr, "pathlab diff: %s is %dx%d but %s is %dx%d\n", shown(path[0]), im[0].w, im[0].h, shown(path[1]), im[1].w, im[1].h);
         rc = 2;
     } else {
+        double used = 0.0;
         print_stats(&s);
-        if (heat && img_heatmap(&hm, &im[0], &im[1], scale)) rc = 2;
+        if (heat && img_heatmap(&hm, &im[0], &im[1], scale, &used)) rc = 2;
         else if (heat) {
             if (img_write(&hm, heat, 0.0f)) rc = 2;
-            else fprintf(stderr, "pathlab diff: wrote the heatmap %s\n", shown(heat));
+            else fprintf(stderr, "pathlab diff: wrote the heatmap %s: |a - ref| averaged over RGB, black 0 to white %.4g%s\n",
+                         shown(heat), used, scale > 0.0f ? " (--scale)" : " (the largest: give --scale S to compare heatmaps)");
             img_free(&hm);
         }
     }
@@ -89,6 +94,11 @@ int diff_main(int argc, char **argv)
         snprintf(v, sizeof v, "%g", scale);
         free(words);
         return 2 * cli_fail("diff", "--scale", "a number >= 0 (the heatmap's white; 0: the largest difference)", v);
+    }
+    if (scale_given && !heat) {
+        fprintf(stderr, "pathlab diff: --scale is the heatmap's white: it goes with --heatmap\n");
+        free(words);
+        return 2;
     }
     if (!ref && n == 2) ref = words[--n];
     if (!ref && n > 2) {

@@ -2,6 +2,7 @@
  * their sidecars, and what a stop by Ctrl-C or --time wrote. */
 #include "cmd/render_cmd.h"
 #include "sys/shown.h"
+#include "util/path.h"
 #include <inttypes.h>
 #include <math.h>
 #include <stdio.h>
@@ -36,6 +37,23 @@ static int render_inputs(const render_args *a, render_input in[RENDER_MAX_INPUTS
     in[k].what = "--sky", in[k++].path = a->ro.sky.kind == SKY_IMAGE ? a->ro.sky.path : NULL;
     in[k].what = "--mtl", in[k++].path = a->so.obj.mtl;
     return k;
+}
+
+/* 1 (said) if an output is one of the scene's textures (-o tex.ppm replaced a map_Kd image): those
+ * files are known once the scene is read, before any pixel is rendered. */
+static int writes_over_texture(const render_args *a, const scene *s)
+{
+    const char *outs[4];
+    int i, k;
+    outs[0] = a->out, outs[1] = a->variance, outs[2] = a->sample_count, outs[3] = a->cam.write_view;
+    for (i = 0; i < s->m.ntextures; i++)
+        for (k = 0; k < 4; k++)
+            if (outs[k] && path_same_file(outs[k], s->m.textures[i].path)) {
+                fprintf(stderr, "pathlab render: %s is the texture %s of the scene: write to another file\n", shown(outs[k]),
+                        shown(s->m.textures[i].path));
+                return 1;
+            }
+    return 0;
 }
 
 /* What render needs beyond valid flag values: a scene, an output it can write, a last bounce for
@@ -109,7 +127,7 @@ static int parse_render_args(render_args *a, render_plan *p, int argc, char **ar
 /* The sidecar of this render, its sample range aside: what must match for pieces to merge. */
 static void describe_render(const render_args *a, const render_plan *p, const scene *s, sidecar *m)
 {
-    render_meta_describe(m, &p->ro, a->scene, render_meta_scene_id(s, &p->ro.sky), &a->cam.vw, pathlab_revision());
+    render_meta_describe(m, &p->ro, a->scene, s, &a->cam.vw, pathlab_revision());
     render_meta_describe_scene(m, &p->ro.io, &a->so);
     render_adaptive_describe(a, m);
 }
@@ -204,8 +222,8 @@ static int render_and_write(render_args *a, render_plan *p, const scene *s, cons
     memset(&ar, 0, sizeof ar);
     describe_render(a, p, s, &m);
     if (a->resume && (rc = prepare_resume(a, p, &m, &prev, var_out, sizeof var_out)) != 0) {
-        render_files_free(&prev);
-        return rc == 1 ? 0 : 2;
+        render_files_free(&prev);   /* 1: nothing to add, the files as they are (and the camera asked for) */
+        return rc == 1 ? 2 * view_setup_write(&a->cam, a->cmd, a->scene) : 2;
     }
     interrupt_install();   /* from here, a first Ctrl-C stops after the pass and writes what it reached */
     if (p->adaptive ? adaptive_render(s, cam, &p->ro, &p->ao, &r, &ar) : render(s, cam, &p->ro, &r)) { render_files_free(&prev); return 2; }   /* out of memory: said */
@@ -235,7 +253,7 @@ int render_main(int argc, char **argv)
     scene s;
     camera cam;
     int rc, nargs;
-    char *args[RESUME_MAX_ARGS], words[3 * SIDECAR_TEXT];
+    char *args[RESUME_MAX_ARGS], words[6 * SIDECAR_TEXT + 64];
     /* --resume -o FILE: what the command line leaves out is FILE's sidecar's (cmd/render_resume.h) */
     if (render_resume_args(argc, argv, args, &nargs, words, sizeof words)) return 2;
     if (parse_render_args(&a, &p, nargs, args)) return 2;
@@ -250,7 +268,7 @@ int render_main(int argc, char **argv)
         fprintf(stderr, "%s: %d triangles (%d degenerate dropped), %d emitting, %d materials%s; loaded in %.0f ms, BVH in %.0f ms%s\n",
                 shown(a.scene), s.m.ntris, s.m.ndegenerate, s.lights.n, s.m.nmats - 1, tex, 1e3 * s.load_seconds, 1e3 * s.bvh_seconds, pairs);
     }
-    if (render_make_camera(&a, &s, &cam)) { scene_free(&s); return 2; }
+    if (writes_over_texture(&a, &s) || render_make_camera(&a, &s, &cam)) { scene_free(&s); return 2; }
     if (!scene_has_light(&s))
         fprintf(stderr, "pathlab render: warning: %s has no emitters (no material with Ke > 0) and %s: the image is black\n", shown(a.scene),
                 a.ro.sky.kind == SKY_NONE ? "no --sky" : "the --sky given is black (every pixel 0)");

@@ -29,7 +29,7 @@ static int write_heatmaps(outputs *w)
     w->heat_scale = o->scale > 0.0f ? o->scale : worst > 0.0 ? 3.0 * worst : 1.0;
     for (i = 0; i < o->n; i++) {
         compare_estimator *e = &o->est[i];
-        if (img_heatmap(&e->heat, &e->img, &o->ref->img, w->heat_scale)) return 1;
+        if (img_heatmap(&e->heat, &e->img, &o->ref->img, w->heat_scale, NULL)) return 1;
         if (compare_save_image(o->dir, "heat-", e->slug, ".png", &e->heat, 0.0f)) return 1;
     }
     return 0;

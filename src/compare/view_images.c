@@ -26,31 +26,15 @@ static int read_sized(image *im, const char *path, const char **first, const ima
     return 2;
 }
 
-/* The variance of the image at path: the one its sidecar names (an input confined to the image's
- * folder, whose own sidecar says it is this image's variance: render_files_named_variance); an image
- * without a sidecar, STEM_var.pfm beside it (a regular file in its folder: a link planted there to a
- * teacher's file is refused). A sidecar that names none means none: a REF_var.pfm left from an
- * earlier render of REF.pfm was taken for the variance of the new one. 1 if found, 0 if none, 2
- * after printing why it is refused. */
-int view_find_variance(const char *path, char *out, size_t cap)
+/* The variance of the image at path (render_files_find_variance). 1 if found, 0 if none, 2 after
+ * printing why it is refused. */
+int view_find_variance(const char *path, char *out, size_t cap, const char *cmd)
 {
-    size_t n = strlen(path), stem = n > 4 && !strcmp(path + n - 4, ".pfm") ? n - 4 : n;
     sidecar m;
-    int rc;
-    const char *name = path_file_name(path), *why;
-    char beside[PATH_CAP];
-    if ((rc = sidecar_read(&m, path)) > 0) return 2;
-    if (rc == 0) {
-        rc = render_files_named_variance(out, cap, path, &m, "view");
-        return rc < 0 ? 0 : rc ? 2 : 1;
-    }
-    snprintf(beside, sizeof beside, "%.*s_var.pfm", (int)(stem - (size_t)(name - path)), name);
-    if (!(why = input_file_beside(out, cap, path, beside))) return 1;   /* in the image's folder: no link leading out */
-    if (errno != ENOENT) {
-        fprintf(stderr, "pathlab view: %s: %s\n", out, why);
-        return 2;
-    }
-    return 0;
+    int rc = sidecar_read(&m, path);
+    if (rc > 0) return 2;
+    rc = render_files_find_variance(out, cap, path, rc == 0 ? &m : NULL, cmd);
+    return rc < 0 ? 0 : rc ? 2 : 1;
 }
 
 /* Reads one image (and its variance, given or found) into slot i of the page. 0 or 2. */
@@ -62,7 +46,7 @@ static int read_image(view_data *d, html_image *h, image *im, image *var, const 
     h->name = path_file_name(path);
     h->img = im;
     if (read_sized(im, path, first, &d->img[0])) return 2;
-    if (!var_path && (rc = view_find_variance(path, found, sizeof found)) == 2) return 2;
+    if (!var_path && (rc = view_find_variance(path, found, sizeof found, "view")) == 2) return 2;
     if (!var_path && rc == 1) var_path = found;
     if (!var_path) return 0;
     if (read_sized(var, var_path, first, &d->img[0])) return 2;

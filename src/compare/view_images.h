@@ -20,10 +20,11 @@ typedef struct {
 /* Reads the n images (n >= 1), the reference ref (or NULL), the first image's variance var (or NULL:
  * found) and the layers PREFIX (or NULL: the first image's) into d (zeroed). 0, or 2 after saying why. */
 int view_data_read(view_data *d, const char *const *images, int n, const char *ref, const char *var, const char *layers);
-/* The variance of the image at path, into out[cap]: STEM_var.pfm beside it (a regular file), else the
- * one its sidecar names (an input confined to the image's folder, checked by its own sidecar). 1 if
- * found (view, and compare's --ref without --ref-var), 0 if none, 2 after printing why it is refused. */
-int view_find_variance(const char *path, char *out, size_t cap);
+/* The variance of the image at path, into out[cap], as render_files_find_variance finds it (the one
+ * its sidecar names, else STEM_var.pfm beside it, each only if of this render); cmd names the command
+ * in messages. 1 if found (view, and compare's --ref without --ref-var), 0 if none, 2 after printing
+ * why it is refused. */
+int view_find_variance(const char *path, char *out, size_t cap, const char *cmd);
 /* Frees the images and d itself (allocated by the caller with calloc). */
 void view_data_free(view_data *d);
 #endif

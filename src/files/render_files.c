@@ -2,6 +2,7 @@
 #include "files/render_files.h"
 #include "scene/scene_file.h"
 #include "sys/shown.h"
+#include "util/path.h"
 #include "render/render.h"
 #include "sys/atomic_file.h"
 #include "sys/input_file.h"
@@ -43,6 +44,12 @@ int render_files_check_outputs(const render_input *inputs, int ninputs, const ch
     if (var_out && output_path_check("render", "--variance", var_out, IMG_PFM_EXTENSION)) return 1;
     if (count_out && output_path_check("render", "--sample-count", count_out, NULL)) return 1;   /* .pfm: render_adaptive_check */
     if (view_out && output_path_check("render", "--write-view", view_out, NULL)) return 1;
+    if (view_out && (img_format_of(view_out) != IMG_UNKNOWN || path_ends_with(view_out, ".obj") || path_ends_with(view_out, ".mtl"))) {
+        /* a scene's MTL (named by its mtllib line) or texture would be replaced by a camera */
+        fprintf(stderr, "pathlab render: --write-view %s: a view file is text, not an image, an OBJ or an MTL: name it FILE.view\n",
+                shown(view_out));
+        return 1;
+    }
     return same_files(inputs, ninputs, out, var_out, count_out, view_out, split, bmin, bmax);
 }
 
@@ -381,17 +388,43 @@ static int variance_file(char *vp, size_t cap, const char *p, const char *name, 
     return 1;
 }
 
-int render_files_named_variance(char *dst, size_t cap, const char *image_path, const sidecar *m, const char *cmd)
+/* 1 if vm (a variance's sidecar) says it is the variance of the render of m: kind, samples, scene,
+ * seed, flags, camera. */
+static int variance_of(const sidecar *vm, const sidecar *m)
 {
-    img_pfm_info info;
+    char a[SIDECAR_RANGES_TEXT], b[SIDECAR_RANGES_TEXT];
+    sidecar_ranges_text(vm, a, sizeof a);
+    sidecar_ranges_text(m, b, sizeof b);
+    return !strcmp(vm->kind, "variance") && !strcmp(a, b) && !strcmp(vm->scene_id, m->scene_id) && vm->seed == m->seed &&
+           !strcmp(vm->flags, m->flags) && !strcmp(vm->camera, m->camera);
+}
+
+/* Candidate `name` (from the image's folder) for the variance of image_path, of sidecar m (NULL: none):
+ * 0 taken (into dst), -1 not there or not this render's (said), 1 refused (said). */
+static int variance_candidate(char *dst, size_t cap, const char *image_path, const sidecar *m, const char *name, const char *cmd)
+{
     sidecar vm;
-    if (!m->variance[0]) return -1;
-    if (render_files_variance_path(dst, cap, image_path, m->variance)) {
-        if (errno == ENOENT) return -1;
-        return variance_file(dst, cap, image_path, m->variance, cmd);
-    }
-    if (img_read_pfm_header(image_path, &info)) return 1;
-    return check_one(cmd, dst, "variance", m, &vm, info.w, info.h);
+    const char *why = render_files_variance_path(dst, cap, image_path, name);
+    int rc;
+    if (why && errno == ENOENT) return -1;
+    if (why) { fprintf(stderr, "pathlab %s: %s: %s\n", cmd, shown(dst), why); return 1; }
+    if ((rc = sidecar_read(&vm, dst)) > 0) return 1;
+    if (rc < 0 || !m || variance_of(&vm, m)) return 0;   /* no sidecar on one side: as named, unchecked */
+    fprintf(stderr, "pathlab %s: note: %s is not the variance of %s (its sidecar is of another render): not used\n", cmd,
+            shown(dst), shown(image_path));
+    return -1;
+}
+
+int render_files_find_variance(char *dst, size_t cap, const char *image_path, const sidecar *m, const char *cmd)
+{
+    size_t n = strlen(image_path), stem = n > 4 && !strcmp(image_path + n - 4, ".pfm") ? n - 4 : n;
+    const char *slash = strrchr(image_path, '/'), *base = slash ? slash + 1 : image_path;
+    char beside[PATH_CAP];
+    int rc = -1;
+    if (m && m->variance[0] && (rc = variance_candidate(dst, cap, image_path, m, m->variance, cmd)) >= 0) return rc;
+    snprintf(beside, sizeof beside, "%.*s_var.pfm", (int)(stem - (size_t)(base - image_path)), base);
+    if (m && m->variance[0] && !strcmp(beside, m->variance)) return -1;   /* the same file, tried */
+    return variance_candidate(dst, cap, image_path, m, beside, cmd);
 }
 
 /* Layer i (0: the total) and, with_var, its variance. */

@@ -36,11 +36,13 @@ void render_files_layer_path(char *dst, size_t cap, const char *out, int k);
  * path, no "..", no link leading out, a regular file). NULL, or the reason it is refused (errno
  * ENOENT if it does not exist). Never a file to write: an output is named on the command line. */
 const char *render_files_variance_path(char *dst, size_t cap, const char *image_path, const char *name);
-/* The variance that the sidecar m of image_path names, found as render_files_variance_path says and
- * checked as render_files_read checks one (its own sidecar of this render, its header of the image's
- * size), without reading its pixels: 0 (its path in dst); -1 if m names none or it does not exist;
- * 1 after printing why ("pathlab CMD: ..."). */
-int render_files_named_variance(char *dst, size_t cap, const char *image_path, const sidecar *m, const char *cmd);
+/* The variance of the image at image_path (m its sidecar, NULL if it has none), for grade, compare
+ * and view: the file its sidecar names, else STEM_var.pfm beside it; each confined to the image's
+ * folder (render_files_variance_path) and taken when it has no sidecar or its sidecar says it is
+ * this render's variance (a REF_var.pfm left from an earlier render of REF.pfm is not: a note says
+ * so). A renamed pair (the sidecar still naming tmp_var.pfm) is found beside. 0 (its path in dst),
+ * -1 none, 1 refused (said, "pathlab CMD: ..."). */
+int render_files_find_variance(char *dst, size_t cap, const char *image_path, const sidecar *m, const char *cmd);
 /* Writes mean[0..nlayers-1] to out (layer i >= 1 to out_L{bmin+i-1}) and, if var_out, var[] the same
  * way, each with its sidecar: meta with kind, layer and variance filled in per file. All files are
  * written under temporary names first and renamed together: a failure or a second Ctrl-C leaves

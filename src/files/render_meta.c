@@ -10,24 +10,26 @@ static void describe_sky(char *flags, size_t cap, const sky_spec *sky)
     size_t n = strlen(flags);
     if (sky->kind == SKY_CONSTANT)
         snprintf(flags + n, cap - n, " --sky %.9g,%.9g,%.9g", sky->rgb.x, sky->rgb.y, sky->rgb.z);
-    else if (sky->kind == SKY_IMAGE)
-    {
-        char path[SIDECAR_TEXT];
+    else if (sky->kind == SKY_IMAGE) {
+        char path[4 * SIDECAR_TEXT];
         sidecar_escape(path, sizeof path, sky->path, 1);
         snprintf(flags + n, cap - n, " --sky %s", path);
     }
 }
 
-uint64_t render_meta_scene_id(const scene *s, const sky_spec *sky)
+/* m->sky_id: the fingerprint of the --sky image's pixels (a sky file changed under the same name
+ * merged and resumed with renders of the old one); none for a constant sky (in the flags) or none. */
+static void describe_sky_id(sidecar *m, const scene *s, const sky_spec *sky)
 {
-    uint64_t h = mesh_fingerprint(&s->m);
-    if (sky->kind != SKY_IMAGE || !s->sky.L) return h;   /* a constant sky is in the flags line */
+    uint64_t h = 0xCBF29CE484222325ULL;
+    if (sky->kind != SKY_IMAGE || !s->sky.L) return;
     h = fingerprint_bytes(h, &s->sky.w, sizeof s->sky.w);
     h = fingerprint_bytes(h, &s->sky.h, sizeof s->sky.h);
-    return fingerprint_bytes(h, s->sky.L, 3 * sizeof(float) * (size_t)s->sky.w * (size_t)s->sky.h);
+    h = fingerprint_bytes(h, s->sky.L, 3 * sizeof(float) * (size_t)s->sky.w * (size_t)s->sky.h);
+    snprintf(m->sky_id, sizeof m->sky_id, "fnv1a64:%016" PRIx64, h);
 }
 
-void render_meta_describe(sidecar *m, const render_opts *o, const char *scene_path, uint64_t scene_id, const view *v,
+void render_meta_describe(sidecar *m, const render_opts *o, const char *scene_path, const scene *s, const view *v,
                           const char *revision)
 {
     const integrator_opts *io = &o->io;
@@ -37,7 +39,8 @@ void render_meta_describe(sidecar *m, const render_opts *o, const char *scene_pa
     strcpy(m->layer, "total");
     m->seed = o->seed;
     snprintf(m->scene, sizeof m->scene, "%s", scene_path);
-    snprintf(m->scene_id, sizeof m->scene_id, "fnv1a64:%016" PRIx64, scene_id);
+    snprintf(m->scene_id, sizeof m->scene_id, "fnv1a64:%016" PRIx64, mesh_fingerprint(&s->m));
+    describe_sky_id(m, s, &o->sky);
     snprintf(bmax, sizeof bmax, io->bmax == BOUNCES_NO_END ? "inf" : "%d", io->bmax);
     /* --rr-below only when it is not 1 (the classic rule): sidecars written before it stay comparable */
     if (io->rr_depth < 0) snprintf(rr, sizeof rr, "off");
@@ -68,7 +71,7 @@ void render_meta_describe_scene(sidecar *m, const integrator_opts *io, const sce
     if (n < sizeof m->flags && so->obj.decode != TEXTURE_RAW)
         n += (size_t)snprintf(m->flags + n, sizeof m->flags - n, " --texture-decode %s", TEXTURE_DECODE_NAMES[so->obj.decode]);
     if (n < sizeof m->flags && so->obj.mtl) {
-        char path[SIDECAR_TEXT];
+        char path[4 * SIDECAR_TEXT];
         sidecar_escape(path, sizeof path, so->obj.mtl, 1);
         snprintf(m->flags + n, sizeof m->flags - n, " --mtl %.*s", (int)(sizeof m->flags - n), path);
     }

@@ -6,14 +6,11 @@
 #include "render/adaptive.h"
 #include "scene/camera.h"
 
-/* *m: a "mean", "total" sidecar of the render of scene `scene_path` (fingerprint scene_id) under o
- * from view v, by pathlab `revision`; its sample range and its adaptive keys left empty. */
-void render_meta_describe(sidecar *m, const render_opts *o, const char *scene_path, uint64_t scene_id, const view *v,
+/* *m: a "mean", "total" sidecar of the render of scene s (loaded from scene_path, its --sky put on)
+ * under o from view v, by pathlab `revision`: scene-id the fingerprint of its triangles, materials
+ * and textures, sky-id of its --sky image's pixels; its sample range and adaptive keys left empty. */
+void render_meta_describe(sidecar *m, const render_opts *o, const char *scene_path, const scene *s, const view *v,
                           const char *revision);
-/* The fingerprint of what a render lights and sees: the scene's triangles, materials and textures
- * (mesh_fingerprint), and the pixels of an image given as --sky (a sky file changed under the same
- * name must not merge with renders of the old one). */
-uint64_t render_meta_scene_id(const scene *s, const sky_spec *sky);
 /* The flags of the material and the scene's loading appended to m->flags, each when not its default:
  * --material, --normals, --texture-filter, --texture-decode, --mtl FILE. */
 void render_meta_describe_scene(sidecar *m, const integrator_opts *io, const scene_opts *so);

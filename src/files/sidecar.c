@@ -37,7 +37,8 @@ void sidecar_escape(char *dst, size_t cap, const char *src, int spaces)
     size_t n = 0;
     for (; *src; src++) {
         unsigned char c = (unsigned char)*src;
-        int plain = c >= 0x20 && c != 0x7f && c != '\\' && !(spaces && c == ' ');
+        /* a space first or last too: the reader trims the blanks around a value */
+        int plain = c >= 0x20 && c != 0x7f && c != '\\' && !(c == ' ' && (spaces || n == 0 || !src[1]));
         if (n + (plain ? 1 : 4) >= cap) break;
         if (plain) dst[n++] = (char)c;
         else n += (size_t)sprintf(dst + n, "\\x%02x", c);
@@ -79,6 +80,7 @@ int sidecar_write_to(const sidecar *m, const char *image_path, const char *path)
     if (m->sample_count[0]) fprintf(f, "sample-count %s\n", count);
     fprintf(f, "seed %" PRIu64 "\n", m->seed);
     fprintf(f, "scene %s\nscene-id %s\nflags %s\ncamera %s\n", scene, m->scene_id, m->flags, m->camera);
+    if (m->sky_id[0]) fprintf(f, "sky-id %s\n", m->sky_id);
     if (m->variance[0]) fprintf(f, "variance %s\n", variance);
     if (m->layers_n > 0) fprintf(f, "layers %d:%d\n", m->layers_first, m->layers_first + m->layers_n - 1);
     if (m->stopped[0]) fprintf(f, "stopped %s\n", m->stopped);
@@ -161,6 +163,7 @@ static int parse_line(sidecar *m, const char *key, const char *v)
     if (!strcmp(key, "seed")) return parse_u64(&m->seed, v);
     if (!strcmp(key, "scene")) return set_name(m->scene, sizeof m->scene, v);
     if (!strcmp(key, "scene-id")) return set_text(m->scene_id, sizeof m->scene_id, v);
+    if (!strcmp(key, "sky-id")) return set_text(m->sky_id, sizeof m->sky_id, v);
     if (!strcmp(key, "flags")) return set_text(m->flags, sizeof m->flags, v);
     if (!strcmp(key, "camera")) return set_text(m->camera, sizeof m->camera, v);
     if (!strcmp(key, "variance")) return set_name(m->variance, sizeof m->variance, v);
@@ -269,7 +272,10 @@ int sidecar_check_same(const sidecar *a, const sidecar *b, const char *cmd, cons
     }
     if (strcmp(a->kind, b->kind)) return differ(cmd, a_name, b_name, "kind", a->kind, b->kind);
     if (strcmp(a->layer, b->layer)) return differ(cmd, a_name, b_name, "layer", a->layer, b->layer);
-    if (strcmp(a->scene_id, b->scene_id)) return differ(cmd, a_name, b_name, "scene (its triangles, materials, textures or --sky image)", a->scene, b->scene);
+    if (strcmp(a->scene_id, b->scene_id)) return differ(cmd, a_name, b_name, "scene (its triangles, materials or textures)", a->scene, b->scene);
+    /* a sidecar written before sky-id existed has none: its sky cannot be compared */
+    if (a->sky_id[0] && b->sky_id[0] && strcmp(a->sky_id, b->sky_id))
+        return differ(cmd, a_name, b_name, "--sky image (its pixels; the same name, another file)", a->sky_id, b->sky_id);
     if (strcmp(a->flags, b->flags)) return differ(cmd, a_name, b_name, "flags", a->flags, b->flags);
     if (strcmp(a->sampler, b->sampler))
         return differ(cmd, a_name, b_name, "sampler", a->sampler[0] ? a->sampler : "independent", b->sampler[0] ? b->sampler : "independent");

@@ -4,6 +4,7 @@
  * One "key value" per line, '#' starts a comment, unknown keys are skipped (later versions may add some):
  *   kind mean | variance       samples 0:384[,1000:1200]     seed 1         layer total | L3
  *   scene PATH   scene-id ID   flags ...   camera ...   variance FILE   layers A:B   revision R
+ *   sky-id ID (with --sky IMAGE)
  * and for an adaptive render (docs/adaptive.md), whose pixel x holds the samples 0 .. n(x) - 1:
  *   adaptive FLAGS   spp-cap N   spp-mean X   pilot-seed S   sample-count FILE
  * and when the sampler is not independent (docs/sampler.md):
@@ -32,7 +33,9 @@ typedef struct {
     uint64_t seed;
     char scene[SIDECAR_TEXT];      /* the scene as given (for people; merge compares scene_id) */
     char scene_id[40];             /* a fingerprint of the triangles and materials rendered */
-    char flags[SIDECAR_TEXT];      /* every flag that changes the samples, in one canonical form */
+    char sky_id[40];               /* of the --sky image's pixels ("" if none, or written before it) */
+    char flags[4 * SIDECAR_TEXT];  /* every flag that changes the samples, in one canonical form (its
+                                      paths escaped: up to 4 bytes a character) */
     char camera[SIDECAR_TEXT];     /* the camera used, exactly (%.9g) */
     char variance[SIDECAR_TEXT];   /* the variance image's file name, in the same folder ("" if none) */
     int layers_first, layers_n;    /* --split wrote the layers L_first .. L_(first + n - 1), FILE_Lk.pfm

@@ -6,7 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "image/linear_file.h"
-#include "sys/input_file.h"
+#include "files/render_files.h"
+#include <sys/stat.h>
 #include "sys/output_path.h"
 #include "util/path.h"
 
@@ -59,10 +60,16 @@ static int entry_kind(const char *dir, const char *name, const char *ref)
     if (img_format_of(low) != IMG_PFM && img_format_of(low) != IMG_HDR) return 4;
     if (path_ends_with(low, "_var.pfm")) return 1;
     if (strstr(low, "_split_l")) return 2;
-    {   /* a link leading out is graded, to be refused in its row, never taken for the reference */
-        char path[PATH_CAP];
+    {
+        char path[PATH_CAP], a[PATH_CAP], b[PATH_CAP];
+        struct stat st;
         snprintf(path, sizeof path, "%s/%s", dir, name);
-        if (input_file_link_out(path)) return 0;
+        render_files_key(a, sizeof a, path);
+        render_files_key(b, sizeof b, ref);
+        if (!strcmp(a, b)) return 3;   /* --ref itself, whatever it is (a teacher's link to elsewhere too) */
+        /* any other link is graded: one leading out is refused in its row, one to the reference
+         * (a student's bob.pfm -> ref.pfm) is flagged as a copy of it, not left out as the reference */
+        if (lstat(path, &st) == 0 && S_ISLNK(st.st_mode)) return 0;
     }
     return is_reference(dir, name, ref) ? 3 : 0;
 }

@@ -8,15 +8,14 @@
 #include "grade/grade_class.h"
 #include "util/path.h"
 
-/* The variance: --var, else the one the reference's sidecar names (confined and checked: a sidecar
- * naming none means none, so that a REF_var.pfm left from an earlier render of REF.pfm is not taken
- * for the new one's), else, without a sidecar, STEM_var.pfm beside the reference. 0 or 2. */
-static int read_variance(grade_reference *R, const char *path, const char *var, size_t stem)
+/* The variance: --var, else as render_files_find_variance finds it (the one the reference's sidecar
+ * names, else STEM_var.pfm beside it, each only if of this render: a REF_var.pfm left from an
+ * earlier render of REF.pfm is not). 0 or 2. */
+static int read_variance(grade_reference *R, const char *path, const char *var)
 {
     int rc = -1;
-    snprintf(R->var_found, sizeof R->var_found, "%.*s_var.pfm", (int)stem, path);
-    if (!var && R->has_meta && (rc = render_files_named_variance(R->var_found, sizeof R->var_found, path, &R->meta, "grade")) > 0) return 2;
-    R->var_path = var ? var : rc == 0 || (!R->has_meta && path_is_readable(R->var_found)) ? R->var_found : NULL;
+    if (!var && (rc = render_files_find_variance(R->var_found, sizeof R->var_found, path, R->has_meta ? &R->meta : NULL, "grade")) > 0) return 2;
+    R->var_path = var ? var : rc == 0 ? R->var_found : NULL;
     if (!R->var_path) return 0;
     if (img_read_pfm(&R->var, R->var_path)) return 2;
     if (R->var.w != R->ref.w || R->var.h != R->ref.h) {
@@ -60,7 +59,7 @@ int grade_reference_read(grade_reference *R, const char *path, const char *var, 
     R->refs.channels = info.channels;
     R->has_meta = sidecar_read(&R->meta, path) == 0;
     R->refs.pixel_center = R->has_meta ? strstr(R->meta.flags, "--pixel-center") != NULL : -1;
-    if (read_variance(R, path, var, stem) || read_layers(R, path, layers, stem)) return 2;
+    if (read_variance(R, path, var) || read_layers(R, path, layers, stem)) return 2;
     return grade_check_reference(&R->refs, path, R->var_path);
 }
 

@@ -36,6 +36,7 @@ typedef struct {
     uint32_t bits;
     int count, pad;       /* bits held; of which zeros fed at a marker or the end (consumed: truncated) */
     uint16_t q[4][64];
+    int q_defined;        /* bit t: table t was read (a file without its DQT decoded to flat grey) */
     jhuff dc[4], ac[4];
     jcomp c[3];
     int nc, w, h, hmax, vmax, progressive, restart, rgb, frame;
@@ -139,6 +140,7 @@ static int read_dqt(jpeg *j, const unsigned char *s, size_t len)
         size_t size = 1 + 64 * (size_t)(pq + 1);
         if (pq > 1 || tq > 3 || len < size) return jfail(j, "bad DQT segment");
         for (k = 0; k < 64; k++) j->q[tq][ZIGZAG[k]] = (uint16_t)(pq ? be16(s + 1 + 2 * k) : s[1 + k]);
+        j->q_defined |= 1 << tq;
         s += size;
         len -= size;
     }
@@ -466,6 +468,8 @@ static int to_image(image *im, const jpeg *j)
     unsigned char *plane[3] = {NULL, NULL, NULL};
     int i, err = 0;
     long x, y;
+    for (i = 0; i < j->nc; i++)
+        if (!(j->q_defined >> j->c[i].tq & 1)) return jfail(j, "a component's quantisation table (DQT) is not defined");
     for (i = 0; i < j->nc; i++)
         if (!(plane[i] = component_samples(j, &j->c[i]))) err = jfail(j, "out of memory");
     if (!err && img_alloc(im, j->w, j->h)) err = jfail(j, "out of memory");

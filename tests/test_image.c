@@ -483,6 +483,23 @@ static void test_data_mistakes(void)
     expect_read_error("pfm_byte_order_exact_values_denormal", in_dir("round-said-be.pfm"),
                       "12 of the 12 nonzero values are NaN, infinite, denormal or beyond 1e20); read little-endian "
                       "they are ordinary (0.25 to 2)");
+    {   /* a firefly of 3e38 in a 3x3 image (3 values of 27) and a 1x1 image of 3e38 (big-endian, said
+         * so) are radiance: "not float radiance", and for the second "write the scale as -1.0", which
+         * would read -0.106 (a review, 2026-12-08) */
+        float ff[27], big[3] = {3e38f, 3e38f, 3e38f};
+        image im;
+        int k, ok;
+        for (k = 0; k < 27; k++) ff[k] = 1.0f;
+        ff[12] = ff[13] = ff[14] = 3e38f;
+        build_pfm(in_dir("firefly.pfm"), "PF\n3 3\n-1\n", ff, 27, 0);
+        ok = img_read_pfm(&im, in_dir("firefly.pfm")) == 0;
+        check(ok && im.px[12] == 3e38f && im.px[0] == 1.0f, "pfm_firefly_3x3_reads", NULL);
+        if (ok) img_free(&im);
+        build_pfm(in_dir("big1.pfm"), "PF\n1 1\n1.0\n", big, 3, 1);
+        ok = img_read_pfm(&im, in_dir("big1.pfm")) == 0;
+        check(ok && im.px[0] == 3e38f, "pfm_1x1_big_endian_3e38_reads", NULL);
+        if (ok) img_free(&im);
+    }
     memcpy(junk, "PF\n16 16\n-1\n", 12);
     for (i = 12; i < sizeof junk; i++) junk[i] = (unsigned char)rng();
     spit(in_dir("random.pfm"), junk, sizeof junk);

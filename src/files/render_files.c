@@ -399,17 +399,22 @@ static int variance_of(const sidecar *vm, const sidecar *m)
            !strcmp(vm->flags, m->flags) && !strcmp(vm->camera, m->camera);
 }
 
-/* Candidate `name` (from the image's folder) for the variance of image_path, of sidecar m (NULL: none):
- * 0 taken (into dst), -1 not there or not this render's (said), 1 refused (said). */
-static int variance_candidate(char *dst, size_t cap, const char *image_path, const sidecar *m, const char *name, const char *cmd)
+/* Candidate `name` (from the image's folder) for the variance of image_path, of sidecar m (NULL: none),
+ * named by that sidecar or not: 0 taken (into dst), -1 not there, or found beside but of another
+ * render (said), 1 refused (said: a sidecar naming the wrong file is two renders mixed up). */
+static int variance_candidate(char *dst, size_t cap, const char *image_path, const sidecar *m, const char *name, int named,
+                              const char *cmd)
 {
     sidecar vm;
+    img_pfm_info info;
     const char *why = render_files_variance_path(dst, cap, image_path, name);
     int rc;
     if (why && errno == ENOENT) return -1;
     if (why) { fprintf(stderr, "pathlab %s: %s: %s\n", cmd, shown(dst), why); return 1; }
     if ((rc = sidecar_read(&vm, dst)) > 0) return 1;
-    if (rc < 0 || !m || variance_of(&vm, m)) return 0;   /* no sidecar on one side: as named, unchecked */
+    if (rc < 0 || !m) return 0;   /* no sidecar on one side: as found, unchecked (a pair copied without its .meta) */
+    if (named) return img_read_pfm_header(image_path, &info) || check_one(cmd, dst, "variance", m, &vm, info.w, info.h);
+    if (variance_of(&vm, m)) return 0;
     fprintf(stderr, "pathlab %s: note: %s is not the variance of %s (its sidecar is of another render): not used\n", cmd,
             shown(dst), shown(image_path));
     return -1;
@@ -421,10 +426,10 @@ int render_files_find_variance(char *dst, size_t cap, const char *image_path, co
     const char *slash = strrchr(image_path, '/'), *base = slash ? slash + 1 : image_path;
     char beside[PATH_CAP];
     int rc = -1;
-    if (m && m->variance[0] && (rc = variance_candidate(dst, cap, image_path, m, m->variance, cmd)) >= 0) return rc;
+    if (m && m->variance[0] && (rc = variance_candidate(dst, cap, image_path, m, m->variance, 1, cmd)) >= 0) return rc;
     snprintf(beside, sizeof beside, "%.*s_var.pfm", (int)(stem - (size_t)(base - image_path)), base);
     if (m && m->variance[0] && !strcmp(beside, m->variance)) return -1;   /* the same file, tried */
-    return variance_candidate(dst, cap, image_path, m, beside, cmd);
+    return variance_candidate(dst, cap, image_path, m, beside, 0, cmd);
 }
 
 /* Layer i (0: the total) and, with_var, its variance. */

@@ -90,4 +90,9 @@ mkdir -p "$TMP/tex"; printf 'P3\n2 2\n255\n255 0 0 0 255 0 0 0 255 255 255 255\n
 printf 'newmtl m\nKd 1 1 1\nKe 1 1 1\nmap_Kd t.ppm\n' > "$TMP/tex/t.mtl"
 printf 'mtllib t.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl m\nf 1/1 2/2 3/3\n' > "$TMP/tex/t.obj"
 refuse "render -o the scene's texture" "is the texture .*t.ppm of the scene" $PATHLAB render "$TMP/tex/t.obj" $big -o "$TMP/tex/./t.ppm"
+# mtllib T.MTL (any case) and a .jpg texture are no view files; an MTL the OBJ names is an input
+refuse "render --write-view T.MTL" "--write-view .*T.MTL: a view file is text" $PATHLAB render $S $big -o "$TMP/x.pfm" --write-view "$TMP/T.MTL"
+refuse "render --write-view wood.jpg" "--write-view .*wood.jpg: a view file is text" $PATHLAB render $S $big -o "$TMP/x.pfm" --write-view "$TMP/wood.jpg"
+printf 'newmtl m\nKd 1 1 1\nKe 1 1 1\n' > "$TMP/tex/lib.txt"; printf 'mtllib lib.txt\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n' > "$TMP/tex/u.obj"
+refuse "render --write-view = the MTL an mtllib names (lib.txt)" "is the MTL file .*lib.txt of the scene" $PATHLAB render "$TMP/tex/u.obj" $big -o "$TMP/x.pfm" --write-view "$TMP/tex/lib.txt"
 exit 0

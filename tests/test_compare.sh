@@ -200,4 +200,14 @@ expect_err "compare: --sky inside -o named" "--sky .*light.pfm is in the output 
 mkdir -p "$TMP/rp/reference.png"
 expect_status "compare: DIR/reference.png a folder: refused before rendering" 2 $C --spp 1 --ref-spp 2 --estimators light -o "$TMP/rp"
 if [ -z "$(ls "$TMP/rp" | grep -v reference.png)" ]; then pass "compare: DIR/reference.png a folder: nothing written"; else fail "compare: written: $(ls "$TMP/rp" | tr '\n' ' ')"; fi
+# --write-view over a texture of the scene; a label holding a flag ("light --direct=brdf" was the label
+# "light --direct" for --direct brdf)
+mkdir -p "$TMP/ctex"; printf 'P3\n2 2\n255\n255 0 0 0 255 0 0 0 255 255 255 255\n' > "$TMP/ctex/t.ppm"
+printf 'newmtl m\nKd 1 1 1\nKe 1 1 1\nmap_Kd t.ppm\n' > "$TMP/ctex/t.mtl"
+printf 'mtllib t.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl m\nf 1/1 2/2 3/3\n' > "$TMP/ctex/t.obj"
+cp "$TMP/ctex/t.mtl" "$TMP/ctex/t_before.mtl"
+expect_status "compare: --write-view = the scene's MTL refused" 2 $PATHLAB compare "$TMP/ctex/t.obj" --size 8x8 --quiet --spp 1 --estimators light --write-view "$TMP/ctex/t.mtl" -o "$TMP/bad25"
+if cmp -s "$TMP/ctex/t.mtl" "$TMP/ctex/t_before.mtl"; then pass "compare: the MTL left whole"; else fail "compare: the MTL was replaced"; fi
+expect_status "compare: a label holding a flag refused" 2 $C --spp 1 --estimators "light --direct=brdf" -o "$TMP/bad26"
+expect_err "compare: a label holding a flag: said" "before '=' holds a flag"
 exit 0

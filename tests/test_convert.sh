@@ -99,4 +99,9 @@ expect_err "convert A A: said" "is the input"
 mkdir -p "$TMP/o3.pfm.meta"
 expect_status "convert with a folder at OUT.pfm.meta refused" 2 $PATHLAB convert "$TMP/grey.pfm" "$TMP/o3.pfm"
 expect_no_file "convert with a folder at OUT.pfm.meta: no image" "$TMP/o3.pfm"
+# a malformed sidecar of the input stops convert before the image is written (the output kept the old render's)
+printf 'kind mean\nseed -1\n' > "$TMP/grey.pfm.meta"
+cp "$TMP/cv_var.pfm" "$TMP/cv2.pfm"; cp "$TMP/cv2.pfm" "$TMP/cv2_before.pfm"
+expect_status "convert with a malformed input sidecar: exit 2" 2 $PATHLAB convert "$TMP/grey.pfm" "$TMP/cv2.pfm"
+if cmp -s "$TMP/cv2.pfm" "$TMP/cv2_before.pfm"; then pass "convert with a malformed input sidecar: the output untouched"; else fail "convert with a malformed input sidecar: the output replaced"; fi
 exit 0

@@ -170,6 +170,23 @@ rm "$TMP/ren/cornell_var.pfm.meta"
 expect_status "a variance without its sidecar: graded" 0 $PATHLAB grade "$TMP/ren/cornell.pfm" --ref "$TMP/ren/cornell.pfm"
 if grep -q "scatter against the reference's own noise" "$TMP/out"; then pass "a variance without its sidecar: used"
 else fail "a variance without its sidecar: not used: $(err_tail "$TMP/err")"; fi
+# a teacher's store of references reached by links (grading/ref.pfm -> ../store/c.pfm, its variance
+# beside the file it leads to): grade stopped on "a symbolic link leads out"
+mkdir -p "$TMP/store" "$TMP/grading"; $PATHLAB render scenes/cornell.obj --quiet --size 16x16 --spp 8 -o "$TMP/store/c.pfm" --variance "$TMP/store/c_var.pfm"
+rm "$TMP"/store/*.meta; ln -s ../store/c.pfm "$TMP/grading/ref.pfm"; ln -s ../store/c_var.pfm "$TMP/grading/ref_var.pfm"
+expect_status "--ref a link to a store, its variance a link too: graded" 0 $PATHLAB grade "$TMP/store/c.pfm" --ref "$TMP/grading/ref.pfm"
+if grep -q "scatter against the reference's own noise" "$TMP/out"; then pass "--ref a link to a store: its variance used"; else fail "--ref a link to a store: no variance: $(err_tail "$TMP/err")"; fi
+# the old name of a renamed pair reused by the next render: the variance beside, of this render, is used
+$PATHLAB render scenes/cornell.obj --quiet --size 16x16 --spp 4 --seed 9 -o "$TMP/ren/tmp.pfm" --variance "$TMP/ren/tmp_var.pfm"
+expect_status "a renamed pair whose old variance name is another render's: graded" 0 $PATHLAB grade "$TMP/ren/cornell.pfm" --ref "$TMP/ren/cornell.pfm"
+expect_err "a renamed pair, the old name reused: the variance beside used, said" "names its variance tmp_var.pfm, now of another render; .*cornell_var.pfm beside it is this render's: used"
+# a stale ref_var.pfm of the same scene under another --sky image is not this render's (sky-id)
+mkdir -p "$TMP/sk2"; "$PFMTOOL" const 8 4 1 1 1 "$TMP/sk2/sky.pfm"
+$PATHLAB render scenes/quad-light.obj --quiet --size 16x16 --spp 4 --sampler independent --sky "$TMP/sk2/sky.pfm" -o "$TMP/sk2/ref.pfm" --variance "$TMP/sk2/ref_var.pfm"
+"$PFMTOOL" const 8 4 5 5 5 "$TMP/sk2/sky.pfm"
+$PATHLAB render scenes/quad-light.obj --quiet --size 16x16 --spp 4 --sampler independent --sky "$TMP/sk2/sky.pfm" -o "$TMP/sk2/ref.pfm"
+expect_status "a stale ref_var.pfm of another sky: graded" 0 $PATHLAB grade "$TMP/sk2/ref.pfm" --ref "$TMP/sk2/ref.pfm"
+expect_err "a stale ref_var.pfm of another sky: not used, said" "ref_var.pfm is not the variance of .*ref.pfm"
 # an image scaled by 1e-30 was diagnosed "quantised to 8 bits" (each value within 1e-3 of 0 / 255)
 mkdir -p "$TMP/q"; $PATHLAB render scenes/cornell.obj --quiet --size 32x32 --spp 64 -o "$TMP/q/ref.pfm" --variance "$TMP/q/ref_var.pfm"
 $PATHLAB render scenes/cornell.obj --quiet --size 32x32 --spp 16 --seed 5 -o "$TMP/q/s.pfm"; "$PFMTOOL" scale "$TMP/q/s.pfm" 1e-30 "$TMP/q/tiny.pfm"

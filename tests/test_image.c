@@ -495,6 +495,12 @@ static void test_data_mistakes(void)
         ok = img_read_pfm(&im, in_dir("firefly.pfm")) == 0;
         check(ok && im.px[12] == 3e38f && im.px[0] == 1.0f, "pfm_firefly_3x3_reads", NULL);
         if (ok) img_free(&im);
+        {   /* a small big-endian image with a negative value said little-endian: read as denormals,
+             * silently, once the advice to swap stopped at negatives; now the advice again */
+            float sn[4] = {1.0f, -1.0f, 2.0f, 0.5f};
+            build_pfm(in_dir("swapneg.pfm"), "Pf\n2 2\n-1.0\n", sn, 4, 1);
+            expect_read_error("pfm_swapped_with_a_negative_value", in_dir("swapneg.pfm"), "write the scale as 1.0 for big-endian data");
+        }
         build_pfm(in_dir("big1.pfm"), "PF\n1 1\n1.0\n", big, 3, 1);
         ok = img_read_pfm(&im, in_dir("big1.pfm")) == 0;
         check(ok && im.px[0] == 3e38f, "pfm_1x1_big_endian_3e38_reads", NULL);

@@ -37,6 +37,7 @@
 #include "util/cli.h"
 #include "sys/output_path.h"
 #include "util/path.h"
+#include "sys/input_file.h"
 
 #define MAX_EST COMPARE_MAX_EST
 #define CALIB_FRACTION 0.2    /* of --time: the length of the last calibration render */
@@ -169,7 +170,10 @@ static int parse_args(comparison *c, int argc, char **argv)
 
 static int load_scene(const comparison *c, scene *s)
 {
+    int i;
     if (scene_load(s, c->base.scene, &c->base.so, c->base.ro.threads, 1)) return 1;
+    for (i = 0; i < c->nest; i++)   /* --write-view over a texture or an MTL of the scene */
+        if (render_files_scene_clash("compare", &c->spec[i].a.cam.write_view, 1, &s->m)) { scene_free(s); return 1; }
     if (scene_add_sky(s, &c->base.ro.sky)) { scene_free(s); return 1; }
     if (!scene_has_light(s))
         fprintf(stderr, "pathlab: warning: %s has no emitters and %s: every image is black\n", shown(c->base.scene),
@@ -344,9 +348,9 @@ static int inputs_clash(const comparison *c)
         const char *v = c->spec[i].a.cam.write_view, *orb = c->spec[i].a.cam.orbiter;
         if (!v) continue;
         render_files_key(b, sizeof b, v);
-        if (img_format_of(v) != IMG_UNKNOWN || path_ends_with(v, ".obj") || path_ends_with(v, ".mtl") ||
-            (!strncmp(a, b, strlen(a)) && !strchr(b + strlen(a), '/'))) {
-            fprintf(stderr, "pathlab compare: --write-view %s: a view file (FILE.view) outside the output folder\n", shown(v));
+        if (render_files_view_name_bad("compare", v)) return 1;
+        if (!strncmp(a, b, strlen(a)) && !strchr(b + strlen(a), '/')) {
+            fprintf(stderr, "pathlab compare: --write-view %s: in the output folder, where compare writes its files\n", shown(v));
             return 1;
         }
         for (k = 0; k < 6; k++) {
@@ -368,9 +372,12 @@ static int run(comparison *c)
     int rc = 2, i;
     memset(&ref, 0, sizeof ref);
     if (load_scene(c, &s)) return 2;
-    if (c->ref && !c->ref_var && (i = view_find_variance(c->ref, c->ref_var_found, sizeof c->ref_var_found, "compare")) != 0) {
+    if (c->ref && !c->ref_var) {   /* --ref is the user's: a link is followed, its variance found beside the file */
+        char *real = input_file_resolved(c->ref);
+        i = view_find_variance(real ? real : c->ref, c->ref_var_found, sizeof c->ref_var_found, "compare");
+        free(real);
         if (i == 2) goto done;   /* refused, said: not a comparison without the noise it named */
-        c->ref_var = c->ref_var_found;
+        if (i == 1) c->ref_var = c->ref_var_found;
     }
     /* the inputs, checked before anything is written */
     if (inputs_clash(c) || make_camera(c, &s) || (c->ref && compare_read_reference(&ref, c->ref, c->ref_var, c->cam.width, c->cam.height))

@@ -62,26 +62,23 @@ static void warn_not_finite(const image *im, const char *path)
             first % 3 == 0 ? "red" : first % 3 == 1 ? "green" : "blue", (double)im->px[first]);
 }
 
-/* A PFM written: the input's sidecar beside it, if the input has one (the same pixels, made the same
+/* A PFM written: m, the input's sidecar (has), beside it (the same pixels, made the same
  * way; the input's variance and sample counts are not copied, so the sidecar names none); if it has
  * none, the output's old sidecar removed (it told --resume that a converted grey image was 2 samples
  * of a Cornell box). 0, or 1 after saying why. */
-static int write_sidecar(const char *in, const char *out)
+static int write_sidecar(sidecar *m, int has, const char *out)
 {
-    sidecar m;
     char meta[PATH_CAP];
-    int rc;
     if (img_format_of(out) != IMG_PFM) return 0;
     sidecar_path(meta, sizeof meta, out);
-    if ((rc = sidecar_read(&m, in)) > 0) return 1;
-    if (rc < 0) {
+    if (!has) {
         if (remove(meta) == 0 || errno == ENOENT) return 0;
         fprintf(stderr, "pathlab convert: %s: cannot remove the sidecar of the file replaced: %s\n", shown(meta), strerror(errno));
         return 1;
     }
-    m.variance[0] = m.sample_count[0] = '\0';
-    m.layers_n = 0;
-    return sidecar_write_to(&m, out, meta);
+    m->variance[0] = m->sample_count[0] = '\0';
+    m->layers_n = 0;
+    return sidecar_write_to(m, out, meta);
 }
 
 /* 1 (said) if the output is the input (convert r.pfm r.pfm rewrote r.pfm's sidecar without its
@@ -105,7 +102,8 @@ int convert_main(int argc, char **argv)
     const cli_flag *tables[] = {flags, NULL};
     const char *path[2];
     image im;
-    int n, err;
+    sidecar m;
+    int n, err = -1, has = 0;
     if (cli_parse("convert", argc, argv, tables, &exposure, path, 2, &n)) return 2;
     if (n != 2) { fprintf(stderr, "pathlab convert: needs an input and an output\n" CONVERT_USAGE); return 2; }
     if (img_format_of(path[1]) == IMG_UNKNOWN || img_format_of(path[1]) == IMG_HDR) {
@@ -113,6 +111,10 @@ int convert_main(int argc, char **argv)
         return 2;
     }
     if (output_path_check("convert", "output", path[1], IMG_EXTENSIONS) || check_output(path[0], path[1])) return 2;
+    /* the input's sidecar first: a malformed one stops here, before the image is written (after, the
+     * output kept the old render's sidecar) */
+    if (img_format_of(path[1]) == IMG_PFM && (err = sidecar_read(&m, path[0])) > 0) return 2;
+    has = img_format_of(path[1]) == IMG_PFM && err == 0;
     if (img_format_of(path[0]) == IMG_HDR ? img_read_hdr(&im, path[0]) : img_read_pfm(&im, path[0])) return 2;
     print_figures(&im, path[0]);
     warn_not_finite(&im, path[0]);
@@ -121,7 +123,7 @@ int convert_main(int argc, char **argv)
         printf("exposure auto: %+.1f stops (the median luminance of the pixels that are not black to mid-grey, %g)\n", exposure,
                EXPOSURE_MID_GREY);
     }
-    err = img_write(&im, path[1], exposure) || write_sidecar(path[0], path[1]);
+    err = img_write(&im, path[1], exposure) || write_sidecar(&m, has, path[1]);
     if (!err) fprintf(stderr, "pathlab convert: wrote %s\n", shown(path[1]));
     img_free(&im);
     return err ? 2 : 0;   /* a failed write: said, with the file and the system's reason */

@@ -129,6 +129,11 @@ static int split_label(estimator_spec *e, char *text, const char *item, size_t l
         memmove(text, eq + 1, strlen(eq + 1) + 1);
         trim(text);
         if (!e->label[0]) { fprintf(stderr, "pathlab: compare: empty label before '=' in '%.*s'\n", (int)len, item); return 1; }
+        if (strstr(e->label, "--")) {   /* "light --direct=brdf" was the label "light --direct" for --direct brdf */
+            fprintf(stderr, "pathlab: compare: '%s' before '=' holds a flag: an estimator is LABEL=FLAGS, cut at its first '=' "
+                    "(write --flag value, not --flag=value)\n", shown(e->label));
+            return 1;
+        }
     } else {
         snprintf(e->label, sizeof e->label, "%s", text);
     }
@@ -161,12 +166,14 @@ static int flag_twice(const estimator_spec *e, const flag_list *f)
 {
     int i, j;
     for (i = 0; i < f->n; i++)
-        for (j = 0; j < i; j++)
-            if (!strncmp(f->tok[i], "--", 2) && !strcmp(f->tok[i], f->tok[j])) {
-                fprintf(stderr, "pathlab: compare: estimator '%s' sets %s twice (by its names or flags): which one?\n",
-                        shown(e->label), f->tok[i]);
+        for (j = 0; j < i; j++) {
+            size_t n = strcspn(f->tok[i], "=");   /* --direct=brdf sets --direct too */
+            if (!strncmp(f->tok[i], "--", 2) && n == strcspn(f->tok[j], "=") && !strncmp(f->tok[i], f->tok[j], n)) {
+                fprintf(stderr, "pathlab: compare: estimator '%s' sets %.*s twice (by its names or flags): which one?\n",
+                        shown(e->label), (int)n, shown(f->tok[i]));
                 return 1;
             }
+        }
     return 0;
 }
 

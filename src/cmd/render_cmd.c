@@ -39,21 +39,12 @@ static int render_inputs(const render_args *a, render_input in[RENDER_MAX_INPUTS
     return k;
 }
 
-/* 1 (said) if an output is one of the scene's textures (-o tex.ppm replaced a map_Kd image): those
- * files are known once the scene is read, before any pixel is rendered. */
-static int writes_over_texture(const render_args *a, const scene *s)
+/* 1 (said) if an output is a texture or an MTL file of the scene (render_files_scene_clash). */
+static int writes_over_scene(const render_args *a, const scene *s)
 {
     const char *outs[4];
-    int i, k;
     outs[0] = a->out, outs[1] = a->variance, outs[2] = a->sample_count, outs[3] = a->cam.write_view;
-    for (i = 0; i < s->m.ntextures; i++)
-        for (k = 0; k < 4; k++)
-            if (outs[k] && path_same_file(outs[k], s->m.textures[i].path)) {
-                fprintf(stderr, "pathlab render: %s is the texture %s of the scene: write to another file\n", shown(outs[k]),
-                        shown(s->m.textures[i].path));
-                return 1;
-            }
-    return 0;
+    return render_files_scene_clash("render", outs, 4, &s->m);
 }
 
 /* What render needs beyond valid flag values: a scene, an output it can write, a last bounce for
@@ -268,7 +259,7 @@ int render_main(int argc, char **argv)
         fprintf(stderr, "%s: %d triangles (%d degenerate dropped), %d emitting, %d materials%s; loaded in %.0f ms, BVH in %.0f ms%s\n",
                 shown(a.scene), s.m.ntris, s.m.ndegenerate, s.lights.n, s.m.nmats - 1, tex, 1e3 * s.load_seconds, 1e3 * s.bvh_seconds, pairs);
     }
-    if (writes_over_texture(&a, &s) || render_make_camera(&a, &s, &cam)) { scene_free(&s); return 2; }
+    if (writes_over_scene(&a, &s) || render_make_camera(&a, &s, &cam)) { scene_free(&s); return 2; }
     if (!scene_has_light(&s))
         fprintf(stderr, "pathlab render: warning: %s has no emitters (no material with Ke > 0) and %s: the image is black\n", shown(a.scene),
                 a.ro.sky.kind == SKY_NONE ? "no --sky" : "the --sky given is black (every pixel 0)");

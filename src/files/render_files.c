@@ -44,13 +44,48 @@ int render_files_check_outputs(const render_input *inputs, int ninputs, const ch
     if (var_out && output_path_check("render", "--variance", var_out, IMG_PFM_EXTENSION)) return 1;
     if (count_out && output_path_check("render", "--sample-count", count_out, NULL)) return 1;   /* .pfm: render_adaptive_check */
     if (view_out && output_path_check("render", "--write-view", view_out, NULL)) return 1;
-    if (view_out && (img_format_of(view_out) != IMG_UNKNOWN || path_ends_with(view_out, ".obj") || path_ends_with(view_out, ".mtl"))) {
-        /* a scene's MTL (named by its mtllib line) or texture would be replaced by a camera */
-        fprintf(stderr, "pathlab render: --write-view %s: a view file is text, not an image, an OBJ or an MTL: name it FILE.view\n",
-                shown(view_out));
-        return 1;
-    }
+    if (view_out && render_files_view_name_bad("render", view_out)) return 1;
     return same_files(inputs, ninputs, out, var_out, count_out, view_out, split, bmin, bmax);
+}
+
+int render_files_view_name_bad(const char *cmd, const char *view_out)
+{
+    static const char *const not_views[] = {".obj", ".mtl", ".pfm", ".ppm", ".pgm", ".pbm", ".pnm", ".png", ".hdr", ".jpg", ".jpeg",
+                                            ".tga", ".bmp", NULL};
+    char low[64];
+    const char *dot = strrchr(view_out, '.');
+    size_t i;
+    int k;
+    if (!dot || strchr(dot, '/') || strlen(dot) >= sizeof low) return 0;
+    for (i = 0; dot[i]; i++) low[i] = (char)(dot[i] >= 'A' && dot[i] <= 'Z' ? dot[i] - 'A' + 'a' : dot[i]);
+    low[i] = '\0';
+    for (k = 0; not_views[k] && strcmp(low, not_views[k]); k++) continue;
+    if (!not_views[k]) return 0;
+    /* a scene's MTL (named by its mtllib line) or texture would be replaced by a camera */
+    fprintf(stderr, "pathlab %s: --write-view %s: a view file is text, not an image, an OBJ or an MTL: name it FILE.view\n", cmd,
+            shown(view_out));
+    return 1;
+}
+
+int render_files_scene_clash(const char *cmd, const char *const *outs, int n, const mesh *m)
+{
+    int i, k;
+    for (k = 0; k < n; k++) {
+        if (!outs[k]) continue;
+        for (i = 0; i < m->ntextures; i++)
+            if (path_same_file(outs[k], m->textures[i].path)) {
+                fprintf(stderr, "pathlab %s: %s is the texture %s of the scene: write to another file\n", cmd, shown(outs[k]),
+                        shown(m->textures[i].path));
+                return 1;
+            }
+        for (i = 0; i < m->nmtl_files; i++)
+            if (path_same_file(outs[k], m->mtl_files[i])) {
+                fprintf(stderr, "pathlab %s: %s is the MTL file %s of the scene: write to another file\n", cmd, shown(outs[k]),
+                        shown(m->mtl_files[i]));
+                return 1;
+            }
+    }
+    return 0;
 }
 
 static const char *base_name(const char *p)
@@ -323,12 +358,15 @@ static int camera_size(const sidecar *m, int *w, int *h)
     return s && sscanf(s, "size %dx%d", w, h) == 2 && *w > 0 && *h > 0;
 }
 
+/* 1 if both sidecars know their --sky image's pixels and they differ (one written before sky-id: unknown). */
+static int sky_differs(const sidecar *a, const sidecar *b) { return a->sky_id[0] && b->sky_id[0] && strcmp(a->sky_id, b->sky_id); }
+
 /* A file that goes with the image whose sidecar is `of` (its layer, its variance) must be of that
  * same render: scene, seed, flags, camera. 0, or 1 after printing why. */
 static int same_render(const char *cmd, const char *path, const sidecar *m, const sidecar *of)
 {
     const char *key = strcmp(m->scene_id, of->scene_id) ? "scene-id" : m->seed != of->seed ? "seed" : strcmp(m->flags, of->flags) ? "flags"
-                      : strcmp(m->camera, of->camera) ? "camera" : NULL;
+                      : strcmp(m->camera, of->camera) ? "camera" : sky_differs(m, of) ? "sky-id" : NULL;
     if (!key) return 0;
     fprintf(stderr, "pathlab %s: %s is not of the render it goes with: its sidecar's %s differs: files of two renders mixed up\n",
             cmd, path, key);
@@ -396,14 +434,13 @@ static int variance_of(const sidecar *vm, const sidecar *m)
     sidecar_ranges_text(vm, a, sizeof a);
     sidecar_ranges_text(m, b, sizeof b);
     return !strcmp(vm->kind, "variance") && !strcmp(a, b) && !strcmp(vm->scene_id, m->scene_id) && vm->seed == m->seed &&
-           !strcmp(vm->flags, m->flags) && !strcmp(vm->camera, m->camera);
+           !strcmp(vm->flags, m->flags) && !strcmp(vm->camera, m->camera) && !sky_differs(vm, m);
 }
 
-/* Candidate `name` (from the image's folder) for the variance of image_path, of sidecar m (NULL: none),
- * named by that sidecar or not: 0 taken (into dst), -1 not there, or found beside but of another
- * render (said), 1 refused (said: a sidecar naming the wrong file is two renders mixed up). */
-static int variance_candidate(char *dst, size_t cap, const char *image_path, const sidecar *m, const char *name, int named,
-                              const char *cmd)
+/* Candidate `name` (from the image's folder) for the variance of image_path, of sidecar m (NULL: none):
+ * 0 taken (into dst), -1 not there, 2 there but its sidecar is of another render (nothing said),
+ * 1 refused (said: a link leading out, a malformed sidecar). */
+static int variance_candidate(char *dst, size_t cap, const char *image_path, const sidecar *m, const char *name, const char *cmd)
 {
     sidecar vm;
     img_pfm_info info;
@@ -413,23 +450,39 @@ static int variance_candidate(char *dst, size_t cap, const char *image_path, con
     if (why) { fprintf(stderr, "pathlab %s: %s: %s\n", cmd, shown(dst), why); return 1; }
     if ((rc = sidecar_read(&vm, dst)) > 0) return 1;
     if (rc < 0 || !m) return 0;   /* no sidecar on one side: as found, unchecked (a pair copied without its .meta) */
-    if (named) return img_read_pfm_header(image_path, &info) || check_one(cmd, dst, "variance", m, &vm, info.w, info.h);
-    if (variance_of(&vm, m)) return 0;
-    fprintf(stderr, "pathlab %s: note: %s is not the variance of %s (its sidecar is of another render): not used\n", cmd,
-            shown(dst), shown(image_path));
-    return -1;
+    if (!variance_of(&vm, m)) return 2;
+    return img_read_pfm_header(image_path, &info) || check_one(cmd, dst, "variance", m, &vm, info.w, info.h);   /* its size */
 }
 
 int render_files_find_variance(char *dst, size_t cap, const char *image_path, const sidecar *m, const char *cmd)
 {
     size_t n = strlen(image_path), stem = n > 4 && !strcmp(image_path + n - 4, ".pfm") ? n - 4 : n;
     const char *slash = strrchr(image_path, '/'), *base = slash ? slash + 1 : image_path;
-    char beside[PATH_CAP];
-    int rc = -1;
-    if (m && m->variance[0] && (rc = variance_candidate(dst, cap, image_path, m, m->variance, 1, cmd)) >= 0) return rc;
+    char beside[PATH_CAP], named[PATH_CAP];
+    int rc = -1, rb;
+    sidecar vm;
+    if (m && m->variance[0] && ((rc = variance_candidate(named, sizeof named, image_path, m, m->variance, cmd)) == 0 || rc == 1)) {
+        if (rc == 0) snprintf(dst, cap, "%s", named);
+        return rc;
+    }
     snprintf(beside, sizeof beside, "%.*s_var.pfm", (int)(stem - (size_t)(base - image_path)), base);
-    if (m && m->variance[0] && !strcmp(beside, m->variance)) return -1;   /* the same file, tried */
-    return variance_candidate(dst, cap, image_path, m, beside, 0, cmd);
+    rb = m && m->variance[0] && !strcmp(beside, m->variance) ? -1 : variance_candidate(dst, cap, image_path, m, beside, cmd);
+    if (rb == 0 && rc == 2)   /* the name reused by another render since (tmp_var.pfm), the pair renamed */
+        fprintf(stderr, "pathlab %s: note: %s.meta names its variance %s, now of another render; %s beside it is this "
+                "render's: used\n", cmd, shown(image_path), shown(m->variance), shown(dst));
+    if (rb == 0 || rb == 1) return rb;
+    if (rc == 2) {   /* named, of another render, and nothing better: two renders mixed up, said as merge says it */
+        img_pfm_info info;
+        if (sidecar_read(&vm, named) == 0 && img_read_pfm_header(image_path, &info) == 0) check_one(cmd, named, "variance", m, &vm, info.w, info.h);
+        return 1;
+    }
+    if (rb == 2)
+        fprintf(stderr, "pathlab %s: note: %s is not the variance of %s (its sidecar is of another render): not used\n", cmd,
+                shown(dst), shown(image_path));
+    else if (m && m->variance[0])
+        fprintf(stderr, "pathlab %s: note: %s.meta names its variance %s, which is not there: none used\n", cmd,
+                shown(image_path), shown(m->variance));
+    return -1;
 }
 
 /* Layer i (0: the total) and, with_var, its variance. */

@@ -5,6 +5,7 @@
 #define PATHLAB_RENDER_FILES_H
 #include "files/sidecar.h"
 #include "image/image.h"
+#include "scene/mesh.h"
 
 typedef struct {
     sidecar meta;       /* of FILE.pfm */
@@ -29,6 +30,12 @@ int render_files_check_outputs(const render_input *inputs, int ninputs, const ch
 /* One key per file whatever its spelling (o/a.pfm, ./o/a.pfm, o/../o/a.pfm): its folder's real path and
  * its name (a folder that does not resolve kept as written). */
 void render_files_key(char *dst, size_t cap, const char *path);
+/* 1 (said "pathlab CMD: ...") if --write-view's name is one of an image, a texture, an OBJ or an MTL
+ * (any case: mtllib T.MTL), which a camera must not replace. */
+int render_files_view_name_bad(const char *cmd, const char *view_out);
+/* 1 (said) if one of the n outputs (NULL: none) is a texture or an MTL file of the scene m (known once
+ * it is read, before any pixel is rendered): -o tex.ppm replaced a map_Kd image. */
+int render_files_scene_clash(const char *cmd, const char *const *outs, int n, const mesh *m);
 /* out.pfm, layer k -> out_Lk.pfm */
 void render_files_layer_path(char *dst, size_t cap, const char *out, int k);
 /* The variance file that the sidecar of image_path names (name), into dst[cap]: an input, resolved

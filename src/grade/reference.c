@@ -7,6 +7,8 @@
 #include "files/render_files.h"
 #include "grade/grade_class.h"
 #include "util/path.h"
+#include "sys/input_file.h"
+#include <stdlib.h>
 
 /* The variance: --var, else as render_files_find_variance finds it (the one the reference's sidecar
  * names, else STEM_var.pfm beside it, each only if of this render: a REF_var.pfm left from an
@@ -14,7 +16,12 @@
 static int read_variance(grade_reference *R, const char *path, const char *var)
 {
     int rc = -1;
-    if (!var && (rc = render_files_find_variance(R->var_found, sizeof R->var_found, path, R->has_meta ? &R->meta : NULL, "grade")) > 0) return 2;
+    if (!var) {   /* --ref is the teacher's: a link to a store of references is followed, its variance found there */
+        char *real = input_file_resolved(path);
+        rc = render_files_find_variance(R->var_found, sizeof R->var_found, real ? real : path, R->has_meta ? &R->meta : NULL, "grade");
+        free(real);
+        if (rc > 0) return 2;
+    }
     R->var_path = var ? var : rc == 0 ? R->var_found : NULL;
     if (!R->var_path) return 0;
     if (img_read_pfm(&R->var, R->var_path)) return 2;

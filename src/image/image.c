@@ -347,14 +347,14 @@ static int read_pixels(FILE *f, const char *path, const pfm_header *hd, size_t n
 }
 
 /* The values of the pixel data read in one byte order: how many are nonzero, how many of those
- * are NaN or infinite, how many are absurd for radiance (denormal, or beyond 1e20 in size), and
- * how many negative. */
-typedef struct { size_t nonzero, nonfinite, absurd, negative; double max_abs, lo, hi; } order_stats;
+ * are NaN or infinite, how many are absurd for radiance (denormal, or beyond 1e20 in size), how
+ * many negative, how many denormal. */
+typedef struct { size_t nonzero, nonfinite, absurd, negative, denormal; double max_abs, lo, hi; } order_stats;
 
 static void order_stats_of(const unsigned char *data, size_t n, int big_endian, order_stats *s)
 {
     size_t i;
-    s->nonzero = s->nonfinite = s->absurd = s->negative = 0;
+    s->nonzero = s->nonfinite = s->absurd = s->negative = s->denormal = 0;
     s->max_abs = 0.0;
     s->lo = FLT_MAX;
     s->hi = -FLT_MAX;
@@ -368,15 +368,16 @@ static void order_stats_of(const unsigned char *data, size_t n, int big_endian, 
         s->nonzero++;
         if (a > 1e20 || a < FLT_MIN) s->absurd++;
         s->negative += v < 0.0f;
+        s->denormal += a < FLT_MIN;
         if (a > s->max_abs) s->max_abs = a;
     }
 }
 
 /* The header's byte order is wrong when over 1% of the nonzero values read in it are NaN,
- * infinite or absurd, and at most 1% are absurd or negative read in the other order (a 1x1 image of
- * 3e38 reads -0.106 swapped: no advice to swap it). When over 10% are absurd in both orders, and
- * at least 8 of them, the data is not float radiance (a firefly of 3e38 in a 3x3 image is 3 values
- * of 27: radiance, left to the caller). Otherwise the values are left to the caller
+ * infinite or absurd, and at most 1% are absurd and fewer than half negative read in the other order
+ * (a 1x1 image of 3e38 reads -0.106 swapped: no advice to swap it). When over 10% are absurd in both
+ * orders, and at least 8 of them or any denormal, the data is not float radiance (a firefly of 3e38
+ * in a 3x3 image, 3 values of 27 and none denormal, is radiance, left to the caller). Otherwise the values are left to the caller
  * (image/radiance.h finds NaN, infinite and negative values). Returns 0 or prints and returns 1. */
 static int check_byte_order(const unsigned char *data, size_t n, const pfm_header *hd, const char *path)
 {
@@ -386,7 +387,7 @@ static int check_byte_order(const unsigned char *data, size_t n, const pfm_heade
     order_stats_of(data, n, hd->big_endian, &as);
     if ((as.absurd + as.nonfinite) * 100 <= as.nonzero) return 0;
     order_stats_of(data, n, !hd->big_endian, &other);
-    if ((other.absurd + other.negative) * 100 <= other.nonzero) {
+    if (other.absurd * 100 <= other.nonzero && other.negative * 2 < other.nonzero) {
         fprintf(stderr, "%s: the header's scale %s%s says %s-endian, but read so the values are absurd "
                 "(up to %.2g; %zu of the %zu nonzero values are NaN, infinite, denormal or beyond 1e20); "
                 "read %s-endian they are ordinary (%.3g to %.3g): write the scale as %s for %s-endian data\n",
@@ -395,7 +396,7 @@ static int check_byte_order(const unsigned char *data, size_t n, const pfm_heade
                 order[!hd->big_endian]);
         return 1;
     }
-    if (as.absurd * 10 > as.nonzero && as.absurd >= 8) {
+    if (as.absurd * 10 > as.nonzero && (as.absurd >= 8 || as.denormal > 0)) {
         fprintf(stderr, "%s: the pixel data is not float radiance: read %s-endian (as the header's scale "
                 "%s%s says), %zu of the %zu nonzero values are NaN, infinite, denormal or beyond 1e20, and "
                 "read %s-endian %zu are\n", shown(path), order[hd->big_endian], sign, shown(hd->scale_text),

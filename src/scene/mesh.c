@@ -17,6 +17,8 @@ void mesh_free(mesh *m)
     free(m->tri_t);
     while (m->ntextures > 0) texture_free(&m->textures[--m->ntextures]);
     free(m->textures);
+    while (m->nmtl_files > 0) free(m->mtl_files[--m->nmtl_files]);
+    free(m->mtl_files);
     memset(m, 0, sizeof *m); /* a second mesh_free, or a look at the counts, stays harmless */
 }
 

@@ -38,6 +38,9 @@ typedef struct {
     int *tri_n, *tri_t; /* 3 vn / vt indices per triangle, -1 for a corner without one; NULL if no corner has one */
     texture *textures;  /* the images the materials name, each file once */
     int ntextures;
+    char **mtl_files;   /* the MTL files its mtllib lines name (as joined to the OBJ's folder), each once:
+                           inputs no output may replace */
+    int nmtl_files;
     int n_energy;       /* materials with Kd + Ks > 1 in a channel; energy_note names the first one */
     char energy_note[320];
 } mesh;

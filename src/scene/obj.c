@@ -504,7 +504,7 @@ int obj_load_with(const char *path, mesh *m, const mtl_opts *o, int quiet)
 {
     objtext t;
     loader L;
-    int err, ok = 0, i;
+    int err, ok = 0;
     memset(m, 0, sizeof *m);
     memset(&L, 0, sizeof L);
     L.m = m;
@@ -518,8 +518,7 @@ int obj_load_with(const char *path, mesh *m, const mtl_opts *o, int quiet)
     objtext_close(&t);
     free(L.face);
     free(L.poly);
-    for (i = 0; i < L.nlibs; i++) free(L.libs[i]);
-    free(L.libs);
+    m->mtl_files = L.libs, m->nmtl_files = L.nlibs;   /* the mesh's now: freed by mesh_free */
     free(L.dir_real);
     if (!ok) mesh_free(m);
     return ok ? 0 : 1;

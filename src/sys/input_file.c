@@ -83,6 +83,8 @@ const char *input_file_beside(char *dst, size_t cap, const char *owner, const ch
     return why;
 }
 
+char *input_file_resolved(const char *path) { return realpath(path, NULL); }
+
 const char *input_file_link_out(const char *path)
 {
     struct stat st;

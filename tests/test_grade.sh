@@ -166,7 +166,7 @@ for f in tmp.pfm tmp.pfm.meta tmp_var.pfm tmp_var.pfm.meta; do mv "$TMP/ren/$f" 
 expect_status "a renamed reference: graded" 0 $PATHLAB grade "$TMP/ren/cornell.pfm" --ref "$TMP/ren/cornell.pfm"
 if grep -q "scatter against the reference's own noise" "$TMP/out"; then pass "a renamed reference: its variance found beside it"
 else fail "a renamed reference: its variance not used: $(grep -E "exact pixels" "$TMP/out" | head -c 200)"; fi
-rm "$TMP/ren/cornell_var.pfm.meta"
+mv "$TMP/ren/cornell_var.pfm.meta" "$TMP/cornell_var_meta_aside"
 expect_status "a variance without its sidecar: graded" 0 $PATHLAB grade "$TMP/ren/cornell.pfm" --ref "$TMP/ren/cornell.pfm"
 if grep -q "scatter against the reference's own noise" "$TMP/out"; then pass "a variance without its sidecar: used"
 else fail "a variance without its sidecar: not used: $(err_tail "$TMP/err")"; fi
@@ -176,10 +176,16 @@ mkdir -p "$TMP/store" "$TMP/grading"; $PATHLAB render scenes/cornell.obj --quiet
 rm "$TMP"/store/*.meta; ln -s ../store/c.pfm "$TMP/grading/ref.pfm"; ln -s ../store/c_var.pfm "$TMP/grading/ref_var.pfm"
 expect_status "--ref a link to a store, its variance a link too: graded" 0 $PATHLAB grade "$TMP/store/c.pfm" --ref "$TMP/grading/ref.pfm"
 if grep -q "scatter against the reference's own noise" "$TMP/out"; then pass "--ref a link to a store: its variance used"; else fail "--ref a link to a store: no variance: $(err_tail "$TMP/err")"; fi
-# the old name of a renamed pair reused by the next render: the variance beside, of this render, is used
+# the old name of a renamed pair reused by the next render: the variance beside, of this render (its
+# sidecar says so), is used; without its sidecar nothing shows it is this render's: refused
+mv "$TMP/cornell_var_meta_aside" "$TMP/ren/cornell_var.pfm.meta"
 $PATHLAB render scenes/cornell.obj --quiet --size 16x16 --spp 4 --seed 9 -o "$TMP/ren/tmp.pfm" --variance "$TMP/ren/tmp_var.pfm"
 expect_status "a renamed pair whose old variance name is another render's: graded" 0 $PATHLAB grade "$TMP/ren/cornell.pfm" --ref "$TMP/ren/cornell.pfm"
 expect_err "a renamed pair, the old name reused: the variance beside used, said" "names its variance tmp_var.pfm, now of another render; .*cornell_var.pfm beside it is this render's: used"
+mv "$TMP/ren/cornell_var.pfm.meta" "$TMP/cornell_var_meta_aside"
+expect_status "a renamed pair, the old name reused, the variance beside without a sidecar: refused" 2 $PATHLAB grade "$TMP/ren/cornell.pfm" --ref "$TMP/ren/cornell.pfm"
+expect_err "... said: two renders mixed up" "tmp_var.pfm .*files of two renders mixed up"
+mv "$TMP/cornell_var_meta_aside" "$TMP/ren/cornell_var.pfm.meta"
 # a stale ref_var.pfm of the same scene under another --sky image is not this render's (sky-id)
 mkdir -p "$TMP/sk2"; "$PFMTOOL" const 8 4 1 1 1 "$TMP/sk2/sky.pfm"
 $PATHLAB render scenes/quad-light.obj --quiet --size 16x16 --spp 4 --sampler independent --sky "$TMP/sk2/sky.pfm" -o "$TMP/sk2/ref.pfm" --variance "$TMP/sk2/ref_var.pfm"
@@ -187,6 +193,20 @@ $PATHLAB render scenes/quad-light.obj --quiet --size 16x16 --spp 4 --sampler ind
 $PATHLAB render scenes/quad-light.obj --quiet --size 16x16 --spp 4 --sampler independent --sky "$TMP/sk2/sky.pfm" -o "$TMP/sk2/ref.pfm"
 expect_status "a stale ref_var.pfm of another sky: graded" 0 $PATHLAB grade "$TMP/sk2/ref.pfm" --ref "$TMP/sk2/ref.pfm"
 expect_err "a stale ref_var.pfm of another sky: not used, said" "ref_var.pfm is not the variance of .*ref.pfm"
+# --ref a link to a store whose c_var.pfm is stale (c.pfm re-rendered without --variance): not used;
+# and a store of content names (abc, x_var.pfm) reached by links beside --ref: the variance link used
+mkdir -p "$TMP/st2/store" "$TMP/st2/grading"
+$PATHLAB render scenes/cornell.obj --quiet --size 16x16 --spp 4 -o "$TMP/st2/store/c.pfm" --variance "$TMP/st2/store/c_var.pfm"
+$PATHLAB render scenes/cornell.obj --quiet --size 16x16 --spp 8 -o "$TMP/st2/store/c.pfm"; ln -s ../store/c.pfm "$TMP/st2/grading/ref.pfm"
+expect_status "--ref a link, a stale variance beside its file: graded" 0 $PATHLAB grade "$TMP/st2/store/c.pfm" --ref "$TMP/st2/grading/ref.pfm"
+expect_err "--ref a link, a stale variance beside its file: not used, said" "c_var.pfm is not the variance of .*c.pfm"
+mkdir -p "$TMP/st3/store" "$TMP/st3/grading"
+$PATHLAB render scenes/cornell.obj --quiet --size 16x16 --spp 4 -o "$TMP/st3/store/abc.pfm" --variance "$TMP/st3/store/def.pfm"
+ln -s ../store/abc.pfm "$TMP/st3/grading/ref.pfm"; ln -s ../store/abc.pfm.meta "$TMP/st3/grading/ref.pfm.meta"
+ln -s ../store/def.pfm "$TMP/st3/grading/def.pfm"; ln -s ../store/def.pfm.meta "$TMP/st3/grading/def.pfm.meta"
+expect_status "a store of content names reached by links: graded" 0 $PATHLAB grade "$TMP/st3/store/abc.pfm" --ref "$TMP/st3/grading/ref.pfm"
+if grep -q "scatter against the reference's own noise" "$TMP/out"; then pass "a store of content names reached by links: the variance used"
+else fail "a store of content names reached by links: no variance: $(err_tail "$TMP/err")"; fi
 # an image scaled by 1e-30 was diagnosed "quantised to 8 bits" (each value within 1e-3 of 0 / 255)
 mkdir -p "$TMP/q"; $PATHLAB render scenes/cornell.obj --quiet --size 32x32 --spp 64 -o "$TMP/q/ref.pfm" --variance "$TMP/q/ref_var.pfm"
 $PATHLAB render scenes/cornell.obj --quiet --size 32x32 --spp 16 --seed 5 -o "$TMP/q/s.pfm"; "$PFMTOOL" scale "$TMP/q/s.pfm" 1e-30 "$TMP/q/tiny.pfm"

@@ -501,6 +501,14 @@ static void test_data_mistakes(void)
             build_pfm(in_dir("swapneg.pfm"), "Pf\n2 2\n-1.0\n", sn, 4, 1);
             expect_read_error("pfm_swapped_with_a_negative_value", in_dir("swapneg.pfm"), "write the scale as 1.0 for big-endian data");
         }
+        {   /* a black 256x256 image holding 5 values, one of them 2e-39 (denormal), is radiance */
+            static float sparse[3 * 256 * 256];
+            sparse[100] = 0.2f, sparse[200] = 1.5f, sparse[300] = 2e-39f, sparse[400] = 0.7f, sparse[500] = 0.1f;
+            build_pfm(in_dir("sparse.pfm"), "PF\n256 256\n-1\n", sparse, 3 * 256 * 256, 0);
+            ok = img_read_pfm(&im, in_dir("sparse.pfm")) == 0;
+            check(ok, "pfm_sparse_with_a_denormal_reads", NULL);
+            if (ok) img_free(&im);
+        }
         build_pfm(in_dir("big1.pfm"), "PF\n1 1\n1.0\n", big, 3, 1);
         ok = img_read_pfm(&im, in_dir("big1.pfm")) == 0;
         check(ok && im.px[0] == 3e38f, "pfm_1x1_big_endian_3e38_reads", NULL);

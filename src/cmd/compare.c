@@ -372,9 +372,11 @@ static int run(comparison *c)
     int rc = 2, i;
     memset(&ref, 0, sizeof ref);
     if (load_scene(c, &s)) return 2;
-    if (c->ref && !c->ref_var) {   /* --ref is the user's: a link is followed, its variance found beside the file */
+    if (c->ref && !c->ref_var) {   /* --ref is the user's: links followed; beside it, else beside the file it leads to */
         char *real = input_file_resolved(c->ref);
-        i = view_find_variance(real ? real : c->ref, c->ref_var_found, sizeof c->ref_var_found, "compare");
+        i = view_find_variance(c->ref, c->ref_var_found, sizeof c->ref_var_found, "compare",
+                               FIND_VARIANCE_TRUSTED | (real && strcmp(real, c->ref) ? FIND_VARIANCE_QUIET : 0));
+        if (i == 0 && real && strcmp(real, c->ref)) i = view_find_variance(real, c->ref_var_found, sizeof c->ref_var_found, "compare", FIND_VARIANCE_TRUSTED);
         free(real);
         if (i == 2) goto done;   /* refused, said: not a comparison without the noise it named */
         if (i == 1) c->ref_var = c->ref_var_found;

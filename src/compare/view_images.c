@@ -28,12 +28,12 @@ static int read_sized(image *im, const char *path, const char **first, const ima
 
 /* The variance of the image at path (render_files_find_variance). 1 if found, 0 if none, 2 after
  * printing why it is refused. */
-int view_find_variance(const char *path, char *out, size_t cap, const char *cmd)
+int view_find_variance(const char *path, char *out, size_t cap, const char *cmd, int how)
 {
     sidecar m;
     int rc = sidecar_read(&m, path);
     if (rc > 0) return 2;
-    rc = render_files_find_variance(out, cap, path, rc == 0 ? &m : NULL, cmd);
+    rc = render_files_find_variance(out, cap, path, rc == 0 ? &m : NULL, how, cmd);
     return rc < 0 ? 0 : rc ? 2 : 1;
 }
 
@@ -46,7 +46,7 @@ static int read_image(view_data *d, html_image *h, image *im, image *var, const 
     h->name = path_file_name(path);
     h->img = im;
     if (read_sized(im, path, first, &d->img[0])) return 2;
-    if (!var_path && (rc = view_find_variance(path, found, sizeof found, "view")) == 2) return 2;
+    if (!var_path && (rc = view_find_variance(path, found, sizeof found, "view", 0)) == 2) return 2;
     if (!var_path && rc == 1) var_path = found;
     if (!var_path) return 0;
     if (read_sized(var, var_path, first, &d->img[0])) return 2;

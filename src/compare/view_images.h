@@ -22,9 +22,9 @@ typedef struct {
 int view_data_read(view_data *d, const char *const *images, int n, const char *ref, const char *var, const char *layers);
 /* The variance of the image at path, into out[cap], as render_files_find_variance finds it (the one
  * its sidecar names, else STEM_var.pfm beside it, each only if of this render); cmd names the command
- * in messages. 1 if found (view, and compare's --ref without --ref-var), 0 if none, 2 after printing
+ * in messages, how the flags of render_files_find_variance. 1 if found (view, and compare's --ref without --ref-var), 0 if none, 2 after printing
  * why it is refused. */
-int view_find_variance(const char *path, char *out, size_t cap, const char *cmd);
+int view_find_variance(const char *path, char *out, size_t cap, const char *cmd, int how);
 /* Frees the images and d itself (allocated by the caller with calloc). */
 void view_data_free(view_data *d);
 #endif

@@ -440,11 +440,12 @@ static int variance_of(const sidecar *vm, const sidecar *m)
 /* Candidate `name` (from the image's folder) for the variance of image_path, of sidecar m (NULL: none):
  * 0 taken (into dst), -1 not there, 2 there but its sidecar is of another render (nothing said),
  * 1 refused (said: a link leading out, a malformed sidecar). */
-static int variance_candidate(char *dst, size_t cap, const char *image_path, const sidecar *m, const char *name, const char *cmd)
+static int variance_candidate(char *dst, size_t cap, const char *image_path, const sidecar *m, const char *name, int trusted,
+                              const char *cmd)
 {
     sidecar vm;
     img_pfm_info info;
-    const char *why = render_files_variance_path(dst, cap, image_path, name);
+    const char *why = trusted ? input_file_beside_trusted(dst, cap, image_path, name) : render_files_variance_path(dst, cap, image_path, name);
     int rc;
     if (why && errno == ENOENT) return -1;
     if (why) { fprintf(stderr, "pathlab %s: %s: %s\n", cmd, shown(dst), why); return 1; }
@@ -454,19 +455,21 @@ static int variance_candidate(char *dst, size_t cap, const char *image_path, con
     return img_read_pfm_header(image_path, &info) || check_one(cmd, dst, "variance", m, &vm, info.w, info.h);   /* its size */
 }
 
-int render_files_find_variance(char *dst, size_t cap, const char *image_path, const sidecar *m, const char *cmd)
+int render_files_find_variance(char *dst, size_t cap, const char *image_path, const sidecar *m, int how, const char *cmd)
 {
+    int trusted = how & FIND_VARIANCE_TRUSTED;
     size_t n = strlen(image_path), stem = n > 4 && !strcmp(image_path + n - 4, ".pfm") ? n - 4 : n;
     const char *slash = strrchr(image_path, '/'), *base = slash ? slash + 1 : image_path;
     char beside[PATH_CAP], named[PATH_CAP];
     int rc = -1, rb;
     sidecar vm;
-    if (m && m->variance[0] && ((rc = variance_candidate(named, sizeof named, image_path, m, m->variance, cmd)) == 0 || rc == 1)) {
+    if (m && m->variance[0] && ((rc = variance_candidate(named, sizeof named, image_path, m, m->variance, trusted, cmd)) == 0 || rc == 1)) {
         if (rc == 0) snprintf(dst, cap, "%s", named);
         return rc;
     }
     snprintf(beside, sizeof beside, "%.*s_var.pfm", (int)(stem - (size_t)(base - image_path)), base);
-    rb = m && m->variance[0] && !strcmp(beside, m->variance) ? -1 : variance_candidate(dst, cap, image_path, m, beside, cmd);
+    rb = m && m->variance[0] && !strcmp(beside, m->variance) ? -1 : variance_candidate(dst, cap, image_path, m, beside, trusted, cmd);
+    if (rb == 0 && rc == 2 && (sidecar_read(&vm, dst) != 0 || !variance_of(&vm, m))) rb = -1;   /* unverified: no way out */
     if (rb == 0 && rc == 2)   /* the name reused by another render since (tmp_var.pfm), the pair renamed */
         fprintf(stderr, "pathlab %s: note: %s.meta names its variance %s, now of another render; %s beside it is this "
                 "render's: used\n", cmd, shown(image_path), shown(m->variance), shown(dst));
@@ -479,7 +482,7 @@ int render_files_find_variance(char *dst, size_t cap, const char *image_path, co
     if (rb == 2)
         fprintf(stderr, "pathlab %s: note: %s is not the variance of %s (its sidecar is of another render): not used\n", cmd,
                 shown(dst), shown(image_path));
-    else if (m && m->variance[0])
+    else if (m && m->variance[0] && !(how & FIND_VARIANCE_QUIET))
         fprintf(stderr, "pathlab %s: note: %s.meta names its variance %s, which is not there: none used\n", cmd,
                 shown(image_path), shown(m->variance));
     return -1;

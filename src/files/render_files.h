@@ -47,9 +47,12 @@ const char *render_files_variance_path(char *dst, size_t cap, const char *image_
  * and view: the file its sidecar names, else STEM_var.pfm beside it; each confined to the image's
  * folder (render_files_variance_path) and taken when it has no sidecar or its sidecar says it is
  * this render's variance (a REF_var.pfm left from an earlier render of REF.pfm is not: a note says
- * so). A renamed pair (the sidecar still naming tmp_var.pfm) is found beside. 0 (its path in dst),
+ * so). A renamed pair (the sidecar still naming tmp_var.pfm) is found beside. how: FIND_VARIANCE_TRUSTED
+ * (a user's own reference) follows links wherever they lead (input_file_beside_trusted),
+ * FIND_VARIANCE_QUIET says nothing of a named variance that is not there. 0 (its path in dst),
  * -1 none, 1 refused (said, "pathlab CMD: ..."). */
-int render_files_find_variance(char *dst, size_t cap, const char *image_path, const sidecar *m, const char *cmd);
+enum { FIND_VARIANCE_TRUSTED = 1, FIND_VARIANCE_QUIET = 2 };
+int render_files_find_variance(char *dst, size_t cap, const char *image_path, const sidecar *m, int how, const char *cmd);
 /* Writes mean[0..nlayers-1] to out (layer i >= 1 to out_L{bmin+i-1}) and, if var_out, var[] the same
  * way, each with its sidecar: meta with kind, layer and variance filled in per file. All files are
  * written under temporary names first and renamed together: a failure or a second Ctrl-C leaves

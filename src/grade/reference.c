@@ -16,9 +16,15 @@
 static int read_variance(grade_reference *R, const char *path, const char *var)
 {
     int rc = -1;
-    if (!var) {   /* --ref is the teacher's: a link to a store of references is followed, its variance found there */
+    if (!var) {   /* --ref is the teacher's: links followed; beside it, else beside the file it leads to (a store) */
         char *real = input_file_resolved(path);
-        rc = render_files_find_variance(R->var_found, sizeof R->var_found, real ? real : path, R->has_meta ? &R->meta : NULL, "grade");
+        int link = real && strcmp(real, path);
+        sidecar mr;
+        rc = render_files_find_variance(R->var_found, sizeof R->var_found, path, R->has_meta ? &R->meta : NULL,
+                                        FIND_VARIANCE_TRUSTED | (link ? FIND_VARIANCE_QUIET : 0), "grade");
+        if (rc < 0 && link)   /* the sidecar beside the file it leads to, if the link has none */
+            rc = render_files_find_variance(R->var_found, sizeof R->var_found, real,
+                                            R->has_meta ? &R->meta : sidecar_read(&mr, real) == 0 ? &mr : NULL, FIND_VARIANCE_TRUSTED, "grade");
         free(real);
         if (rc > 0) return 2;
     }

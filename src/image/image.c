@@ -376,8 +376,9 @@ static void order_stats_of(const unsigned char *data, size_t n, int big_endian, 
 /* The header's byte order is wrong when over 1% of the nonzero values read in it are NaN,
  * infinite or absurd, and at most 1% are absurd and fewer than half negative read in the other order
  * (a 1x1 image of 3e38 reads -0.106 swapped: no advice to swap it). When over 10% are absurd in both
- * orders, and at least 8 of them or any denormal, the data is not float radiance (a firefly of 3e38
- * in a 3x3 image, 3 values of 27 and none denormal, is radiance, left to the caller). Otherwise the values are left to the caller
+ * orders, and at least 8 of them or, in an image of under 64 values, any denormal, the data is not
+ * float radiance (a firefly of 3e38 in a 3x3 image, 3 values of 27 and none denormal, is radiance,
+ * left to the caller; so is a black 256x256 image with 5 values, one of them 2e-39). Otherwise the values are left to the caller
  * (image/radiance.h finds NaN, infinite and negative values). Returns 0 or prints and returns 1. */
 static int check_byte_order(const unsigned char *data, size_t n, const pfm_header *hd, const char *path)
 {
@@ -396,7 +397,7 @@ static int check_byte_order(const unsigned char *data, size_t n, const pfm_heade
                 order[!hd->big_endian]);
         return 1;
     }
-    if (as.absurd * 10 > as.nonzero && (as.absurd >= 8 || as.denormal > 0)) {
+    if (as.absurd * 10 > as.nonzero && (as.absurd >= 8 || (as.denormal > 0 && n < 64))) {
         fprintf(stderr, "%s: the pixel data is not float radiance: read %s-endian (as the header's scale "
                 "%s%s says), %zu of the %zu nonzero values are NaN, infinite, denormal or beyond 1e20, and "
                 "read %s-endian %zu are\n", shown(path), order[hd->big_endian], sign, shown(hd->scale_text),

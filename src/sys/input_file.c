@@ -83,7 +83,27 @@ const char *input_file_beside(char *dst, size_t cap, const char *owner, const ch
     return why;
 }
 
-char *input_file_resolved(const char *path) { return realpath(path, NULL); }
+const char *input_file_beside_trusted(char *dst, size_t cap, const char *owner, const char *name)
+{
+    const char *slash = strrchr(owner, '/');
+    int dir = slash ? (int)(slash - owner + 1) : 0;
+    struct stat st;
+    errno = 0;
+    if (!name[0]) return "an empty name";
+    if (name[0] == '/') return "an absolute path: only a file in the image's folder (or below) may be named";
+    if (climbs(name)) return "a path with '..': only a file in the image's folder (or below) may be named";
+    if (snprintf(dst, cap, "%.*s%s", dir, owner, name) >= (int)cap) return "a path too long";
+    if (stat(dst, &st) != 0) return strerror(errno);   /* ENOENT: not there */
+    if (!S_ISREG(st.st_mode)) return input_file_why(S_ISDIR(st.st_mode) ? EISDIR : ENODEV);
+    return NULL;
+}
+
+char *input_file_resolved(const char *path)
+{
+    struct stat st;
+    if (lstat(path, &st) != 0 || !S_ISLNK(st.st_mode)) return NULL;
+    return realpath(path, NULL);
+}
 
 const char *input_file_link_out(const char *path)
 {

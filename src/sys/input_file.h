@@ -17,8 +17,12 @@ const char *input_file_why(int err);
  * and it must be a regular file. NULL if so, else the reason, for "NAME: reason" (errno ENOENT when
  * the file does not exist, so that a caller may treat a missing file apart). */
 const char *input_file_beside(char *dst, size_t cap, const char *owner, const char *name);
-/* The real path of path, links followed (malloc'd; NULL with errno set): for the files a teacher names,
- * whose links to a store of references are theirs, not a student's. */
+/* input_file_beside for the files of a user's own reference (grade's and compare's --ref): the same
+ * name rules, but links are followed wherever they lead (a teacher's store of references). */
+const char *input_file_beside_trusted(char *dst, size_t cap, const char *owner, const char *name);
+/* The real path of path if path is a symbolic link, links followed (malloc'd); NULL if it is no link
+ * or cannot be resolved: for the files a teacher names, whose links to a store of references are
+ * theirs, not a student's. */
 char *input_file_resolved(const char *path);
 /* NULL unless path is a symbolic link whose file lies outside path's folder (or is not a regular
  * file there); then the reason. A dangling link gives NULL: opening it says it is missing. */

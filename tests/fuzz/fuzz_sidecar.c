@@ -94,6 +94,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     resume(&m, sidecar_spp(&m) < SIDECAR_SPP_MAX ? sidecar_spp(&m) + 1 : 1, img);
     resume(&m, SIDECAR_SPP_MAX, img);
     if (render_files_read(&rf, img, m.variance[0] != 0, "fuzz") == 0) render_files_free(&rf);
-    render_files_find_variance(var, sizeof var, img, &m, "fuzz");
+    render_files_find_variance(var, sizeof var, img, &m, 0, "fuzz");
     return 0;
 }

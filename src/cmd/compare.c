@@ -321,13 +321,21 @@ static int check_outputs(const comparison *c)
     return 0;
 }
 
+/* 1 if path is a file of the folder whose key (render_files_key, its real path and a slash) is dir. */
+static int in_folder(const char *dir, const char *path)
+{
+    char b[PATH_CAP];
+    render_files_key(b, sizeof b, path);
+    return !strncmp(dir, b, strlen(dir)) && !strchr(b + strlen(dir), '/');
+}
+
 /* 1 (said) if an input lies in the folder -o, where compare writes its files (DIR/light.pfm over
  * --ref DIR/light.pfm replaced a reference of 256 spp by a render of 4; --sky DIR/light.pfm so), or
  * a --write-view is an input, in DIR, or not a view file's name (--write-view cam.orbiter over the
  * student's orbiter file). */
 static int inputs_clash(const comparison *c)
 {
-    char probe[PATH_CAP], a[PATH_CAP], b[PATH_CAP];
+    char probe[PATH_CAP], a[PATH_CAP];
     const char *in[6], *what[6] = {"--ref", "the reference's variance", "--sky", "--orbiter", "--mtl", "the scene"};
     int k, i;
     in[0] = c->ref, in[1] = c->ref_var, in[2] = c->base.ro.sky.kind == SKY_IMAGE ? c->base.ro.sky.path : NULL;
@@ -336,9 +344,7 @@ static int inputs_clash(const comparison *c)
     render_files_key(a, sizeof a, probe);
     a[strlen(a) - 1] = '\0';   /* DIR's real path and a slash */
     for (k = 0; k < 6; k++) {
-        if (!in[k]) continue;
-        render_files_key(b, sizeof b, in[k]);
-        if (!strncmp(a, b, strlen(a)) && !strchr(b + strlen(a), '/')) {
+        if (in[k] && in_folder(a, in[k])) {
             fprintf(stderr, "pathlab compare: %s %s is in the output folder %s, where compare writes its files: keep it "
                     "in another folder\n", what[k], shown(in[k]), shown(c->dir));
             return 1;
@@ -347,9 +353,8 @@ static int inputs_clash(const comparison *c)
     for (i = 0; i < c->nest; i++) {
         const char *v = c->spec[i].a.cam.write_view, *orb = c->spec[i].a.cam.orbiter;
         if (!v) continue;
-        render_files_key(b, sizeof b, v);
         if (render_files_view_name_bad("compare", v)) return 1;
-        if (!strncmp(a, b, strlen(a)) && !strchr(b + strlen(a), '/')) {
+        if (in_folder(a, v)) {
             fprintf(stderr, "pathlab compare: --write-view %s: in the output folder, where compare writes its files\n", shown(v));
             return 1;
         }

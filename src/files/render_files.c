@@ -363,10 +363,16 @@ static int sky_differs(const sidecar *a, const sidecar *b) { return a->sky_id[0]
 
 /* A file that goes with the image whose sidecar is `of` (its layer, its variance) must be of that
  * same render: scene, seed, flags, camera. 0, or 1 after printing why. */
+/* The first key in which m and of are not the same render (scene-id, seed, flags, camera, sky-id), or NULL. */
+static const char *render_key_differs(const sidecar *m, const sidecar *of)
+{
+    return strcmp(m->scene_id, of->scene_id) ? "scene-id" : m->seed != of->seed ? "seed" : strcmp(m->flags, of->flags) ? "flags"
+           : strcmp(m->camera, of->camera) ? "camera" : sky_differs(m, of) ? "sky-id" : NULL;
+}
+
 static int same_render(const char *cmd, const char *path, const sidecar *m, const sidecar *of)
 {
-    const char *key = strcmp(m->scene_id, of->scene_id) ? "scene-id" : m->seed != of->seed ? "seed" : strcmp(m->flags, of->flags) ? "flags"
-                      : strcmp(m->camera, of->camera) ? "camera" : sky_differs(m, of) ? "sky-id" : NULL;
+    const char *key = render_key_differs(m, of);
     if (!key) return 0;
     fprintf(stderr, "pathlab %s: %s is not of the render it goes with: its sidecar's %s differs: files of two renders mixed up\n",
             cmd, path, key);
@@ -433,8 +439,7 @@ static int variance_of(const sidecar *vm, const sidecar *m)
     char a[SIDECAR_RANGES_TEXT], b[SIDECAR_RANGES_TEXT];
     sidecar_ranges_text(vm, a, sizeof a);
     sidecar_ranges_text(m, b, sizeof b);
-    return !strcmp(vm->kind, "variance") && !strcmp(a, b) && !strcmp(vm->scene_id, m->scene_id) && vm->seed == m->seed &&
-           !strcmp(vm->flags, m->flags) && !strcmp(vm->camera, m->camera) && !sky_differs(vm, m);
+    return !strcmp(vm->kind, "variance") && !strcmp(a, b) && !render_key_differs(vm, m);
 }
 
 /* Candidate `name` (from the image's folder) for the variance of image_path, of sidecar m (NULL: none):

@@ -230,8 +230,7 @@ static int in_front(void *ctx, int t)
     int k;
     if (t == q->self) return 0;
     for (k = 0; k < 3; k++) {
-        vec3 r = v3_sub(q->P[q->tri[3 * t + k]], q->a);
-        double h = (double)q->n.x * r.x + (double)q->n.y * r.y + (double)q->n.z * r.z;
+        double h = dv_dot(dv_of(q->n), dv_of(v3_sub(q->P[q->tri[3 * t + k]], q->a)));
         most = h > most ? h : most;
     }
     return most > q->size * 0x1p-20;
